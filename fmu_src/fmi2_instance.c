@@ -1,0 +1,251 @@
+/* fmi2_instance.c: logging, the calling-sequence check and the variables of one instance. */
+#include "fmi2_instance.h"
+
+#include <limits.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "pendulum_vrs.h"
+
+static const char *const LOG_CATEGORY_NAMES[LOG_CATEGORY_COUNT] = {
+    "logStatusError", "logStatusWarning", "logCalls"};
+
+const char *mode_name(Mode mode) {
+    switch (mode) {
+    case MODE_INSTANTIATED: return "Instantiated";
+    case MODE_INITIALIZATION: return "InitializationMode";
+    case MODE_EVENT: return "EventMode";
+    case MODE_CONTINUOUS_TIME: return "ContinuousTimeMode";
+    case MODE_STEP_COMPLETE: return "StepComplete";
+    case MODE_TERMINATED: return "Terminated";
+    case MODE_ERROR: return "Error";
+    }
+    return "unknown state";
+}
+
+int log_category_from_name(const char *name) {
+    int category;
+    for (category = 0; category < LOG_CATEGORY_COUNT; category++) {
+        if (name != NULL && strcmp(name, LOG_CATEGORY_NAMES[category]) == 0) {
+            return category;
+        }
+    }
+    return -1;
+}
+
+static void log_va(const Instance *inst, fmi2Status status, LogCategory category,
+                   const char *format, va_list args) {
+    char message[512];
+    if (!inst->log_enabled[category] || inst->callbacks.logger == NULL) {
+        return;
+    }
+    vsnprintf(message, sizeof message, format, args);
+    /* The message goes through "%s": a '%' in it must not be read as a format. */
+    inst->callbacks.logger(inst->callbacks.componentEnvironment, inst->name, status,
+                           LOG_CATEGORY_NAMES[category], "%s", message);
+}
+
+void instance_log(const Instance *inst, fmi2Status status, LogCategory category, const char *format, ...) {
+    va_list args;
+    va_start(args, format);
+    log_va(inst, status, category, format, args);
+    va_end(args);
+}
+
+fmi2Status instance_fail(Instance *inst, const char *function, const char *format, ...) {
+    char reason[400];
+    va_list args;
+    va_start(args, format);
+    vsnprintf(reason, sizeof reason, format, args);
+    va_end(args);
+    instance_log(inst, fmi2Error, LOG_STATUS_ERROR, "%s: %s", function, reason);
+    inst->data.mode = MODE_ERROR;
+    return fmi2Error;
+}
+
+int instance_allowed(Instance *inst, const char *function, unsigned allowed_modes) {
+    if (inst == NULL) {
+        return 0;
+    }
+    if (((unsigned)inst->data.mode & allowed_modes) == 0) {
+        instance_fail(inst, function, "not allowed in state %s", mode_name(inst->data.mode));
+        return 0;
+    }
+    instance_log(inst, fmi2OK, LOG_CALLS, "%s", function);
+    return 1;
+}
+
+void model_reset(ModelData *data) {
+    data->mode = MODE_INSTANTIATED;
+    data->L = START_L;
+    data->g = START_G;
+    data->solver = START_SOLVER;
+    data->tolerance = DEFAULT_TOLERANCE;
+    data->start_time = 0.0;
+    data->time = 0.0;
+    data->theta = START_THETA;
+    data->omega = START_OMEGA;
+    pendulum_exact_init(&data->exact, START_THETA, START_OMEGA, sqrt(START_G / START_L), 0.0);
+    integrator_init(&data->integrator, START_SOLVER, START_G / START_L, DEFAULT_TOLERANCE,
+                    0.0, START_THETA, START_OMEGA);
+}
+
+/* Parameters are checked when set; this re-checks the combination (g / L must stay finite). */
+static const char *check_parameters(const ModelData *data) {
+    double w0sq = data->g / data->L;
+    if (!(data->L > 0.0) || !(data->g > 0.0) || !isfinite(w0sq) || !(w0sq > 0.0)) {
+        return "g / L must be a finite number greater than 0";
+    }
+    return NULL;
+}
+
+const char *model_initialize(ModelData *data, fmi2Type type) {
+    const char *problem = check_parameters(data);
+    double w0sq = data->g / data->L;
+    if (problem != NULL) {
+        return problem;
+    }
+    if (pendulum_exact_init(&data->exact, data->theta, data->omega, sqrt(w0sq), data->time) != 0) {
+        return "the exact solution cannot be set up for these start values";
+    }
+    if (type == fmi2CoSimulation &&
+        integrator_init(&data->integrator, (SolverKind)data->solver, w0sq, data->tolerance,
+                        data->time, data->theta, data->omega) != 0) {
+        return "the solver cannot be set up for these start values";
+    }
+    return NULL;
+}
+
+void model_derivatives(const ModelData *data, double *der_theta, double *der_omega) {
+    *der_theta = data->omega;
+    *der_omega = -(data->g / data->L) * sin(data->theta);
+}
+
+/* The exact solution as of now: during initialization it follows the values set so far. */
+static const char *current_exact(const ModelData *data, PendulumExact *exact) {
+    const char *problem;
+    if (data->mode != MODE_INITIALIZATION && data->mode != MODE_INSTANTIATED) {
+        *exact = data->exact;
+        return NULL;
+    }
+    problem = check_parameters(data);
+    if (problem != NULL) {
+        return problem;
+    }
+    if (pendulum_exact_init(exact, data->theta, data->omega, sqrt(data->g / data->L), data->time) != 0) {
+        return "the exact solution cannot be set up for these start values";
+    }
+    return NULL;
+}
+
+const char *model_get_real(const ModelData *data, fmi2ValueReference vr, double *value) {
+    PendulumExact exact;
+    double unused;
+    const char *problem = NULL;
+    switch (vr) {
+    case VR_L: *value = data->L; break;
+    case VR_G: *value = data->g; break;
+    case VR_THETA: *value = data->theta; break;
+    case VR_OMEGA: *value = data->omega; break;
+    case VR_DER_THETA: model_derivatives(data, value, &unused); break;
+    case VR_DER_OMEGA: model_derivatives(data, &unused, value); break;
+    case VR_X: *value = data->L * sin(data->theta); break;
+    case VR_Y: *value = -data->L * cos(data->theta); break;
+    case VR_THETA_EXACT:
+    case VR_OMEGA_EXACT:
+    case VR_PERIOD:
+        problem = current_exact(data, &exact);
+        if (problem != NULL) {
+            return problem;
+        }
+        if (vr == VR_PERIOD) {
+            *value = pendulum_exact_period(&exact);
+        } else {
+            double theta, omega;
+            pendulum_exact_eval(&exact, data->time, &theta, &omega);
+            *value = vr == VR_THETA_EXACT ? theta : omega;
+        }
+        break;
+    default: return "unknown value reference of type Real";
+    }
+    return NULL;
+}
+
+const char *model_set_real(ModelData *data, fmi2ValueReference vr, double value) {
+    const unsigned before_init = MODE_INSTANTIATED | MODE_INITIALIZATION;
+    switch (vr) {
+    case VR_L:
+    case VR_G:
+    case VR_THETA:
+    case VR_OMEGA:
+        if (((unsigned)data->mode & before_init) == 0) {
+            return "is fixed after initialization (set it before fmi2ExitInitializationMode)";
+        }
+        if (!isfinite(value)) {
+            return "must be a finite number";
+        }
+        if ((vr == VR_L || vr == VR_G) && !(value > 0.0)) {
+            return "must be greater than 0";
+        }
+        break;
+    case VR_DER_THETA:
+    case VR_DER_OMEGA:
+    case VR_THETA_EXACT:
+    case VR_OMEGA_EXACT:
+    case VR_PERIOD:
+    case VR_X:
+    case VR_Y:
+        return "is calculated by the FMU and cannot be set";
+    default: return "unknown value reference of type Real";
+    }
+    switch (vr) {
+    case VR_L: data->L = value; break;
+    case VR_G: data->g = value; break;
+    case VR_THETA: data->theta = value; break;
+    default: data->omega = value; break;
+    }
+    return NULL;
+}
+
+static int clamp_count(long count) {
+    return count > INT_MAX ? INT_MAX : (int)count;
+}
+
+const char *model_get_integer(const ModelData *data, fmi2ValueReference vr, int *value) {
+    switch (vr) {
+    case VR_SOLVER: *value = data->solver; break;
+    case VR_STATS_STEPS: *value = clamp_count(data->integrator.stats.steps); break;
+    case VR_STATS_REJECTED_STEPS: *value = clamp_count(data->integrator.stats.rejected); break;
+    case VR_STATS_RHS_EVALUATIONS: *value = clamp_count(data->integrator.stats.rhs_evals); break;
+    default: return "unknown value reference of type Integer or Enumeration";
+    }
+    return NULL;
+}
+
+const char *model_set_integer(ModelData *data, fmi2ValueReference vr, int value) {
+    switch (vr) {
+    case VR_SOLVER:
+        if (((unsigned)data->mode & (MODE_INSTANTIATED | MODE_INITIALIZATION)) == 0) {
+            return "is fixed after initialization (set it before fmi2ExitInitializationMode)";
+        }
+        if (value < SOLVER_DOPRI5 || value > SOLVER_SYMPLECTIC) {
+            return "must be one of the items of the enumeration Solver";
+        }
+        data->solver = value;
+        return NULL;
+    case VR_STATS_STEPS:
+    case VR_STATS_REJECTED_STEPS:
+    case VR_STATS_RHS_EVALUATIONS:
+        return "is calculated by the FMU and cannot be set";
+    default: return "unknown value reference of type Integer or Enumeration";
+    }
+}
+
+const char *variable_name(fmi2ValueReference vr) {
+#define VARIABLE(ref, name) if (vr == (ref)) return name;
+    PENDULUM_VARIABLES
+#undef VARIABLE
+    return "(unknown)";
+}

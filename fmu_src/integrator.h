@@ -1,0 +1,64 @@
+/* integrator.h: numerical time integration of the pendulum state y = (theta, omega),
+ *   theta' = omega,  omega' = -w0^2 sin(theta)   (no small-angle shortcut).
+ *
+ * The integrator keeps its own internal solution point, which may lie ahead of the
+ * communication point: integrator_advance interpolates (dense output) where the method
+ * has it, so communication points never shorten the internal steps. The struct is plain
+ * data (no pointers, no heap), so an FMU can copy and serialize it byte for byte, and the
+ * step loop allocates nothing.
+ *
+ * Because the internal step sequence depends only on the initial state, w0sq and tol
+ * (never on the output times), every method gives identical values at a given time for
+ * any output grid. */
+#ifndef PENDULUM_INTEGRATOR_H
+#define PENDULUM_INTEGRATOR_H
+
+typedef enum {
+    SOLVER_DOPRI5 = 1,      /* adaptive Dormand-Prince 5(4) with dense output */
+    SOLVER_RK4 = 2,         /* classic RK4, fixed step derived from the tolerance */
+    SOLVER_RKN = 3,         /* adaptive Runge-Kutta-Nystrom pair for theta'' = f(theta) */
+    SOLVER_SYMPLECTIC = 4   /* structure-preserving method for long horizons */
+} SolverKind;
+
+typedef struct {
+    long steps;       /* accepted steps */
+    long rejected;    /* rejected steps */
+    long rhs_evals;   /* evaluations of the right-hand side (one sin each) */
+} SolverStats;
+
+#define INTEGRATOR_MAX_STAGES 16
+
+typedef struct {
+    SolverKind kind;
+    double w0sq;                 /* g / L */
+    double rtol, atol;           /* error tolerances of the local error test (adaptive
+                                    methods: a fraction of the user tol, integrator.c) */
+    double t;                    /* time of the internal solution point */
+    double y[2];                 /* internal solution (theta, omega) at t */
+    double f[2];                 /* y' = (omega, -w0sq sin theta) at (t, y), already counted:
+                                    first stage of the next step (FSAL) and end-point slope
+                                    for interpolation */
+    double h;                    /* next step size to try (fixed-step methods: the step) */
+    double hmax;                 /* largest step the adaptive methods may take */
+    double t_prev, y_prev[2];    /* start of the last accepted step (for dense output) */
+    double f_prev[2];            /* y' at (t_prev, y_prev) */
+    double h_last;               /* length of the last accepted step (0 before the first) */
+    double err_prev;             /* PI controller: error norm of the last accepted step */
+    int last_rejected;           /* the previous step attempt was rejected */
+    double dense[INTEGRATOR_MAX_STAGES][2]; /* method-specific dense-output data */
+    SolverStats stats;
+} Integrator;
+
+/* Prepares integration from (theta0, omega0) at t0. tol is the relative tolerance
+ * (fmi2SetupExperiment's); w0sq = g / L > 0. Returns 0, or -1 for invalid input.
+ * Resets the statistics. */
+int integrator_init(Integrator *it, SolverKind kind, double w0sq, double tol,
+                    double t0, double theta0, double omega0);
+
+/* Advances to t_out >= the last output time and writes the solution at t_out.
+ * Returns 0 on success, -1 if the step size underflows or the solution is not finite
+ * (or t_out lies before the start of the last internal step, which the contract rules
+ * out). */
+int integrator_advance(Integrator *it, double t_out, double y_out[2]);
+
+#endif

@@ -1,0 +1,15 @@
+#!/usr/bin/env bash
+# All tests from scratch: C unit tests (ctest) in a normal and a sanitizer build, then pytest.
+source "$(dirname "${BASH_SOURCE[0]}")/setup-env.sh"
+jobs="$(nproc)"
+echo "== C tests (Release)"
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release > /dev/null
+cmake --build build --parallel "$jobs" > /dev/null
+ctest --test-dir build --output-on-failure
+echo "== C tests (AddressSanitizer + UndefinedBehaviorSanitizer)"
+cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Debug -DPENDULUM_SANITIZE=ON > /dev/null
+cmake --build build-sanitize --parallel "$jobs" > /dev/null
+ctest --test-dir build-sanitize --output-on-failure
+echo "== Python tests"
+export PENDULUM_FMU="$ROOT/build/Pendulum.fmu"
+exec python -m pytest "$@"
