@@ -10,6 +10,11 @@ echo "== C tests (AddressSanitizer + UndefinedBehaviorSanitizer)"
 cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Debug -DPENDULUM_SANITIZE=ON > /dev/null
 cmake --build build-sanitize --parallel "$jobs" > /dev/null
 ctest --test-dir build-sanitize --output-on-failure
+echo "== valgrind memcheck of the FMI harness"
+for harness in test_fmi_api test_fmi_threads; do
+    valgrind --quiet --error-exitcode=1 --leak-check=full --errors-for-leak-kinds=all \
+        "build/tests/c/$harness"
+done
 echo "== Python tests"
 export PENDULUM_FMU="$ROOT/build/Pendulum.fmu"
 exec python -m pytest "$@"
