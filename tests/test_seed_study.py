@@ -82,6 +82,7 @@ def test_fmu_rebuilt_from_its_sources_gives_the_same_results(fmu_path: Path, tmp
     with zipfile.ZipFile(fmu_path) as archive:
         archive.extractall(unzipped)
     shutil.rmtree(unzipped / "binaries")
+    (tmp_path / "cmake-build").mkdir()
     build_platform_binary(unzipped, build_dir=tmp_path / "cmake-build")
     assert (unzipped / "binaries/linux64/Pendulum.so").exists()
     scenario = Scenario(amplitude_deg=80.0, periods=2)
