@@ -28,7 +28,7 @@ def plot_theta_against_w0t(runs: list[Run], kind: str, title: str, path: Path) -
     path : Path
         PNG file to write.
     """
-    fig, ax = plt.subplots(figsize=(9, 4.8))
+    fig, ax = plt.subplots(figsize=(11, 4.8))
     colors = plt.rcParams["axes.prop_cycle"].by_key()["color"]
     for run, color in zip(runs, colors):
         w0t = run.scenario.w0 * run.result["time"]
@@ -44,7 +44,7 @@ def plot_theta_against_w0t(runs: list[Run], kind: str, title: str, path: Path) -
     ax.set_ylabel(r"$\theta$ (deg)")
     ax.set_title(title)
     ax.grid(alpha=0.3)
-    ax.legend(fontsize=7, ncol=2, loc="upper right")
+    ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
     fig.tight_layout()
     fig.savefig(path, dpi=130)
     plt.close(fig)
@@ -67,9 +67,10 @@ def plot_period_ratio(amplitudes_deg: np.ndarray, fmu_ratio: np.ndarray, path: P
     fig, ax = plt.subplots(figsize=(8, 4.8))
     ax.semilogx(gap, fmu_ratio, lw=2.2, label="FMU period / T0")
     ax.semilogx(gap, exact_period_ratio(theta0), "k--", lw=1, label="2 K(m) / pi (scipy)")
-    ax.semilogx(gap, 1.0 + theta0**2 / 16.0, ":", label=r"small angle $1 + \theta_0^2/16$")
+    low, high = amplitudes_deg <= 100.0, amplitudes_deg >= 80.0
+    ax.semilogx(gap[low], 1.0 + theta0[low] ** 2 / 16.0, ":", lw=2, label=r"small angle $1 + \theta_0^2/16$")
     # K(m) ~ ln(4 / k'), k' = cos(theta0/2) ~ (pi - theta0)/2  =>  T/T0 ~ (2/pi) ln(8 / (pi - theta0))
-    ax.semilogx(gap, 2.0 / np.pi * np.log(8.0 / (np.pi - theta0)), "-.",
+    ax.semilogx(gap[high], 2.0 / np.pi * np.log(8.0 / (np.pi - theta0[high])), "-.", lw=2,
                 label=r"near the top $(2/\pi)\ln(8/(\pi-\theta_0))$")
     ax.invert_xaxis()
     ax.set_ylim(0.9, float(np.max(fmu_ratio)) * 1.05)

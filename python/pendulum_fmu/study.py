@@ -5,12 +5,13 @@ from __future__ import annotations
 import argparse
 import csv
 import math
+import shutil
 from pathlib import Path
 
 import numpy as np
+from fmpy import extract, instantiate_fmu, read_model_description
 
 from .build import REPO_ROOT, build_fmu
-from .exact_port import ExactPort
 from .period import exact_period, measured_period
 from .plots import plot_period_ratio, plot_theta_against_w0t
 from .simulate import Run, Scenario, simulate
@@ -18,7 +19,7 @@ from .simulate import Run, Scenario, simulate
 SEED_AMPLITUDES_DEG = (75.0, 80.0, 85.0, 90.0)
 ME_TOLERANCE = 1e-10
 TABLE_HEADER = ("amplitude (deg)", "interface", "exact period (s)", "measured period (s)",
-                "T/T0", "max |theta - theta_exact| (rad)")
+                "T/T0", "max abs(theta - theta_exact) (rad)")
 
 
 def run_study(fmu: Path, periods: float = 10.0) -> list[Run]:
@@ -79,12 +80,28 @@ def write_csv(runs: list[Run], path: Path) -> None:
 
 
 def period_ratio_curve(fmu: Path) -> tuple[np.ndarray, np.ndarray]:
-    """T / T0 from the FMU's ``period`` output, amplitudes from 1 deg to 179.999999 deg."""
-    gaps = np.logspace(np.log10(179.0), -6, 120)
-    amplitudes = 180.0 - gaps
-    with ExactPort(fmu) as port:
-        ratios = np.array([port.period(math.radians(a), 0.0) * port.w0 / (2 * math.pi) for a in amplitudes])
-    return amplitudes, ratios
+    """T / T0 from the FMU's ``period`` output, amplitudes from 1 deg to 179.999999 deg.
+
+    One Model Exchange instance is reset and re-initialized for each amplitude (L = 1,
+    g = 9.81), and ``period`` is read right after initialization.
+    """
+    amplitudes = 180.0 - np.logspace(np.log10(179.0), -6, 120)
+    md = read_model_description(str(fmu))
+    vr = {v.name: v.valueReference for v in md.modelVariables}
+    w0 = math.sqrt(9.81)
+    unzipped = extract(str(fmu))
+    instance = instantiate_fmu(unzipped, md, fmi_type="ModelExchange")
+    ratios = []
+    for amplitude in amplitudes:
+        instance.reset()
+        instance.setupExperiment(startTime=0.0)
+        instance.enterInitializationMode()
+        instance.setReal([vr["theta"]], [math.radians(amplitude)])
+        instance.exitInitializationMode()
+        ratios.append(instance.getReal([vr["period"]])[0] * w0 / (2 * math.pi))
+    instance.freeInstance()
+    shutil.rmtree(unzipped, ignore_errors=True)
+    return amplitudes, np.array(ratios)
 
 
 def write_report(out: Path, table: str) -> None:
