@@ -4,8 +4,9 @@
  * J. Comput. Appl. Math. 6 (1980) 19-26 (RK5(4)7M), as tabulated in Hairer, Norsett &
  * Wanner, Solving ODEs I (2nd ed.), Table II.5.2. Dense output: Shampine's continuous
  * extension, HNW I, II.6 (6.12)-(6.13), in the form of Hairer's DOPRI5 code (CONTD5).
- * The tableau is checked against the order conditions in tests/c/test_integrators.c
- * (observed order) and by the exact rational check described there. */
+ * Checked: one step on the pendulum against a 40-digit mpmath solution gives local
+ * errors O(h^6) for the 5th-order solution, O(h^5) for the embedded one and for the dense
+ * output; tests/c/test_integrators.c observes global order 5.0 at a constant step. */
 #include <math.h>
 
 #include "integrator.h"
@@ -104,7 +105,14 @@ int integ_dopri5_step(Integrator *it)
 
         /* dense output (HNW CONTD5): r1 = y0, r2 = y1 - y0, r3 = h k1 - r2,
          * r4 = r2 - h k7 - r3, r5 = h sum d_i k_i; then
-         * u(s) = r1 + s (r2 + (1-s) (r3 + s (r4 + (1-s) r5))). */
+         * u(s) = r1 + s (r2 + (1-s) (r3 + s (r4 + (1-s) r5))).
+         * r5 uses the stages of the step; r2 and r4 use the end point after the energy
+         * projection and f there, so the interpolant ends where the next step starts, with
+         * its slope (a change of the order of the local error). */
+        for (int i = 0; i < 2; i++)
+            it->dense[4][i] = h * (D1 * k1[i] + D3 * k3[i] + D4 * k4[i] + D5 * k5[i] +
+                                   D6 * k6[i] + D7 * k7[i]);
+        integ_project(it, y, y5, k7);
         for (int i = 0; i < 2; i++) {
             double r2 = y5[i] - y[i];
             double r3 = h * k1[i] - r2;
@@ -112,8 +120,6 @@ int integ_dopri5_step(Integrator *it)
             it->dense[1][i] = r2;
             it->dense[2][i] = r3;
             it->dense[3][i] = r2 - h * k7[i] - r3;
-            it->dense[4][i] = h * (D1 * k1[i] + D3 * k3[i] + D4 * k4[i] + D5 * k5[i] +
-                                   D6 * k6[i] + D7 * k7[i]);
         }
         integ_accept(it, h, y5, k7);
         it->h = hnew;

@@ -27,7 +27,16 @@ fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationPoint,
                              currentCommunicationPoint, data->time);
     }
     t_end = currentCommunicationPoint + communicationStepSize;
-    if (!isfinite(t_end) || integrator_advance(&data->integrator, t_end, y) != 0) {
+    if (!isfinite(t_end)) {
+        return instance_fail(inst, "fmi2DoStep", "the step would end at a time that is not finite");
+    }
+    switch (integrator_advance(&data->integrator, t_end, y)) {
+    case 0: break;
+    case -2:
+        return instance_fail(inst, "fmi2DoStep",
+                             "reaching t = %.17g from t = %.17g takes more than %ld internal steps; "
+                             "use shorter communication steps", t_end, data->time, INTEGRATOR_MAX_STEPS_PER_ADVANCE);
+    default:
         return instance_fail(inst, "fmi2DoStep",
                              "the solver failed between t = %.17g and t = %.17g (step size underflow or non-finite state)",
                              data->time, t_end);

@@ -118,9 +118,14 @@ const char *model_initialize(ModelData *data, fmi2Type type) {
     return NULL;
 }
 
-void model_derivatives(const ModelData *data, double *der_theta, double *der_omega) {
+const char *model_derivatives(const ModelData *data, double *der_theta, double *der_omega) {
+    const char *problem = check_parameters(data);
+    if (problem != NULL) {
+        return problem;
+    }
     *der_theta = data->omega;
     *der_omega = -(data->g / data->L) * sin(data->theta);
+    return NULL;
 }
 
 /* The exact solution as of now: during initialization it follows the values set so far. */
@@ -149,8 +154,8 @@ const char *model_get_real(const ModelData *data, fmi2ValueReference vr, double 
     case VR_G: *value = data->g; break;
     case VR_THETA: *value = data->theta; break;
     case VR_OMEGA: *value = data->omega; break;
-    case VR_DER_THETA: model_derivatives(data, value, &unused); break;
-    case VR_DER_OMEGA: model_derivatives(data, &unused, value); break;
+    case VR_DER_THETA: return model_derivatives(data, value, &unused);
+    case VR_DER_OMEGA: return model_derivatives(data, &unused, value);
     case VR_X: *value = data->L * sin(data->theta); break;
     case VR_Y: *value = -data->L * cos(data->theta); break;
     case VR_THETA_EXACT:

@@ -89,8 +89,9 @@ const char *model_set_real(ModelData *data, fmi2ValueReference vr, double value)
 const char *model_get_integer(const ModelData *data, fmi2ValueReference vr, int *value);
 const char *model_set_integer(ModelData *data, fmi2ValueReference vr, int value);
 
-/* Right-hand side: der(theta) = omega, der(omega) = -(g/L) sin(theta). */
-void model_derivatives(const ModelData *data, double *der_theta, double *der_omega);
+/* Right-hand side: der(theta) = omega, der(omega) = -(g/L) sin(theta).
+ * Returns NULL, or a message if g / L is not a finite positive number. */
+const char *model_derivatives(const ModelData *data, double *der_theta, double *der_omega);
 
 const char *mode_name(Mode mode);
 

@@ -102,11 +102,12 @@ fmi2Status fmi2SetContinuousStates(fmi2Component c, const fmi2Real x[], size_t n
 
 fmi2Status fmi2GetDerivatives(fmi2Component c, fmi2Real derivatives[], size_t nx) {
     Instance *inst = c;
+    const char *problem;
     if (!states_allowed(inst, "fmi2GetDerivatives", STATE_READ_MODES, derivatives, nx, N_STATES)) {
         return fmi2Error;
     }
-    model_derivatives(&inst->data, &derivatives[0], &derivatives[1]);
-    return fmi2OK;
+    problem = model_derivatives(&inst->data, &derivatives[0], &derivatives[1]);
+    return problem == NULL ? fmi2OK : instance_fail(inst, "fmi2GetDerivatives", "%s", problem);
 }
 
 fmi2Status fmi2GetEventIndicators(fmi2Component c, fmi2Real eventIndicators[], size_t ni) {

@@ -23,7 +23,10 @@ typedef enum {
 typedef struct {
     long steps;       /* accepted steps */
     long rejected;    /* rejected steps */
-    long rhs_evals;   /* evaluations of the right-hand side (one sin each) */
+    long rhs_evals;   /* evaluations of the right-hand side (one sin each), plus the other
+                         trigonometric evaluations of theta: the energy projection's
+                         sin(theta/2) at t0 and sin/cos(theta/2) pairs (DOPRI5, RKN), the
+                         symplectic method's cos for its interpolation; one count each */
 } SolverStats;
 
 #define INTEGRATOR_MAX_STAGES 16
@@ -44,6 +47,10 @@ typedef struct {
     double f_prev[2];            /* y' at (t_prev, y_prev) */
     double h_last;               /* length of the last accepted step (0 before the first) */
     double err_prev;             /* PI controller: error norm of the last accepted step */
+    double energy0;              /* H = omega^2/2 + 2 w0sq sin^2(theta/2) at t0 (if projecting) */
+    int project_energy;          /* 1: the adaptive methods project every accepted point back
+                                    onto H = energy0 (set by integrator_init for DOPRI5 and
+                                    RKN; 0 runs the plain Runge-Kutta methods) */
     int last_rejected;           /* the previous step attempt was rejected */
     double dense[INTEGRATOR_MAX_STAGES][2]; /* method-specific dense-output data */
     SolverStats stats;
@@ -55,10 +62,13 @@ typedef struct {
 int integrator_init(Integrator *it, SolverKind kind, double w0sq, double tol,
                     double t0, double theta0, double omega0);
 
+/* Most internal steps (accepted or rejected) one integrator_advance may take. */
+#define INTEGRATOR_MAX_STEPS_PER_ADVANCE 10000000L
+
 /* Advances to t_out >= the last output time and writes the solution at t_out.
  * Returns 0 on success, -1 if the step size underflows or the solution is not finite
  * (or t_out lies before the start of the last internal step, which the contract rules
- * out). */
+ * out), -2 if reaching t_out would take more than INTEGRATOR_MAX_STEPS_PER_ADVANCE steps. */
 int integrator_advance(Integrator *it, double t_out, double y_out[2]);
 
 #endif

@@ -51,8 +51,8 @@ static inline double integ_err_norm(const Integrator *it, const double e[2],
 double integ_initial_step(Integrator *it, int order);
 
 /* Step-size controller shared by the adaptive methods: the PI controller of HNW I, IV.2
- * (as in DOPRI5: alpha = 1/q - 0.75 beta, beta = 0.04, safety 0.9, factor in
- * [0.2, 10]), q = order of the error estimate + 1. Given the error norm err of a step
+ * (alpha = 1/q - 0.75 beta, beta = 0.08, safety 0.9, factor in [0.2, 10]),
+ * q = order of the error estimate + 1. Given the error norm err of a step
  * of size h, returns the next step to try; *accept tells whether the step is accepted.
  * Updates err_prev / last_rejected / stats.rejected. */
 double integ_control(Integrator *it, double h, double err, int q, int *accept);
@@ -65,8 +65,13 @@ void integ_accept(Integrator *it, double h, const double ynew[2], const double f
  * theta'' = f(theta) at both ends; omega is the derivative of the same polynomial. */
 void integ_hermite5(const Integrator *it, double t, double y[2]);
 
-/* Cubic Hermite interpolation of (theta, omega) from y and y' at both ends. */
-void integ_hermite3(const Integrator *it, double t, double y[2]);
+/* Energy projection for the adaptive methods: moves the new point ynew of an accepted step
+ * along grad H back onto H = it->energy0 (Newton; at most a few iterations) and returns
+ * f at the projected point in fnew (fnew must hold f(ynew) on entry). Skipped, returning
+ * 0 and leaving ynew/fnew alone, where the correction would exceed the local error
+ * tolerance (near the saddle (pi, 0) grad H vanishes), or if it->project_energy is 0.
+ * Returns 1 if projected. */
+int integ_project(Integrator *it, const double y0[2], double ynew[2], double fnew[2]);
 
 /* The smallest step the adaptive methods may take at time t before reporting underflow. */
 double integ_hmin(double t);

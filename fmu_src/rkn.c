@@ -6,16 +6,22 @@
  * formula supplies the error estimate, local extrapolation propagates the 6th-order
  * solution). The coefficients are exact in Q(sqrt(8581)); they are written below to 21
  * digits, evaluated from the exact expressions with mpmath at 60 digits (the exact
- * forms are given next to the irrational ones). The tableau is checked in
- * tests/c/test_integrators.c by the observed orders of the step, the error estimate and
- * the interpolant.
+ * forms are given next to the irrational ones). Checked: the row sums (sum_j a_ij =
+ * c_i^2/2) and quadrature conditions hold to 60 digits; one step on the pendulum against
+ * a 40-digit mpmath solution gives local errors O(h^7) in x and v, O(h^5) for the
+ * embedded pair, O(h^7) / O(h^6) for the dense x / v; tests/c/test_integrators.c
+ * observes global order 6 at a constant step.
  *
  * With x = theta, v = omega, k_i = f(x0 + c_i h v0 + h^2 sum_j a_ij k_j):
  *   x1 = x0 + h v0 + h^2 sum b_i k_i,   v1 = v0 + h sum bp_i k_i,
  * the last stage (c6 = 1, a6j = b_j) is f(x1): first same as last, so a step costs five
  * evaluations of sin. Dense output at s in [0, 1]:
  *   x(s) = x0 + s h v0 + (s h)^2 sum b_i(s) k_i,   v(s) = v0 + s h sum bp_i(s) k_i,
- * with b_i(s), bp_i(s) quartic polynomials (b_2 = bp_2 = 0). */
+ * with b_i(s), bp_i(s) quartic polynomials (b_2 = bp_2 = 0).
+ *
+ * Each accepted point is projected back onto the initial energy (integ_project in
+ * integrator.c), which keeps a libration from turning into a rotation near the separatrix
+ * and removes the secular energy drift. */
 #include <math.h>
 
 #include "integrator.h"
@@ -148,6 +154,12 @@ int integ_rkn_step(Integrator *it)
         for (int i = 0; i < RKN_STAGES; i++)
             it->dense[i][0] = k[i];
         double f1[2] = {y1[1], k[RKN_STAGES - 1]};
+        double y1_unprojected[2] = {y1[0], y1[1]};
+        integ_project(it, it->y, y1, f1);
+        /* the interpolant is shifted by s (y1 - y1_unprojected), so it ends where the next
+         * step starts (a change of the order of the local error) */
+        it->dense[RKN_STAGES][0] = y1[0] - y1_unprojected[0];
+        it->dense[RKN_STAGES][1] = y1[1] - y1_unprojected[1];
         integ_accept(it, h, y1, f1);
         it->h = hnew;
         return 0;
@@ -167,6 +179,6 @@ void integ_rkn_interp(const Integrator *it, double t, double y[2])
         sv += bpi * it->dense[i][0];
     }
     const double sh = s * h;
-    y[0] = it->y_prev[0] + sh * (it->y_prev[1] + sh * sx);
-    y[1] = it->y_prev[1] + sh * sv;
+    y[0] = it->y_prev[0] + sh * (it->y_prev[1] + sh * sx) + s * it->dense[RKN_STAGES][0];
+    y[1] = it->y_prev[1] + sh * sv + s * it->dense[RKN_STAGES][1];
 }
