@@ -8,6 +8,8 @@ from pathlib import Path
 
 REPO_ROOT: Path = Path(__file__).resolve().parents[2]
 DEFAULT_BUILD_DIR: Path = REPO_ROOT / "build"
+PACKAGED_FMU: Path = Path(__file__).resolve().with_name("Pendulum.fmu")
+"""Where a wheel built by ``setup.py`` carries the FMU (absent in an editable install)."""
 
 
 def fmu_in(build_dir: Path) -> Path:
@@ -59,7 +61,8 @@ def build_fmu(build_dir: Path = DEFAULT_BUILD_DIR, quiet: bool = True) -> Path:
 
 
 def find_fmu() -> Path:
-    """Return the FMU to use: ``$PENDULUM_FMU`` if set, else the default build (built if missing).
+    """Return the FMU to use: ``$PENDULUM_FMU`` if set, else the one installed with the package,
+    else the default build (built if missing).
 
     Returns
     -------
@@ -69,5 +72,7 @@ def find_fmu() -> Path:
     override = os.environ.get("PENDULUM_FMU")
     if override:
         return Path(override)
+    if PACKAGED_FMU.is_file():
+        return PACKAGED_FMU
     path = fmu_in(DEFAULT_BUILD_DIR)
     return path if path.exists() else build_fmu()
