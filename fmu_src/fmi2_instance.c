@@ -107,7 +107,8 @@ const char *model_initialize(ModelData *data, fmi2Type type) {
     if (problem != NULL) {
         return problem;
     }
-    if (pendulum_exact_init(&data->exact, data->theta, data->omega, sqrt(w0sq), data->time) != 0) {
+    if (pendulum_exact_init(&data->exact, data->theta, data->omega, sqrt(w0sq), data->time) != 0 ||
+        isnan(pendulum_exact_period(&data->exact))) {
         return "the exact solution cannot be set up for these start values";
     }
     if (type == fmi2CoSimulation &&
@@ -166,11 +167,16 @@ const char *model_get_real(const ModelData *data, fmi2ValueReference vr, double 
             return problem;
         }
         if (vr == VR_PERIOD) {
-            *value = pendulum_exact_period(&exact);
+            *value = pendulum_exact_period(&exact); /* +inf on the separatrix */
         } else {
             double theta, omega;
             pendulum_exact_eval(&exact, data->time, &theta, &omega);
             *value = vr == VR_THETA_EXACT ? theta : omega;
+        }
+        /* Never hand out a silent NaN: extreme parameters or times (|theta| beyond what a
+         * double holds with any accuracy) are reported instead. */
+        if (isnan(*value) || (vr != VR_PERIOD && !isfinite(*value))) {
+            return "the exact solution is not representable in double precision at this time and these values";
         }
         break;
     default: return "unknown value reference of type Real";
