@@ -1,0 +1,430 @@
+/* elliptic.c: K, F, sn, cn, dn, am (see elliptic.h for the method and the references). */
+#include "elliptic.h"
+
+#include <stddef.h>
+#include <math.h>
+
+/* pi/2 in three parts: exact halves of ELLIPTIC_PI_*. */
+#define HALF_PI_HI   (0.5 * ELLIPTIC_PI_HI)
+#define HALF_PI_LO   (0.5 * ELLIPTIC_PI_LO)
+#define HALF_PI_LOLO (0.5 * ELLIPTIC_PI_LOLO)
+
+/* The bottom of the Landen descent: once m_N <= BOTTOM_M, A&S 16.13.1-3 is used. Its error
+ * is O(m_N^2): measured with mpmath (m = 1e-4, |z| <= pi/4), the relative error of sn, cn, dn
+ * is below 0.0045 m^2, so below 1.2e-17 here. */
+#define BOTTOM_M 5e-8
+
+/* ------------------------------------------------------------------------------------- */
+/* double-double                                                                          */
+/* ------------------------------------------------------------------------------------- */
+
+/* s + err = a + b exactly, valid when |a| >= |b| or a == 0 (Dekker's Fast2Sum). */
+static EllipticDD fast_two_sum(double a, double b)
+{
+    EllipticDD r;
+    r.hi = a + b;
+    r.lo = b - (r.hi - a);
+    return r;
+}
+
+static EllipticDD dd_from(double x)
+{
+    EllipticDD r;
+    r.hi = x;
+    r.lo = 0.0;
+    return r;
+}
+
+static EllipticDD dd_neg(EllipticDD x)
+{
+    x.hi = -x.hi;
+    x.lo = -x.lo;
+    return x;
+}
+
+EllipticDD elliptic_dd_add(EllipticDD x, EllipticDD y)
+{
+    /* Sum of the high parts and of the low parts, each error-free, then two renormalisations
+     * (the "accurate" double-double addition of Hida, Li and Bailey's QD library). */
+    EllipticDD s = elliptic_two_sum(x.hi, y.hi);
+    EllipticDD t = elliptic_two_sum(x.lo, y.lo);
+    s.lo += t.hi;
+    s = fast_two_sum(s.hi, s.lo);
+    s.lo += t.lo;
+    return fast_two_sum(s.hi, s.lo);
+}
+
+EllipticDD elliptic_dd_mul(EllipticDD x, EllipticDD y)
+{
+    /* (xh + xl)(yh + yl) = xh yh (exact two-product) + xh yl + xl yh + O(2^-106). */
+    EllipticDD p = elliptic_two_prod(x.hi, y.hi);
+    p.lo += x.hi * y.lo + x.lo * y.hi;
+    return fast_two_sum(p.hi, p.lo);
+}
+
+EllipticDD elliptic_dd_div(EllipticDD x, EllipticDD y)
+{
+    /* Long division: three quotient digits q1 + q2 + q3, each from the remainder so far. */
+    double q1 = x.hi / y.hi;
+    EllipticDD r = elliptic_dd_add(x, dd_neg(elliptic_dd_mul(y, dd_from(q1))));
+    double q2 = r.hi / y.hi;
+    r = elliptic_dd_add(r, dd_neg(elliptic_dd_mul(y, dd_from(q2))));
+    double q3 = r.hi / y.hi;
+    return elliptic_dd_add(fast_two_sum(q1, q2), dd_from(q3));
+}
+
+EllipticDD elliptic_dd_sqrt(EllipticDD x)
+{
+    /* One Newton step from the double root s: sqrt(x) = s + (x - s^2) / (2 s), with s^2
+     * formed exactly by a two-product. */
+    if (!(x.hi > 0.0)) {
+        return dd_from(x.hi == 0.0 ? 0.0 : NAN);
+    }
+    if (isinf(x.hi)) {
+        return dd_from(x.hi);
+    }
+    if (x.hi < 0x1p-900) {
+        /* keep the error terms of the two-product out of the subnormal range: scale by an
+         * even power of two (exact) */
+        EllipticDD scaled = {x.hi * 0x1p1000, x.lo * 0x1p1000};
+        EllipticDD root = elliptic_dd_sqrt(scaled);
+        root.hi *= 0x1p-500;
+        root.lo *= 0x1p-500;
+        return root;
+    }
+    double s = sqrt(x.hi);
+    EllipticDD sq = elliptic_two_prod(s, s);
+    double correction = (((x.hi - sq.hi) - sq.lo) + x.lo) / (2.0 * s);
+    return fast_two_sum(s, correction);
+}
+
+/* x / d for a double d. */
+static EllipticDD dd_div_d(EllipticDD x, double d)
+{
+    return elliptic_dd_div(x, dd_from(d));
+}
+
+void elliptic_dd_sincos(EllipticDD x, EllipticDD *sin_x, EllipticDD *cos_x)
+{
+    if (!isfinite(x.hi)) {
+        *sin_x = *cos_x = dd_from(NAN);
+        return;
+    }
+    /* x = n pi/2 + y, |y| <= pi/4: y = x - n (pi/2)_hi - n (pi/2)_lo - n (pi/2)_lolo, the
+     * products n (pi/2)_hi and n (pi/2)_lo exact (two-product), n small. */
+    double n = nearbyint(x.hi / HALF_PI_HI);
+    EllipticDD y = elliptic_dd_add(x, dd_neg(elliptic_two_prod(n, HALF_PI_HI)));
+    y = elliptic_dd_add(y, dd_neg(elliptic_two_prod(n, HALF_PI_LO)));
+    y = elliptic_dd_add(y, dd_from(-n * HALF_PI_LOLO));
+
+    /* Maclaurin series (A&S 4.3.65, 4.3.66), terms from the previous one:
+     * sin: t_{j+1} = -t_j y^2 / ((2j+2)(2j+3)),  cos: t_{j+1} = -t_j y^2 / ((2j+1)(2j+2)). */
+    EllipticDD y2 = elliptic_dd_mul(y, y);
+    EllipticDD sin_y = y, cos_y = dd_from(1.0);
+    EllipticDD term_s = y, term_c = dd_from(1.0);
+    for (int j = 0; j < 40; ++j) {
+        double a = 2.0 * j + 1.0;
+        term_s = dd_div_d(elliptic_dd_mul(term_s, y2), -(a + 1.0) * (a + 2.0));
+        term_c = dd_div_d(elliptic_dd_mul(term_c, y2), -a * (a + 1.0));
+        sin_y = elliptic_dd_add(sin_y, term_s);
+        cos_y = elliptic_dd_add(cos_y, term_c);
+        if (fabs(term_s.hi) <= 1e-34 * fabs(sin_y.hi) && fabs(term_c.hi) <= 1e-34) {
+            break;
+        }
+    }
+
+    /* sin(y + n pi/2), cos(y + n pi/2) by the quadrant n mod 4. */
+    const int quadrant = (int)(n - 4.0 * floor(0.25 * n));   /* n mod 4, no integer overflow */
+    switch (quadrant) {
+    case 0: *sin_x = sin_y;         *cos_x = cos_y;         break;
+    case 1: *sin_x = cos_y;         *cos_x = dd_neg(sin_y); break;
+    case 2: *sin_x = dd_neg(sin_y); *cos_x = dd_neg(cos_y); break;
+    default: *sin_x = dd_neg(cos_y); *cos_x = sin_y;        break;
+    }
+}
+
+/* ------------------------------------------------------------------------------------- */
+/* Complete and incomplete integrals                                                      */
+/* ------------------------------------------------------------------------------------- */
+
+double elliptic_K(double m1)
+{
+    if (!(m1 >= 0.0)) {
+        return NAN;
+    }
+    if (m1 == 0.0) {
+        return INFINITY;
+    }
+    if (isinf(m1)) {
+        return 0.0;
+    }
+    /* AGM: a_{n+1} = (a_n + b_n)/2, b_{n+1} = sqrt(a_n b_n), a_0 = 1, b_0 = k' (A&S 17.6.1).
+     * When |a - b| <= 2^-26 a, the next mean (a + b)/2 is within (a-b)^2/(16 a) < 2^-56 a
+     * of the limit. */
+    double a = 1.0, b = sqrt(m1);
+    for (int i = 0; i < 64 && fabs(a - b) > 0x1p-26 * a; ++i) {
+        double a_next = 0.5 * (a + b);
+        b = sqrt(a * b);
+        a = a_next;
+    }
+    /* K = pi / (2 AGM(1, k'))  (A&S 17.6.2), AGM = (a + b)/2. */
+    return ELLIPTIC_PI_HI / (a + b);
+}
+
+EllipticDD elliptic_K_dd(EllipticDD m1)
+{
+    if (!(m1.hi >= 0.0)) {
+        return dd_from(NAN);
+    }
+    if (m1.hi == 0.0) {
+        return dd_from(INFINITY);
+    }
+    EllipticDD a = dd_from(1.0);
+    EllipticDD b = elliptic_dd_sqrt(m1);
+    /* Same AGM in double-double; stop when |a - b| <= 1e-17 a: the final mean is then
+     * within ~1e-35 a of the limit. */
+    for (int i = 0; i < 64; ++i) {
+        EllipticDD diff = elliptic_dd_add(a, dd_neg(b));
+        if (fabs(diff.hi) <= 1e-17 * a.hi) {
+            break;
+        }
+        EllipticDD a_next = elliptic_dd_mul(elliptic_dd_add(a, b), dd_from(0.5));
+        b = elliptic_dd_sqrt(elliptic_dd_mul(a, b));
+        a = a_next;
+    }
+    EllipticDD agm = elliptic_dd_mul(elliptic_dd_add(a, b), dd_from(0.5));
+    EllipticDD half_pi = fast_two_sum(HALF_PI_HI, HALF_PI_LO);
+    return elliptic_dd_div(half_pi, agm);   /* K = (pi/2) / AGM */
+}
+
+double elliptic_RF(double x, double y, double z)
+{
+    if (!(x >= 0.0 && y >= 0.0 && z >= 0.0)) {
+        return NAN;
+    }
+    if ((x == 0.0) + (y == 0.0) + (z == 0.0) >= 2) {
+        return INFINITY;
+    }
+    if (isinf(x) || isinf(y) || isinf(z)) {
+        return 0.0;
+    }
+    /* Duplication theorem (DLMF 19.26.18): R_F(x,y,z) = R_F((x+l)/4, (y+l)/4, (z+l)/4) with
+     * l = sqrt(x)sqrt(y) + sqrt(y)sqrt(z) + sqrt(z)sqrt(x). A_n - x_n = 4^-n (A_0 - x_0)
+     * exactly, which gives X, Y without cancellation (Carlson 1995, algorithm for R_F). */
+    const double x0 = x, y0 = y;
+    const double mean0 = (x + y + z) / 3.0;
+    const double spread0 = fmax(fabs(mean0 - x), fmax(fabs(mean0 - y), fabs(mean0 - z)));
+    double mean = mean0, pow4 = 1.0; /* pow4 = 4^-n */
+    for (int i = 0; i < 200 && pow4 * spread0 >= 0.004 * mean; ++i) {
+        double sx = sqrt(x), sy = sqrt(y), sz = sqrt(z);
+        double lambda = sx * sy + sy * sz + sz * sx;
+        x = 0.25 * (x + lambda);
+        y = 0.25 * (y + lambda);
+        z = 0.25 * (z + lambda);
+        mean = 0.25 * (mean + lambda);
+        pow4 *= 0.25;
+    }
+    /* DLMF 19.36.1: X = 1 - x_n/A_n etc. (X + Y + Z = 0), E2 = XY - Z^2, E3 = XYZ,
+     * R_F = A^-1/2 (1 - E2/10 + E3/14 + E2^2/24 - 3 E2 E3/44 - 5 E2^3/208 + 3 E3^2/104
+     *               + E2^2 E3/16); with |X|,|Y|,|Z| < 0.004 the remainder is < 1e-20. */
+    double X = (mean0 - x0) * pow4 / mean;
+    double Y = (mean0 - y0) * pow4 / mean;
+    double Z = -(X + Y);
+    double E2 = X * Y - Z * Z;
+    double E3 = X * Y * Z;
+    double series = 1.0 - E2 / 10.0 + E3 / 14.0 + E2 * E2 / 24.0 - 3.0 * E2 * E3 / 44.0
+                    - 5.0 * E2 * E2 * E2 / 208.0 + 3.0 * E3 * E3 / 104.0
+                    + E2 * E2 * E3 / 16.0;
+    return series / sqrt(mean);
+}
+
+double elliptic_F(double phi, double m, double m1)
+{
+    if (isnan(phi) || !(m >= 0.0 && m <= 1.0) || !(m1 >= 0.0 && m1 <= 1.0)) {
+        return NAN;
+    }
+    if (m1 == 0.0) {
+        /* m = 1: F(phi | 1) = asinh(tan phi) = atanh(sin phi) for |phi| < pi/2 (A&S 17.4.21);
+         * infinite from pi/2 on. */
+        if (fabs(phi) >= HALF_PI_HI) {
+            return copysign(INFINITY, phi);
+        }
+        return asinh(tan(phi));
+    }
+    /* phi = n pi + psi, |psi| <= pi/2, psi with pi in two parts (fma: one rounding). */
+    double n = nearbyint(phi / ELLIPTIC_PI_HI);
+    double psi = fma(-n, ELLIPTIC_PI_HI, phi);
+    psi = fma(-n, ELLIPTIC_PI_LO, psi);
+    double s = sin(psi), c = cos(psi);
+    /* F(psi | m) = sin psi R_F(cos^2 psi, 1 - m sin^2 psi, 1), 1 - m sin^2 = cos^2 + m1 sin^2. */
+    double f = s * elliptic_RF(c * c, c * c + m1 * s * s, 1.0);
+    if (n != 0.0) {
+        /* F(psi + n pi) = F(psi) + 2 n K  (A&S 17.4.3). */
+        EllipticDD K = elliptic_K_dd(dd_from(m1));
+        f = fma(2.0 * n, K.hi, fma(2.0 * n, K.lo, f));
+    }
+    return f;
+}
+
+/* ------------------------------------------------------------------------------------- */
+/* Jacobi elliptic functions                                                              */
+/* ------------------------------------------------------------------------------------- */
+
+int elliptic_param_init(EllipticParam *p, double m, double m1_hi, double m1_lo)
+{
+    if (p == NULL || !(m >= 0.0 && m <= 1.0) || !(m1_hi >= 0.0 && m1_hi <= 1.0)
+        || !isfinite(m1_lo) || !(fabs(m + m1_hi - 1.0) <= 1e-12)) {
+        return -1;
+    }
+    EllipticParam q;
+    EllipticDD m1 = elliptic_two_sum(m1_hi, m1_lo);
+    q.m = m;
+    q.m1 = m1.hi;
+    q.k = sqrt(m);
+    q.kc = elliptic_dd_sqrt(m1).hi;
+    q.levels = 0;
+    for (int i = 0; i < ELLIPTIC_MAX_LEVELS; ++i) {
+        q.landen_k[i] = 0.0;
+        q.landen_1pk[i] = 1.0;
+        q.landen_1mk[i] = 1.0;
+    }
+    if (m1.hi == 0.0) {
+        /* m = 1: no Landen chain; sn = tanh, cn = dn = sech. */
+        q.K_hi = INFINITY;
+        q.K_lo = 0.0;
+        q.inv_K = 0.0;
+        q.K_head = INFINITY;
+        q.K_tail = 0.0;
+        q.bottom_scale = 1.0;
+        q.bottom_m = 1.0;
+        q.sqrt_k1 = 1.0;
+        *p = q;
+        return 0;
+    }
+    EllipticDD K = elliptic_K_dd(m1);
+    q.K_hi = K.hi;
+    q.K_lo = K.lo;
+    q.inv_K = 1.0 / K.hi;
+    q.K_head = elliptic_head26(K.hi);   /* top 26 bits of K_hi; K_tail = the rest, exact */
+    q.K_tail = K.hi - q.K_head;
+
+    /* Descending Landen sequence (A&S 16.12.1, DLMF 22.7.1; the AGM of A&S 16.4 normalised,
+     * k_n = c_n / a_n, k'_n = b_n / a_n):
+     *   k_{n+1} = (1 - k'_n) / (1 + k'_n) = m_n / (1 + k'_n)^2,
+     *   1 - k_{n+1} = 2 k'_n / (1 + k'_n),   k'_{n+1} = 2 sqrt(k'_n) / (1 + k'_n),
+     * each in the form that does not cancel. */
+    double kc_n = q.kc, m_n = m;
+    int n = 0;
+    while ((m_n > BOTTOM_M || n == 0) && n < ELLIPTIC_MAX_LEVELS) {   /* at least one level */
+        double one_plus_kc = 1.0 + kc_n;
+        double k_next = kc_n < 0.5 ? (1.0 - kc_n) / one_plus_kc
+                                   : m_n / (one_plus_kc * one_plus_kc);
+        q.landen_k[n] = k_next;
+        q.landen_1pk[n] = 1.0 + k_next;
+        q.landen_1mk[n] = 2.0 * kc_n / one_plus_kc;
+        kc_n = 2.0 * sqrt(kc_n) / one_plus_kc;
+        m_n = k_next * k_next;
+        ++n;
+    }
+    q.levels = n;
+    q.sqrt_k1 = q.k / (1.0 + q.kc);   /* sqrt(k_1) = sqrt((1 - k')/(1 + k')) = k / (1 + k') */
+    q.bottom_m = m_n;
+    /* prod(1 + k_n) = K(m) / K(m_N) (descending Landen K(k) = (1 + k_1) K(k_1), DLMF
+     * 19.8(ii), A&S 17.5), and
+     * K(m_N) = pi/2 (1 + m_N/4 + 9 m_N^2/64 + ...)  (A&S 17.3.11): one division by K in
+     * double-double instead of N rounded factors. */
+    EllipticDD K_bottom = elliptic_dd_mul(fast_two_sum(HALF_PI_HI, HALF_PI_LO),
+                                          dd_from(1.0 + m_n * (0.25 + m_n * (9.0 / 64.0))));
+    q.bottom_scale = elliptic_dd_div(K_bottom, K).hi;
+    *p = q;
+    return 0;
+}
+
+double elliptic_reduce(const EllipticParam *p, double u_hi, double u_lo, double *quarters)
+{
+    double n = elliptic_nearest_integer((u_hi + u_lo) * p->inv_K);
+    if (n == 0.0 || !(p->K_hi < INFINITY)) {
+        *quarters = 0.0;
+        return u_hi + u_lo;
+    }
+    *quarters = n;
+    if (fabs(n) < 0x1p26) {
+        /* Cody-Waite: n K_head and n K_tail are exact; u_hi - n K_head is exact once n is
+         * more than a few (Sterbenz), otherwise all terms are small. */
+        return ((u_hi - n * p->K_head) - n * p->K_tail) + (u_lo - n * p->K_lo);
+    }
+    if (fabs(n) < 0x1p52) {
+        /* Large n: n K_hi = prod.hi + prod.lo exactly by a two-product. */
+        EllipticDD prod = elliptic_two_prod(n, p->K_hi);
+        return ((u_hi - prod.hi) - prod.lo) + (u_lo - n * p->K_lo);
+    }
+    /* Beyond 2^52 quarter periods doubles cannot resolve the phase; the exact remainder
+     * modulo K_hi (C99 remquo, which also gives n mod 8) keeps the result finite. */
+    int quotient_bits = 0;
+    double r = remquo(u_hi, p->K_hi, &quotient_bits);
+    *quarters = isnan(r) ? 0.0 : (double)(quotient_bits % 8);
+    return r;
+}
+
+void elliptic_sncndn_reduced(const EllipticParam *p, double v, double *sn, double *cn, double *dn)
+{
+    double S, C, E, D;
+    elliptic_sncndn_homogeneous(p, v, &S, &C, &E, &D);
+    double inv = 1.0 / D;
+    *sn = S * inv;
+    *cn = C * inv;
+    *dn = E * inv;
+}
+
+/* n mod 4 in 0..3 for an integer-valued double n (0 for a non-finite n). */
+static int quarter_of(double n)
+{
+    if (fabs(n) < 0x1p62) {
+        return (int)((long long)n & 3);
+    }
+    if (!isfinite(n)) {
+        return 0;
+    }
+    double r = fmod(n, 4.0);
+    return (int)(r < 0.0 ? r + 4.0 : r);
+}
+
+void elliptic_sncndn(const EllipticParam *p, double u, double *sn, double *cn, double *dn)
+{
+    double n, S, C, E, D;
+    double r = elliptic_reduce(p, u, 0.0, &n);
+    elliptic_sncndn_homogeneous(p, r, &S, &C, &E, &D);
+    switch (quarter_of(n)) {
+    case 0: /* u = r */
+        *sn = S / D;
+        *cn = C / D;
+        *dn = E / D;
+        break;
+    case 1: /* u = K + r: cd r, -k' sd r, k' nd r  (A&S 16.8.1-3) */
+        *sn = C / E;
+        *cn = -p->kc * S / E;
+        *dn = p->kc * D / E;
+        break;
+    case 2: /* u = 2K + r: -sn r, -cn r, dn r */
+        *sn = -S / D;
+        *cn = -C / D;
+        *dn = E / D;
+        break;
+    default: /* u = 3K + r = -K + r: -cd r, k' sd r, k' nd r */
+        *sn = -C / E;
+        *cn = p->kc * S / E;
+        *dn = p->kc * D / E;
+        break;
+    }
+}
+
+double elliptic_am(const EllipticParam *p, double u)
+{
+    double n, S, C, E, D;
+    double r = elliptic_reduce(p, u, 0.0, &n);
+    elliptic_sncndn_homogeneous(p, r, &S, &C, &E, &D);
+    /* am(nK + r) = n pi/2 + delta: delta = am r for even n; for odd n, sin and cos of
+     * am(nK + r) - n pi/2 are proportional to k' sn r and cn r (table in elliptic.h). */
+    double delta = elliptic_atan_ratio((quarter_of(n) & 1) ? p->kc * S : S, C);   /* C > 0 */
+    return fma(n, HALF_PI_HI, fma(n, HALF_PI_LO, delta));
+}
