@@ -51,4 +51,5 @@ def __getattr__(name: str) -> Any:
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
-__all__ = sorted([*_EXPORTS, "fmu_path", "__version__"])
+__all__ = ["SOLVERS", "BuildError", "FmuRunner", "Method", "Pendulum", "SimulationError", "SweepGrid", "SweepPoint",
+           "TimeGrid", "Trajectory", "UsageError", "__version__", "fmu_path", "locate_fmu", "run_sweep"]

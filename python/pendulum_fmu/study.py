@@ -22,7 +22,7 @@ from .report_html import Figure, write_html_report
 # fmpy, scipy and matplotlib are imported where they are used, so that building the
 # command line's parser (which imports this module) stays quick.
 if TYPE_CHECKING:
-    from .simulate import Run
+    from .simulate import Interface, Run
 
 SEED_AMPLITUDES_DEG = (75.0, 80.0, 85.0, 90.0)
 ME_TOLERANCE = 1e-10
@@ -48,7 +48,8 @@ def run_study(fmu: Path, periods: float = 10.0) -> list[Run]:
     from .simulate import Scenario, simulate
 
     runs = []
-    for interface, tolerance in (("CS", None), ("ME", ME_TOLERANCE)):
+    settings: tuple[tuple[Interface, float | None], ...] = (("CS", None), ("ME", ME_TOLERANCE))
+    for interface, tolerance in settings:
         for amplitude in SEED_AMPLITUDES_DEG:
             scenario = Scenario(amplitude_deg=amplitude, periods=periods)
             runs.append(simulate(fmu, scenario, interface, tolerance))
@@ -59,7 +60,7 @@ def table_rows(runs: list[Run]) -> list[tuple[str, ...]]:
     """One row of TABLE_HEADER per run."""
     from .period import exact_period, measured_period
 
-    rows = []
+    rows: list[tuple[str, ...]] = []
     for run in runs:
         s = run.scenario
         period = exact_period(math.radians(s.amplitude_deg), s.w0)
@@ -182,14 +183,14 @@ def write_html(out: Path, rows: list[tuple[str, ...]], periods: float) -> Path:
     """``report.html``: the error table and the four figures in one self-contained page."""
     worst = max(rows, key=lambda row: float(row[-1]))
     intro = [
-        "The undamped pendulum theta'' + (g/L) sin(theta) = 0 (L = 1 m, g = 9.81 m/s^2), released from "
-        f"rest at the seed's amplitudes {', '.join(f'{a:g}' for a in SEED_AMPLITUDES_DEG)} deg, simulated "
-        f"for {periods:g} exact periods with 50 output points a period, and compared at every point with "
-        "the exact Jacobi-elliptic solution that the FMU computes beside its numerical one.",
-        "Co-Simulation (CS) runs the FMU's own adaptive Dormand-Prince 5(4) at its default tolerance 1e-8; "
-        f"Model Exchange (ME) runs fmpy's CVODE at relative tolerance {ME_TOLERANCE:g}. The exact period is "
-        "4 K(m)/w0 with m = sin^2(theta0/2); the measured period is the least-squares slope of the downward "
-        "zero crossings of the numerical theta.",
+        ("The undamped pendulum theta'' + (g/L) sin(theta) = 0 (L = 1 m, g = 9.81 m/s^2), released from "
+         f"rest at the seed's amplitudes {', '.join(f'{a:g}' for a in SEED_AMPLITUDES_DEG)} deg, simulated "
+         f"for {periods:g} exact periods with 50 output points a period, and compared at every point with "
+         "the exact Jacobi-elliptic solution that the FMU computes beside its numerical one."),
+        ("Co-Simulation (CS) runs the FMU's own dopri5 (Dormand-Prince 5(4)) at its default tolerance 1e-8; "
+         f"Model Exchange (ME) runs fmpy's CVODE at relative tolerance {ME_TOLERANCE:g}. The exact period is "
+         "4 K(m)/w0 with m = sin^2(theta0/2); the measured period is the least-squares slope of the downward "
+         "zero crossings of the numerical theta."),
         f"Largest error: {worst[-1]} rad ({worst[1]}, {worst[0]} deg).",
     ]
     figures = [

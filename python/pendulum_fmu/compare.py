@@ -1,0 +1,76 @@
+"""``pendulum-fmu compare``: one run's numerical solution against the exact one, in one PNG."""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+from .arguments import (add_fmu_argument, add_method_arguments, add_pendulum_arguments, add_time_arguments,
+                        grid_from, method_from, output_file, pendulum_from)
+from .locate import locate_fmu
+from .spec import Method, Pendulum, TimeGrid
+
+if TYPE_CHECKING:
+    from .runner import Trajectory
+
+NAME = "compare"
+HELP = "numerical against exact theta and the error over time, as one PNG"
+DESCRIPTION = """\
+Run the FMU once and draw, in one PNG, the numerical theta over the exact (Jacobi elliptic)
+theta, and below it |theta - theta_exact| and |omega - omega_exact| on a log scale.
+"""
+EPILOG = """\
+examples:
+  pendulum-fmu compare --amplitude 90 --periods 20 --out compare.png
+  pendulum-fmu compare -a 170 --solver rk4 --tolerance 1e-5 --out rk4.png
+  pendulum-fmu compare -a 80 --interface ME --tolerance 1e-6 --out cvode.png
+"""
+
+
+def compare(fmu: Path, pendulum: Pendulum, method: Method, grid: TimeGrid, out: Path) -> Trajectory:
+    """Simulate and write the comparison figure.
+
+    Parameters
+    ----------
+    fmu : Path
+        ``Pendulum.fmu``.
+    pendulum, method, grid
+        What to run.
+    out : Path
+        The PNG to write.
+
+    Returns
+    -------
+    Trajectory
+        The run drawn.
+    """
+    from .plots import plot_comparison
+    from .runner import FmuRunner
+
+    with FmuRunner(fmu) as runner:
+        trajectory = runner.run(pendulum, method, grid)
+    out.parent.mkdir(parents=True, exist_ok=True)
+    plot_comparison(trajectory, out)
+    return trajectory
+
+
+def configure(parser: argparse.ArgumentParser) -> None:
+    """Add the options of ``compare``."""
+    add_pendulum_arguments(parser)
+    add_method_arguments(parser)
+    add_time_arguments(parser, default_periods=10)
+    parser.add_argument("-o", "--out", type=output_file(".png"), default=Path("compare.png"), metavar="FILE.png",
+                        help="the PNG to write (default compare.png)")
+    add_fmu_argument(parser)
+
+
+def run(args: argparse.Namespace) -> int:
+    """Run ``compare`` with parsed arguments."""
+    from .summary import summary_lines
+
+    pendulum, method, grid = pendulum_from(args), method_from(args), grid_from(args)
+    trajectory = compare(locate_fmu(args.fmu), pendulum, method, grid, args.out)
+    print("\n".join(summary_lines(trajectory)))
+    print(f"written   {args.out}")
+    return 0

@@ -1,0 +1,178 @@
+"""What to simulate: the pendulum, the integration method and the output time grid.
+
+Plain frozen dataclasses with no import of fmpy, so the command line can validate and
+describe a run before anything heavy is loaded.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Literal
+
+from .errors import UsageError
+
+Interface = Literal["CS", "ME"]
+StopUnit = Literal["s", "periods"]
+
+CS_SOLVERS: tuple[str, ...] = ("dopri5", "rk4", "rkn", "symplectic")
+"""The FMU's own Co-Simulation methods: the items of the ``Solver`` enumeration, in order."""
+
+ME_SOLVERS: tuple[str, ...] = ("cvode",)
+"""Model Exchange methods: fmpy's CVODE (SUNDIALS, BDF/Newton) driving the FMU's derivatives."""
+
+SOLVERS: tuple[str, ...] = CS_SOLVERS + ME_SOLVERS
+
+DEFAULT_TOLERANCE = 1e-8
+"""The FMU's default experiment tolerance (modelDescription.xml)."""
+
+
+@dataclass(frozen=True)
+class Pendulum:
+    """An initial value problem of theta'' + (g/L) sin(theta) = 0.
+
+    Attributes
+    ----------
+    amplitude_rad : float
+        Initial angle theta(0) from the downward vertical, rad.
+    omega0 : float
+        Initial angular velocity theta'(0), rad/s.
+    length : float
+        L, m (> 0).
+    gravity : float
+        g, m/s^2 (> 0).
+    """
+
+    amplitude_rad: float
+    omega0: float = 0.0
+    length: float = 1.0
+    gravity: float = 9.81
+
+    def __post_init__(self) -> None:
+        checks = (("amplitude", self.amplitude_rad, math.isfinite(self.amplitude_rad), "a finite angle"),
+                  ("omega0", self.omega0, math.isfinite(self.omega0), "a finite number (rad/s)"),
+                  ("length", self.length, math.isfinite(self.length) and self.length > 0, "a finite number > 0 (m)"),
+                  ("gravity", self.gravity, math.isfinite(self.gravity) and self.gravity > 0,
+                   "a finite number > 0 (m/s^2)"))
+        for name, value, ok, allowed in checks:
+            if not ok:
+                raise UsageError(name, f"must be {allowed}, got {value!r}")
+
+    @classmethod
+    def from_degrees(cls, amplitude_deg: float, omega0: float = 0.0, length: float = 1.0,
+                     gravity: float = 9.81) -> Pendulum:
+        """Build from an amplitude in degrees (the other arguments as in the class)."""
+        return cls(math.radians(amplitude_deg), omega0, length, gravity)
+
+    @property
+    def amplitude_deg(self) -> float:
+        """theta(0) in degrees."""
+        return math.degrees(self.amplitude_rad)
+
+    @property
+    def w0(self) -> float:
+        """Small-angle angular frequency sqrt(g / L), rad/s."""
+        return math.sqrt(self.gravity / self.length)
+
+    @property
+    def small_angle_period(self) -> float:
+        """T0 = 2 pi / w0, s."""
+        return 2.0 * math.pi / self.w0
+
+    def start_values(self) -> dict[str, float]:
+        """The FMU's start values for this problem, by variable name."""
+        return {"L": self.length, "g": self.gravity, "theta": self.amplitude_rad, "omega": self.omega0}
+
+
+@dataclass(frozen=True)
+class Method:
+    """How to integrate: the solver and its relative tolerance.
+
+    Attributes
+    ----------
+    solver : str
+        One of :data:`SOLVERS`; ``cvode`` runs the FMU in Model Exchange, the others in
+        Co-Simulation with the FMU's own method.
+    tolerance : float or None
+        Relative tolerance in (0, 1); None uses the FMU's default (1e-8).
+    """
+
+    solver: str = "dopri5"
+    tolerance: float | None = None
+
+    def __post_init__(self) -> None:
+        if self.solver not in SOLVERS:
+            raise UsageError("solver", f"must be one of {', '.join(SOLVERS)}, got {self.solver!r}")
+        if self.tolerance is not None and not (0.0 < self.tolerance < 1.0):
+            raise UsageError("tolerance", f"must be in (0, 1), got {self.tolerance!r}")
+
+    @property
+    def interface(self) -> Interface:
+        """``"ME"`` for the importer's solvers, ``"CS"`` for the FMU's own."""
+        return "ME" if self.solver in ME_SOLVERS else "CS"
+
+    @property
+    def effective_tolerance(self) -> float:
+        """The tolerance actually used (the default filled in)."""
+        return DEFAULT_TOLERANCE if self.tolerance is None else self.tolerance
+
+    @property
+    def label(self) -> str:
+        """Short human description, e.g. ``"CS dopri5, tol 1e-08"``."""
+        return f"{self.interface} {self.solver}, tol {self.effective_tolerance:g}"
+
+
+@dataclass(frozen=True)
+class TimeGrid:
+    """The communication (output) points of a run.
+
+    Attributes
+    ----------
+    stop : float
+        Stop time, in seconds or in periods (see ``unit``), > 0.
+    unit : {"s", "periods"}
+        Unit of ``stop``. A period is the FMU's exact ``period`` output (4 K(m)/w0 in
+        libration, the revolution time in rotation), or T0 = 2 pi / w0 where it is infinite
+        (the separatrix) or zero.
+    points_per_period : int
+        Output points per period (>= 1), used unless ``output_interval`` is given.
+    output_interval : float or None
+        Fixed output interval in seconds, overriding ``points_per_period``.
+    """
+
+    stop: float = 10.0
+    unit: StopUnit = "periods"
+    points_per_period: int = 50
+    output_interval: float | None = None
+
+    def __post_init__(self) -> None:
+        if not (math.isfinite(self.stop) and self.stop > 0):
+            raise UsageError("stop", f"must be a finite number > 0, got {self.stop!r}")
+        if self.unit not in ("s", "periods"):
+            raise UsageError("unit", f"must be 's' or 'periods', got {self.unit!r}")
+        if self.points_per_period < 1:
+            raise UsageError("points_per_period", f"must be an integer >= 1, got {self.points_per_period!r}")
+        if self.output_interval is not None and not (math.isfinite(self.output_interval)
+                                                     and self.output_interval > 0):
+            raise UsageError("output_interval", f"must be a finite number > 0 (s), got {self.output_interval!r}")
+
+    def times(self, reference_period: float) -> list[float]:
+        """The output times, from 0 to the stop time inclusive.
+
+        Parameters
+        ----------
+        reference_period : float
+            The period in seconds that ``stop`` (in periods) and ``points_per_period``
+            refer to.
+
+        Returns
+        -------
+        list of float
+            Increasing times; the last one is the stop time exactly.
+        """
+        step = self.output_interval or reference_period / self.points_per_period
+        stop = self.stop * reference_period if self.unit == "periods" else self.stop
+        count = max(1, math.ceil(stop / step - 1e-9))
+        times = [k * step for k in range(count)]
+        times.append(stop)
+        return times

@@ -1,0 +1,70 @@
+"""The install-time build step: CMake builds Pendulum.fmu, and a wheel carries it.
+
+All metadata is in pyproject.toml; this file only extends ``build_py``.
+
+Why not scikit-build-core: the package is pure Python that ships one data file (the FMU, a
+zip that CMake packs), not a CPython extension module, and the development loop is an
+editable install plus ``cmake --build build`` (run by scripts/test.sh and by
+``pendulum-fmu study`` anyway). scikit-build-core's editable mode would add a second,
+import-hook-driven build of the same tree. So:
+
+- a regular install (``pip install .``, a wheel) runs CMake and puts ``Pendulum.fmu`` into
+  the package, where ``pendulum_fmu.locate.locate_fmu`` finds it first;
+- an editable install (``pip install -e .``) runs CMake into ``build/`` of the checkout,
+  where ``locate_fmu`` finds it and rebuilds it whenever a source is newer;
+- if CMake is missing or fails, the install goes on with a warning, and the package falls
+  back at run time to ``find_fmu()``/``locate_fmu()``, which build or report a missing build.
+
+Environment: ``PENDULUM_FMU_SKIP_BUILD=1`` skips the build, ``PENDULUM_FMU_BUILD_DIR``
+chooses the CMake build folder (default ``build/`` beside this file).
+"""
+
+from __future__ import annotations
+
+import os
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+from setuptools import setup
+from setuptools.command.build_py import build_py
+
+ROOT = Path(__file__).resolve().parent
+
+
+def build_fmu() -> Path | None:
+    """Configure and build the ``fmu`` target; the packed FMU, or None (with a warning)."""
+    if os.environ.get("PENDULUM_FMU_SKIP_BUILD"):
+        return None
+    build_dir = Path(os.environ.get("PENDULUM_FMU_BUILD_DIR") or ROOT / "build")
+    cmake = shutil.which("cmake")
+    if cmake is None or not (ROOT / "CMakeLists.txt").is_file():
+        print("warning: pendulum-fmu: no cmake (or no CMakeLists.txt): Pendulum.fmu not built; "
+              "it is looked for at run time", file=sys.stderr)
+        return None
+    commands = [[cmake, "-S", str(ROOT), "-B", str(build_dir), "-DCMAKE_BUILD_TYPE=Release"],
+                [cmake, "--build", str(build_dir), "--target", "fmu", "--parallel", str(os.cpu_count() or 1)]]
+    for command in commands:
+        done = subprocess.run(command, capture_output=True, text=True, check=False)
+        if done.returncode != 0:
+            print(f"warning: pendulum-fmu: {' '.join(command)} failed; Pendulum.fmu is looked for at run time\n"
+                  f"{done.stdout[-2000:]}{done.stderr[-2000:]}", file=sys.stderr)
+            return None
+    fmu = build_dir / "Pendulum.fmu"
+    return fmu if fmu.is_file() else None
+
+
+class BuildPyWithFmu(build_py):
+    """``build_py`` that also builds the FMU and, for a wheel, copies it into the package."""
+
+    def run(self) -> None:
+        super().run()
+        fmu = build_fmu()
+        if fmu is not None and not self.editable_mode:
+            target = Path(self.build_lib) / "pendulum_fmu" / "Pendulum.fmu"
+            target.parent.mkdir(parents=True, exist_ok=True)
+            shutil.copyfile(fmu, target)
+
+
+setup(cmdclass={"build_py": BuildPyWithFmu})

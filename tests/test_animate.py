@@ -1,0 +1,55 @@
+"""``animate``: a GIF and an MP4 with one frame per output point, the bob moving in both panels."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import imageio_ffmpeg
+import numpy as np
+import pytest
+from PIL import Image
+from scipy.special import ellipk
+
+from pendulum_fmu.cli import main
+
+
+def test_gif_has_one_frame_per_step_of_film_time(fmu_path: Path, tmp_path: Path) -> None:
+    out = tmp_path / "pendulum.gif"
+    assert main(["animate", "-a", "120", "--periods", "0.5", "--fps", "10", "--out", str(out),
+                 "--fmu", str(fmu_path)]) == 0
+    period = 4.0 * float(ellipk(math.sin(math.radians(60.0)) ** 2)) / math.sqrt(9.81)
+    frames = math.ceil(0.5 * period / 0.1 - 1e-9) + 1
+    with Image.open(out) as gif:
+        count: int = gif.n_frames  # type: ignore[attr-defined]
+        assert count == frames
+        assert gif.size == (960, 480)
+        assert gif.info["duration"] == 100 and gif.info["loop"] == 0
+        gif.seek(0)
+        first = np.asarray(gif.convert("RGB"), dtype=int)
+        gif.seek(count - 1)
+        last = np.asarray(gif.convert("RGB"), dtype=int)
+    changed = np.any(first != last, axis=2)
+    # after half a period the bob has swung from one side to the other, in both panels
+    assert changed[:, :480].sum() > 500 and changed[:, 480:].sum() > 500
+
+
+def test_mp4_is_h264_at_the_requested_rate(fmu_path: Path, tmp_path: Path) -> None:
+    out = tmp_path / "pendulum.mp4"
+    assert main(["animate", "-a", "0", "-w", "7", "--stop-time", "0.5", "--fps", "10", "--out", str(out),
+                 "--fmu", str(fmu_path)]) == 0
+    reader = imageio_ffmpeg.read_frames(str(out))
+    meta = next(reader)
+    frames = sum(1 for _ in reader)
+    assert meta["codec"] == "h264" and meta["size"] == (960, 480) and meta["fps"] == 10.0
+    assert frames == 6
+
+
+def test_too_long_an_animation_is_refused_with_the_limit(fmu_path: Path, tmp_path: Path,
+                                                         capsys: pytest.CaptureFixture[str]) -> None:
+    with pytest.raises(SystemExit) as stop:
+        main(["animate", "--periods", "900", "--fps", "60", "--out", str(tmp_path / "long.gif"),
+              "--fmu", str(fmu_path)])
+    assert stop.value.code == 2
+    assert "argument --periods: the animation would have" in capsys.readouterr().err
+    assert not (tmp_path / "long.gif").exists()

@@ -1,0 +1,84 @@
+"""``study``: the seed's files, and the HTML report's table against the FMU's own outputs."""
+
+from __future__ import annotations
+
+import math
+from html.parser import HTMLParser
+from pathlib import Path
+
+import pytest
+from fmpy import simulate_fmu
+from PIL import Image
+
+from pendulum_fmu.cli import main
+from pendulum_fmu.simulate import Interface, Scenario, simulate
+from pendulum_fmu.study import ME_TOLERANCE, TABLE_HEADER
+
+PERIODS = 2.0
+
+
+class _Tables(HTMLParser):
+    """Collect the cells of every table row, and the images."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        self.rows: list[list[str]] = []
+        self.images: list[str] = []
+        self._cell: list[str] | None = None
+
+    def handle_starttag(self, tag: str, attrs: list[tuple[str, str | None]]) -> None:
+        if tag == "tr":
+            self.rows.append([])
+        elif tag in ("td", "th"):
+            self._cell = []
+        elif tag == "img":
+            self.images.append(dict(attrs).get("src") or "")
+
+    def handle_data(self, data: str) -> None:
+        if self._cell is not None:
+            self._cell.append(data)
+
+    def handle_endtag(self, tag: str) -> None:
+        if tag in ("td", "th") and self._cell is not None:
+            self.rows[-1].append("".join(self._cell))
+            self._cell = None
+
+
+@pytest.fixture(scope="module")
+def study_dir(fmu_path: Path, tmp_path_factory: pytest.TempPathFactory) -> Path:
+    out = tmp_path_factory.mktemp("study")
+    assert main(["study", "--out", str(out), "--fmu", str(fmu_path), "--periods", str(PERIODS)]) == 0
+    return out
+
+
+def test_study_writes_the_seed_files_and_the_html_report(study_dir: Path) -> None:
+    for name in ("fig3_numeric.png", "fig4_exact.png", "fig5_overlay.png", "period_ratio.png"):
+        with Image.open(study_dir / name) as image:
+            assert image.format == "PNG" and image.size[0] > 800, name
+    assert (study_dir / "runs.csv").read_text().startswith("interface,amplitude_deg,time_s,w0t,")
+    assert "| 90 | ME |" in (study_dir / "report.md").read_text()
+    parser = _Tables()
+    parser.feed((study_dir / "report.html").read_text())
+    assert len(parser.images) == 4 and all(src.startswith("data:image/png;base64,") for src in parser.images)
+
+
+def test_html_table_matches_the_fmu_outputs(study_dir: Path, fmu_path: Path) -> None:
+    parser = _Tables()
+    parser.feed((study_dir / "report.html").read_text())
+    header, *rows = parser.rows
+    assert tuple(header) == TABLE_HEADER
+    assert sorted((float(r[0]), r[1]) for r in rows) == sorted((a, i) for a in (75.0, 80.0, 85.0, 90.0)
+                                                                for i in ("CS", "ME"))
+    for amplitude, interface, period, measured, ratio, max_error in rows:
+        theta0 = math.radians(float(amplitude))
+        fmu_period = float(simulate_fmu(str(fmu_path), stop_time=0.1, output_interval=0.1, output=["period"],
+                                        start_values={"theta": theta0})["period"][0])
+        w0 = math.sqrt(9.81)
+        assert float(period) == pytest.approx(fmu_period, abs=1e-9)
+        assert float(ratio) == pytest.approx(fmu_period * w0 / (2 * math.pi), abs=1e-6)
+        assert float(measured) == pytest.approx(fmu_period, rel=1e-6)
+        tolerance = None if interface == "CS" else ME_TOLERANCE
+        kind: Interface = "CS" if interface == "CS" else "ME"
+        run = simulate(fmu_path, Scenario(amplitude_deg=float(amplitude), periods=PERIODS), kind, tolerance)
+        assert float(max_error) == pytest.approx(run.max_error, rel=6e-3)
+        assert run.max_error < 1e-6
