@@ -2,6 +2,7 @@
 #include "elliptic.h"
 
 #include <stddef.h>
+#include <string.h>
 #include <math.h>
 
 /* pi/2 in three parts: exact halves of ELLIPTIC_PI_*. */
@@ -277,6 +278,7 @@ int elliptic_param_init(EllipticParam *p, double m, double m1_hi, double m1_lo)
         return -1;
     }
     EllipticParam q;
+    memset(&q, 0, sizeof q); /* padding too: the FMU checksums its states bytewise */
     EllipticDD m1 = elliptic_two_sum(m1_hi, m1_lo);
     q.m = m;
     q.m1 = m1.hi;
@@ -298,7 +300,7 @@ int elliptic_param_init(EllipticParam *p, double m, double m1_hi, double m1_lo)
         q.bottom_scale = 1.0;
         q.bottom_m = 1.0;
         q.sqrt_k1 = 1.0;
-        *p = q;
+        memcpy(p, &q, sizeof q);
         return 0;
     }
     EllipticDD K = elliptic_K_dd(m1);
@@ -336,7 +338,7 @@ int elliptic_param_init(EllipticParam *p, double m, double m1_hi, double m1_lo)
     EllipticDD K_bottom = elliptic_dd_mul(fast_two_sum(HALF_PI_HI, HALF_PI_LO),
                                           dd_from(1.0 + m_n * (0.25 + m_n * (9.0 / 64.0))));
     q.bottom_scale = elliptic_dd_div(K_bottom, K).hi;
-    *p = q;
+    memcpy(p, &q, sizeof q);
     return 0;
 }
 

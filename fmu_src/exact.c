@@ -261,7 +261,7 @@ int pendulum_exact_init(PendulumExact *ex, double theta0, double omega0, double 
         e.period = ldexp(elliptic_dd_div(elliptic_dd_mul(K, dd(quarters_per_period)), rate_n).hi,
                          -exponent);
     }
-    *ex = e;
+    memcpy(ex, &e, sizeof e); /* bytewise, padding included (see fmi2_state.c) */
     return 0;
 }
 
