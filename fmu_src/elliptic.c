@@ -28,21 +28,6 @@ static EllipticDD fast_two_sum(double a, double b)
     return r;
 }
 
-static EllipticDD dd_from(double x)
-{
-    EllipticDD r;
-    r.hi = x;
-    r.lo = 0.0;
-    return r;
-}
-
-static EllipticDD dd_neg(EllipticDD x)
-{
-    x.hi = -x.hi;
-    x.lo = -x.lo;
-    return x;
-}
-
 EllipticDD elliptic_dd_add(EllipticDD x, EllipticDD y)
 {
     /* Sum of the high parts and of the low parts, each error-free, then two renormalisations
@@ -67,11 +52,11 @@ EllipticDD elliptic_dd_div(EllipticDD x, EllipticDD y)
 {
     /* Long division: three quotient digits q1 + q2 + q3, each from the remainder so far. */
     double q1 = x.hi / y.hi;
-    EllipticDD r = elliptic_dd_add(x, dd_neg(elliptic_dd_mul(y, dd_from(q1))));
+    EllipticDD r = elliptic_dd_add(x, elliptic_dd_neg(elliptic_dd_mul(y, elliptic_dd(q1))));
     double q2 = r.hi / y.hi;
-    r = elliptic_dd_add(r, dd_neg(elliptic_dd_mul(y, dd_from(q2))));
+    r = elliptic_dd_add(r, elliptic_dd_neg(elliptic_dd_mul(y, elliptic_dd(q2))));
     double q3 = r.hi / y.hi;
-    return elliptic_dd_add(fast_two_sum(q1, q2), dd_from(q3));
+    return elliptic_dd_add(fast_two_sum(q1, q2), elliptic_dd(q3));
 }
 
 EllipticDD elliptic_dd_sqrt(EllipticDD x)
@@ -79,10 +64,10 @@ EllipticDD elliptic_dd_sqrt(EllipticDD x)
     /* One Newton step from the double root s: sqrt(x) = s + (x - s^2) / (2 s), with s^2
      * formed exactly by a two-product. */
     if (!(x.hi > 0.0)) {
-        return dd_from(x.hi == 0.0 ? 0.0 : NAN);
+        return elliptic_dd(x.hi == 0.0 ? 0.0 : NAN);
     }
     if (isinf(x.hi)) {
-        return dd_from(x.hi);
+        return elliptic_dd(x.hi);
     }
     if (x.hi < 0x1p-900) {
         /* keep the error terms of the two-product out of the subnormal range: scale by an
@@ -102,27 +87,27 @@ EllipticDD elliptic_dd_sqrt(EllipticDD x)
 /* x / d for a double d. */
 static EllipticDD dd_div_d(EllipticDD x, double d)
 {
-    return elliptic_dd_div(x, dd_from(d));
+    return elliptic_dd_div(x, elliptic_dd(d));
 }
 
 void elliptic_dd_sincos(EllipticDD x, EllipticDD *sin_x, EllipticDD *cos_x)
 {
     if (!isfinite(x.hi)) {
-        *sin_x = *cos_x = dd_from(NAN);
+        *sin_x = *cos_x = elliptic_dd(NAN);
         return;
     }
     /* x = n pi/2 + y, |y| <= pi/4: y = x - n (pi/2)_hi - n (pi/2)_lo - n (pi/2)_lolo, the
      * products n (pi/2)_hi and n (pi/2)_lo exact (two-product), n small. */
     double n = nearbyint(x.hi / HALF_PI_HI);
-    EllipticDD y = elliptic_dd_add(x, dd_neg(elliptic_two_prod(n, HALF_PI_HI)));
-    y = elliptic_dd_add(y, dd_neg(elliptic_two_prod(n, HALF_PI_LO)));
-    y = elliptic_dd_add(y, dd_from(-n * HALF_PI_LOLO));
+    EllipticDD y = elliptic_dd_add(x, elliptic_dd_neg(elliptic_two_prod(n, HALF_PI_HI)));
+    y = elliptic_dd_add(y, elliptic_dd_neg(elliptic_two_prod(n, HALF_PI_LO)));
+    y = elliptic_dd_add(y, elliptic_dd(-n * HALF_PI_LOLO));
 
     /* Maclaurin series (A&S 4.3.65, 4.3.66), terms from the previous one:
      * sin: t_{j+1} = -t_j y^2 / ((2j+2)(2j+3)),  cos: t_{j+1} = -t_j y^2 / ((2j+1)(2j+2)). */
     EllipticDD y2 = elliptic_dd_mul(y, y);
-    EllipticDD sin_y = y, cos_y = dd_from(1.0);
-    EllipticDD term_s = y, term_c = dd_from(1.0);
+    EllipticDD sin_y = y, cos_y = elliptic_dd(1.0);
+    EllipticDD term_s = y, term_c = elliptic_dd(1.0);
     for (int j = 0; j < 40; ++j) {
         double a = 2.0 * j + 1.0;
         term_s = dd_div_d(elliptic_dd_mul(term_s, y2), -(a + 1.0) * (a + 2.0));
@@ -138,9 +123,9 @@ void elliptic_dd_sincos(EllipticDD x, EllipticDD *sin_x, EllipticDD *cos_x)
     const int quadrant = (int)(n - 4.0 * floor(0.25 * n));   /* n mod 4, no integer overflow */
     switch (quadrant) {
     case 0: *sin_x = sin_y;         *cos_x = cos_y;         break;
-    case 1: *sin_x = cos_y;         *cos_x = dd_neg(sin_y); break;
-    case 2: *sin_x = dd_neg(sin_y); *cos_x = dd_neg(cos_y); break;
-    default: *sin_x = dd_neg(cos_y); *cos_x = sin_y;        break;
+    case 1: *sin_x = cos_y;         *cos_x = elliptic_dd_neg(sin_y); break;
+    case 2: *sin_x = elliptic_dd_neg(sin_y); *cos_x = elliptic_dd_neg(cos_y); break;
+    default: *sin_x = elliptic_dd_neg(cos_y); *cos_x = sin_y;        break;
     }
 }
 
@@ -175,25 +160,25 @@ double elliptic_K(double m1)
 EllipticDD elliptic_K_dd(EllipticDD m1)
 {
     if (!(m1.hi >= 0.0)) {
-        return dd_from(NAN);
+        return elliptic_dd(NAN);
     }
     if (m1.hi == 0.0) {
-        return dd_from(INFINITY);
+        return elliptic_dd(INFINITY);
     }
-    EllipticDD a = dd_from(1.0);
+    EllipticDD a = elliptic_dd(1.0);
     EllipticDD b = elliptic_dd_sqrt(m1);
     /* Same AGM in double-double; stop when |a - b| <= 1e-17 a: the final mean is then
      * within ~1e-35 a of the limit. */
     for (int i = 0; i < 64; ++i) {
-        EllipticDD diff = elliptic_dd_add(a, dd_neg(b));
+        EllipticDD diff = elliptic_dd_add(a, elliptic_dd_neg(b));
         if (fabs(diff.hi) <= 1e-17 * a.hi) {
             break;
         }
-        EllipticDD a_next = elliptic_dd_mul(elliptic_dd_add(a, b), dd_from(0.5));
+        EllipticDD a_next = elliptic_dd_mul(elliptic_dd_add(a, b), elliptic_dd(0.5));
         b = elliptic_dd_sqrt(elliptic_dd_mul(a, b));
         a = a_next;
     }
-    EllipticDD agm = elliptic_dd_mul(elliptic_dd_add(a, b), dd_from(0.5));
+    EllipticDD agm = elliptic_dd_mul(elliptic_dd_add(a, b), elliptic_dd(0.5));
     EllipticDD half_pi = fast_two_sum(HALF_PI_HI, HALF_PI_LO);
     return elliptic_dd_div(half_pi, agm);   /* K = (pi/2) / AGM */
 }
@@ -261,7 +246,7 @@ double elliptic_F(double phi, double m, double m1)
     double f = s * elliptic_RF(c * c, c * c + m1 * s * s, 1.0);
     if (n != 0.0) {
         /* F(psi + n pi) = F(psi) + 2 n K  (A&S 17.4.3). */
-        EllipticDD K = elliptic_K_dd(dd_from(m1));
+        EllipticDD K = elliptic_K_dd(elliptic_dd(m1));
         f = fma(2.0 * n, K.hi, fma(2.0 * n, K.lo, f));
     }
     return f;
@@ -336,7 +321,7 @@ int elliptic_param_init(EllipticParam *p, double m, double m1_hi, double m1_lo)
      * K(m_N) = pi/2 (1 + m_N/4 + 9 m_N^2/64 + ...)  (A&S 17.3.11): one division by K in
      * double-double instead of N rounded factors. */
     EllipticDD K_bottom = elliptic_dd_mul(fast_two_sum(HALF_PI_HI, HALF_PI_LO),
-                                          dd_from(1.0 + m_n * (0.25 + m_n * (9.0 / 64.0))));
+                                          elliptic_dd(1.0 + m_n * (0.25 + m_n * (9.0 / 64.0))));
     q.bottom_scale = elliptic_dd_div(K_bottom, K).hi;
     memcpy(p, &q, sizeof q);
     return 0;

@@ -44,6 +44,23 @@ typedef struct {
     double hi, lo;
 } EllipticDD;
 
+/* The double-double x + 0. */
+static inline EllipticDD elliptic_dd(double x)
+{
+    EllipticDD r;
+    r.hi = x;
+    r.lo = 0.0;
+    return r;
+}
+
+/* -x, exactly. */
+static inline EllipticDD elliptic_dd_neg(EllipticDD x)
+{
+    x.hi = -x.hi;
+    x.lo = -x.lo;
+    return x;
+}
+
 /* s + err = a + b exactly, s = fl(a + b) (Knuth's TwoSum, TAOCP 4.2.2 Theorem B). */
 static inline EllipticDD elliptic_two_sum(double a, double b)
 {

@@ -44,24 +44,9 @@
 #define PI_LO   ELLIPTIC_PI_LO
 #define PI_LOLO ELLIPTIC_PI_LOLO
 
-static EllipticDD dd(double x)
-{
-    EllipticDD r;
-    r.hi = x;
-    r.lo = 0.0;
-    return r;
-}
-
-static EllipticDD dd_neg(EllipticDD x)
-{
-    x.hi = -x.hi;
-    x.lo = -x.lo;
-    return x;
-}
-
 static EllipticDD dd_sub(EllipticDD x, EllipticDD y)
 {
-    return elliptic_dd_add(x, dd_neg(y));
+    return elliptic_dd_add(x, elliptic_dd_neg(y));
 }
 
 /* x - j (2 pi), 2 pi in three parts, the two leading products exact. */
@@ -69,7 +54,7 @@ static EllipticDD subtract_turns(EllipticDD x, double j)
 {
     x = dd_sub(x, elliptic_two_prod(j, 2.0 * PI_HI));
     x = dd_sub(x, elliptic_two_prod(j, 2.0 * PI_LO));
-    return elliptic_dd_add(x, dd(-j * 2.0 * PI_LOLO));
+    return elliptic_dd_add(x, elliptic_dd(-j * 2.0 * PI_LOLO));
 }
 
 /* n mod 4 in 0..3 for an integer-valued double n (0 for a non-finite n). */
@@ -135,9 +120,9 @@ int pendulum_exact_init(PendulumExact *ex, double theta0, double omega0, double 
      * a second round finishes. From 2^60 on theta0 no longer resolves an angle (its ulp is
      * 256 rad): the exact remainder modulo the double 2 pi keeps everything finite there. */
     double turns = 0.0;
-    EllipticDD th = dd(theta0);
+    EllipticDD th = elliptic_dd(theta0);
     if (fabs(theta0) >= 0x1p60) {
-        th = dd(fmod(theta0, 2.0 * PI_HI));
+        th = elliptic_dd(fmod(theta0, 2.0 * PI_HI));
         turns = nearbyint((theta0 - th.hi) / (2.0 * PI_HI));
     }
     for (int round = 0; round < 8 && !(fabs(th.hi) <= 3.2); ++round) {
@@ -145,7 +130,7 @@ int pendulum_exact_init(PendulumExact *ex, double theta0, double omega0, double 
         th = subtract_turns(th, j);
         turns += j;
     }
-    EllipticDD half = elliptic_dd_mul(th, dd(0.5));
+    EllipticDD half = elliptic_dd_mul(th, elliptic_dd(0.5));
     EllipticDD s, c;
     elliptic_dd_sincos(half, &s, &c);
     if (c.hi < 0.0 || (c.hi == 0.0 && th.hi < 0.0)) {
@@ -153,8 +138,8 @@ int pendulum_exact_init(PendulumExact *ex, double theta0, double omega0, double 
         double shift = th.hi > 0.0 ? 1.0 : -1.0;
         turns += shift;
         th = subtract_turns(th, shift);
-        s = dd_neg(s);
-        c = dd_neg(c);
+        s = elliptic_dd_neg(s);
+        c = elliptic_dd_neg(c);
     }
     e.theta_turns = turns;
     e.theta_reduced = th.hi;
@@ -168,14 +153,14 @@ int pendulum_exact_init(PendulumExact *ex, double theta0, double omega0, double 
     (void)frexp(fmax(w0, half_speed), &exponent);
     const double w_n = ldexp(w0, -exponent), hs_n = ldexp(half_speed, -exponent);
     /* Sign of m1 = cos^2(th/2) - q^2 is that of w0 c - |omega0|/2, formed exactly enough. */
-    const EllipticDD c_w = elliptic_dd_mul(c, dd(w_n));
-    const EllipticDD gap = dd_sub(c_w, dd(hs_n));         /* = w_n (c - |q|) */
+    const EllipticDD c_w = elliptic_dd_mul(c, elliptic_dd(w_n));
+    const EllipticDD gap = dd_sub(c_w, elliptic_dd(hs_n));         /* = w_n (c - |q|) */
     EllipticDD rate_n;                                     /* rate of u, scaled by 2^-exponent */
 
     if (gap.hi > 0.0) {
         /* Libration: w_n >= 1/2 here, q = |omega0| / (2 w0) <= c <= 1. */
-        EllipticDD q = elliptic_dd_div(dd(hs_n), dd(w_n));
-        EllipticDD m1 = elliptic_dd_mul(elliptic_dd_div(gap, dd(w_n)), elliptic_dd_add(c, q));
+        EllipticDD q = elliptic_dd_div(elliptic_dd(hs_n), elliptic_dd(w_n));
+        EllipticDD m1 = elliptic_dd_mul(elliptic_dd_div(gap, elliptic_dd(w_n)), elliptic_dd_add(c, q));
         if (m1.hi > 0.0) {
             e.regime = PENDULUM_LIBRATION;
             double k = hypot(s.hi, q.hi);        /* sqrt(m) = sqrt(s^2 + q^2), no underflow */
@@ -191,7 +176,7 @@ int pendulum_exact_init(PendulumExact *ex, double theta0, double omega0, double 
             e.K_lo = e.ell.K_lo;
             e.scale = w0;
             e.scale_lo = 0.0;
-            rate_n = dd(w_n);
+            rate_n = elliptic_dd(w_n);
             e.omega_half = k * w0;
             e.sqrt_k1 = k / (1.0 + e.ell.kc);   /* sqrt(k_1) = k / (1 + k'), no underflow of k^2 */
             if (k == 0.0) {
@@ -212,14 +197,14 @@ int pendulum_exact_init(PendulumExact *ex, double theta0, double omega0, double 
          * (hs_n > c w_n, and c >= ~1e-33, so hs_n is not tiny). */
         e.regime = PENDULUM_ROTATION;
         e.direction = omega0 > 0.0 ? 1.0 : -1.0;
-        const EllipticDD hs = dd(hs_n);
-        EllipticDD rho = elliptic_dd_div(elliptic_dd_mul(s, dd(w_n)), hs);
-        EllipticDD one_plus_rho2 = elliptic_dd_add(dd(1.0), elliptic_dd_mul(rho, rho));
-        EllipticDD one_minus_gamma = elliptic_dd_div(dd_neg(gap), hs);  /* (|q| - c)/|q| */
+        const EllipticDD hs = elliptic_dd(hs_n);
+        EllipticDD rho = elliptic_dd_div(elliptic_dd_mul(s, elliptic_dd(w_n)), hs);
+        EllipticDD one_plus_rho2 = elliptic_dd_add(elliptic_dd(1.0), elliptic_dd_mul(rho, rho));
+        EllipticDD one_minus_gamma = elliptic_dd_div(elliptic_dd_neg(gap), hs);  /* (|q| - c)/|q| */
         EllipticDD gamma = elliptic_dd_div(c_w, hs);
         /* mu1 = -m1/m = (q^2 - c^2)/(q^2 + s^2) = (1 - gamma)(1 + gamma)/(1 + rho^2). */
         EllipticDD mu1 = elliptic_dd_div(
-            elliptic_dd_mul(one_minus_gamma, elliptic_dd_add(dd(1.0), gamma)), one_plus_rho2);
+            elliptic_dd_mul(one_minus_gamma, elliptic_dd_add(elliptic_dd(1.0), gamma)), one_plus_rho2);
         /* mu = 1/m = 1/(q^2 (1 + rho^2)). */
         double w_hs = w_n / hs_n;
         double mu = fmin(w_hs * w_hs / one_plus_rho2.hi, 1.0);
@@ -250,7 +235,7 @@ int pendulum_exact_init(PendulumExact *ex, double theta0, double omega0, double 
         K.hi = e.K_hi;
         K.lo = e.K_lo;
         EllipticDD rho = dd_ldexp(elliptic_dd_div(rate_n, K), exponent);
-        EllipticDD x0 = elliptic_dd_div(dd(e.u0), K);
+        EllipticDD x0 = elliptic_dd_div(elliptic_dd(e.u0), K);
         e.rho_hi = rho.hi;
         e.rho_lo = rho.lo;
         e.rho_head = elliptic_head26(rho.hi);
@@ -258,7 +243,7 @@ int pendulum_exact_init(PendulumExact *ex, double theta0, double omega0, double 
         e.x0_hi = x0.hi;
         e.x0_lo = x0.lo;
         const double quarters_per_period = e.regime == PENDULUM_LIBRATION ? 4.0 : 2.0;
-        e.period = ldexp(elliptic_dd_div(elliptic_dd_mul(K, dd(quarters_per_period)), rate_n).hi,
+        e.period = ldexp(elliptic_dd_div(elliptic_dd_mul(K, elliptic_dd(quarters_per_period)), rate_n).hi,
                          -exponent);
     }
     memcpy(ex, &e, sizeof e); /* bytewise, padding included (see fmi2_state.c) */
