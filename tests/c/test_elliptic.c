@@ -12,25 +12,8 @@
 #include <string.h>
 
 #include "elliptic.h"
+#include "check.h"
 
-static const double PI = 3.141592653589793238462643383;
-
-static int n_checks, n_failed;
-
-static void check(int ok, const char *fmt, ...)
-{
-    n_checks++;
-    if (ok) {
-        return;
-    }
-    n_failed++;
-    va_list ap;
-    va_start(ap, fmt);
-    printf("FAIL: ");
-    vprintf(fmt, ap);
-    printf("\n");
-    va_end(ap);
-}
 
 static EllipticParam param(double m, double m1)
 {
@@ -383,10 +366,5 @@ int main(void)
     test_incomplete_integral();
     test_double_double();
     test_kernels();
-    if (n_failed) {
-        printf("test_elliptic: %d of %d checks FAILED\n", n_failed, n_checks);
-        return 1;
-    }
-    printf("test_elliptic: %d checks passed\n", n_checks);
-    return 0;
+    return check_summary("test_elliptic");
 }

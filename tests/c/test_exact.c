@@ -14,25 +14,8 @@
 #include <string.h>
 
 #include "exact.h"
+#include "check.h"
 
-static const double PI = 3.141592653589793238462643383;
-
-static int n_checks, n_failed;
-
-static void check(int ok, const char *fmt, ...)
-{
-    n_checks++;
-    if (ok) {
-        return;
-    }
-    n_failed++;
-    va_list ap;
-    va_start(ap, fmt);
-    printf("FAIL: ");
-    vprintf(fmt, ap);
-    printf("\n");
-    va_end(ap);
-}
 
 static PendulumExact make(double theta0, double omega0, double w0, double t0)
 {
@@ -329,10 +312,5 @@ int main(void)
     test_energy();
     test_start_and_symmetry();
     test_large_times();
-    if (n_failed) {
-        printf("test_exact: %d of %d checks FAILED\n", n_failed, n_checks);
-        return 1;
-    }
-    printf("test_exact: %d checks passed\n", n_checks);
-    return 0;
+    return check_summary("test_exact");
 }
