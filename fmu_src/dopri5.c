@@ -97,7 +97,7 @@ int integ_dopri5_step(Integrator *it)
             return -1;
 
         int accept;
-        double hnew = integ_control(it, h, err, 5, &accept);
+        double hnew = integ_control(it, h, err, 5, 0.9, &accept);
         if (!accept) {
             it->h = hnew;
             continue;
@@ -112,7 +112,10 @@ int integ_dopri5_step(Integrator *it)
         for (int i = 0; i < 2; i++)
             it->dense[4][i] = h * (D1 * k1[i] + D3 * k3[i] + D4 * k4[i] + D5 * k5[i] +
                                    D6 * k6[i] + D7 * k7[i]);
-        integ_project(it, y, y5, k7);
+        if (it->project_energy) {
+            double trig[2];
+            integ_project(it, y, y5, k7, trig);
+        }
         for (int i = 0; i < 2; i++) {
             double r2 = y5[i] - y[i];
             double r3 = h * k1[i] - r2;
@@ -127,9 +130,8 @@ int integ_dopri5_step(Integrator *it)
     }
 }
 
-void integ_dopri5_interp(const Integrator *it, double t, double y[2])
+void integ_dopri5_interp(const Integrator *it, double s, double y[2])
 {
-    const double s = (t - it->t_prev) / it->h_last;
     const double s1 = 1.0 - s;
     for (int i = 0; i < 2; i++)
         y[i] = it->dense[0][i] +

@@ -32,7 +32,7 @@ typedef enum {
 #define START_G 9.81
 #define START_THETA 1.3089969389957472 /* 75 deg */
 #define START_OMEGA 0.0
-#define START_SOLVER SOLVER_DOPRI5
+#define START_SOLVER SOLVER_RKN
 #define DEFAULT_TOLERANCE 1e-8         /* used when fmi2SetupExperiment defines none */
 
 typedef struct {

@@ -10,7 +10,7 @@
 #include "fmi2_instance.h"
 
 #define STATE_MAGIC "PNDLSTAT"
-#define STATE_FORMAT_VERSION 1u
+#define STATE_FORMAT_VERSION 2u /* 2: the solver state gained fields */
 
 typedef struct {
     char magic[8];

@@ -16,7 +16,8 @@
 typedef enum {
     SOLVER_DOPRI5 = 1,      /* adaptive Dormand-Prince 5(4) with dense output */
     SOLVER_RK4 = 2,         /* classic RK4, fixed step derived from the tolerance */
-    SOLVER_RKN = 3,         /* adaptive Runge-Kutta-Nystrom pair for theta'' = f(theta) */
+    SOLVER_RKN = 3,         /* adaptive Runge-Kutta-Nystrom 12(10) pair for theta'' = f(theta):
+                               the FMU's default (README, the speed-against-error study) */
     SOLVER_SYMPLECTIC = 4   /* structure-preserving method for long horizons */
 } SolverKind;
 
@@ -24,9 +25,12 @@ typedef struct {
     long steps;       /* accepted steps */
     long rejected;    /* rejected steps */
     long rhs_evals;   /* evaluations of the right-hand side (one sin each), plus the other
-                         trigonometric evaluations of theta: the energy projection's
-                         sin(theta/2) at t0 and sin/cos(theta/2) pairs (DOPRI5, RKN), the
-                         symplectic method's cos for its interpolation; one count each */
+                         trigonometric evaluations of theta, one count each (a sin/cos pair
+                         counts one): the energy projection's cos(theta/2) at t0, its
+                         sin/cos(theta/2) pair at every accepted point and at every Newton
+                         correction larger than 2e-3 rad (DOPRI5, RKN), RKN's sin/cos of
+                         theta0 for its dense output, the symplectic method's cos for its
+                         interpolation */
 } SolverStats;
 
 #define INTEGRATOR_MAX_STAGES 16
@@ -34,9 +38,13 @@ typedef struct {
 typedef struct {
     SolverKind kind;
     double w0sq;                 /* g / L */
-    double rtol, atol;           /* error tolerances of the local error test (adaptive
-                                    methods: a fraction of the user tol, integrator.c) */
-    double t;                    /* time of the internal solution point */
+    double rtol, atol;           /* error tolerances of the local error test: the user's tol
+                                    (adaptive methods: at least 1e-14, integrator.c) */
+    double t;                    /* time of the internal solution point: t + t_lo, kept as a
+                                    compensated sum of the steps (without it, the rounding of
+                                    t += h, ulp(t)/2 a step, was a phase error of 2.5e-9 after
+                                    10,000 periods at 90 deg) */
+    double t_lo;                 /* low part of that time, |t_lo| <= ulp(t)/2 */
     double y[2];                 /* internal solution (theta, omega) at t */
     double f[2];                 /* y' = (omega, -w0sq sin theta) at (t, y), already counted:
                                     first stage of the next step (FSAL) and end-point slope
@@ -44,12 +52,17 @@ typedef struct {
     double h;                    /* next step size to try (fixed-step methods: the step) */
     double hmax;                 /* largest step the adaptive methods may take */
     double t_prev, y_prev[2];    /* start of the last accepted step (for dense output) */
+    double t_prev_lo;            /* low part of t_prev */
     double f_prev[2];            /* y' at (t_prev, y_prev) */
-    double h_last;               /* length of the last accepted step (0 before the first) */
+    double h_last;               /* length of the last accepted step, the h its formulas used
+                                    (0 before the first) */
     double err_prev;             /* PI controller: error norm of the last accepted step */
-    double energy0;              /* H = omega^2/2 + 2 w0sq sin^2(theta/2) at t0 (if projecting) */
+    double energy0;              /* G = omega^2/2 - 2 w0sq cos^2(theta/2) at t0 (if projecting):
+                                    the energy H = omega^2/2 + 2 w0sq sin^2(theta/2) measured
+                                    from the separatrix, G = H - 2 w0sq, which keeps its
+                                    relative accuracy near the top, where H loses it */
     int project_energy;          /* 1: the adaptive methods project every accepted point back
-                                    onto H = energy0 (set by integrator_init for DOPRI5 and
+                                    onto G = energy0 (set by integrator_init for DOPRI5 and
                                     RKN; 0 runs the plain Runge-Kutta methods) */
     int last_rejected;           /* the previous step attempt was rejected */
     double dense[INTEGRATOR_MAX_STAGES][2]; /* method-specific dense-output data */

@@ -7,7 +7,7 @@
  *   step(it):         takes one accepted step from it->t, moving the old point to
  *                     t_prev/y_prev/f_prev, and refreshing it->f and it->dense.
  *                     Returns 0, or -1 on step-size underflow / non-finite values.
- *   interp(it, t, y): the solution at t_prev < t < t (it->h_last > 0). */
+ *   interp(it, s, y): the solution at t_prev + s h_last, 0 <= s <= 1 (it->h_last > 0). */
 #ifndef PENDULUM_INTEGRATOR_METHODS_H
 #define PENDULUM_INTEGRATOR_METHODS_H
 
@@ -51,27 +51,55 @@ static inline double integ_err_norm(const Integrator *it, const double e[2],
 double integ_initial_step(Integrator *it, int order);
 
 /* Step-size controller shared by the adaptive methods: the PI controller of HNW I, IV.2
- * (alpha = 1/q - 0.75 beta, beta = 0.08, safety 0.9, factor in [0.2, 10]),
- * q = order of the error estimate + 1. Given the error norm err of a step
- * of size h, returns the next step to try; *accept tells whether the step is accepted.
+ * (beta = 0.4/q, alpha = 0.7/q, factor in [0.2, 10]), q = order of the error estimate
+ * + 1, safety factor `safe`. Given the error norm err of a step of size h, returns the
+ * next step to try; *accept tells whether the step is accepted.
  * Updates err_prev / last_rejected / stats.rejected. */
-double integ_control(Integrator *it, double h, double err, int q, int *accept);
+double integ_control(Integrator *it, double h, double err, int q, double safe, int *accept);
 
 /* Accepts a step: (t, y, f) moves to (t_prev, y_prev, f_prev), the new point becomes
- * (t + h, ynew, fnew). */
+ * (t + h, ynew, fnew), the time summed with compensation (t_lo). */
 void integ_accept(Integrator *it, double h, const double ynew[2], const double fnew[2]);
 
 /* Quintic Hermite interpolation on the last step from theta, theta' = omega and
  * theta'' = f(theta) at both ends; omega is the derivative of the same polynomial. */
-void integ_hermite5(const Integrator *it, double t, double y[2]);
+void integ_hermite5(const Integrator *it, double s, double y[2]);
 
-/* Energy projection for the adaptive methods: moves the new point ynew of an accepted step
- * along grad H back onto H = it->energy0 (Newton; at most a few iterations) and returns
- * f at the projected point in fnew (fnew must hold f(ynew) on entry). Skipped, returning
- * 0 and leaving ynew/fnew alone, where the correction would exceed the local error
- * tolerance (near the saddle (pi, 0) grad H vanishes), or if it->project_energy is 0.
- * Returns 1 if projected. */
-int integ_project(Integrator *it, const double y0[2], double ynew[2], double fnew[2]);
+/* The end point of an accepted step of the adaptive methods: evaluates sin and cos of
+ * theta at ynew (one pair, counted in rhs_evals) and, if it->project_energy, moves ynew
+ * along grad G back onto the initial energy G = it->energy0 (Newton; at most a few
+ * iterations). The projection is skipped, leaving ynew alone, where the correction would
+ * exceed the local error tolerance (near the saddle (pi, 0) grad G vanishes). On return
+ * fnew = f(ynew) and trig = (sin, cos) of ynew[0], at the point returned.
+ * Returns 1 if projected, 0 if not. */
+int integ_project(Integrator *it, const double y0[2], double ynew[2], double fnew[2],
+                  double trig[2]);
+
+/* Dense output from the differential equation itself: INTEG_TAYLOR_TERMS Taylor
+ * coefficients at each end of a step (all of them follow from theta, omega, sin theta and
+ * cos theta by recurrences, no further evaluation of sin) fix a two-point Hermite
+ * polynomial of degree 2 INTEG_TAYLOR_TERMS - 1 = 15 for theta; omega is its derivative.
+ * Its error is of the order of h^16 theta^(16)/16! / 4^8: below the local error of a
+ * 12th-order step of the same size. */
+#define INTEG_TAYLOR_TERMS 8
+
+/* a[n] = theta^(n)(t) / n!, n < INTEG_TAYLOR_TERMS, given theta, omega and
+ * trig = (sin theta, cos theta) at t. */
+void integ_taylor(double w0sq, double theta, double omega, const double trig[2],
+                  double a[INTEG_TAYLOR_TERMS]);
+
+/* scaled[n] = a[n] h^n: the Taylor coefficients in the step's variable s = (t - t0)/h. */
+void integ_taylor_scale(const double a[INTEG_TAYLOR_TERMS], double h,
+                        double scaled[INTEG_TAYLOR_TERMS]);
+
+/* Stores the Hermite polynomial matching the scaled Taylor coefficients `left` at the start
+ * and `right` at the end of a step in dense[0 .. INTEG_TAYLOR_TERMS - 1]. */
+void integ_hermite_setup(const double left[INTEG_TAYLOR_TERMS],
+                         const double right[INTEG_TAYLOR_TERMS], double dense[][2]);
+
+/* Evaluates that polynomial (theta) and its derivative (omega) at the fraction s of the
+ * last step. */
+void integ_hermite_eval(const Integrator *it, double s, double y[2]);
 
 /* The smallest step the adaptive methods may take at time t before reporting underflow. */
 double integ_hmin(double t);
@@ -79,18 +107,18 @@ double integ_hmin(double t);
 /* Per-method entry points. */
 void integ_dopri5_start(Integrator *it);
 int integ_dopri5_step(Integrator *it);
-void integ_dopri5_interp(const Integrator *it, double t, double y[2]);
+void integ_dopri5_interp(const Integrator *it, double s, double y[2]);
 
 void integ_rk4_start(Integrator *it);
 int integ_rk4_step(Integrator *it);
-void integ_rk4_interp(const Integrator *it, double t, double y[2]);
+void integ_rk4_interp(const Integrator *it, double s, double y[2]);
 
 void integ_rkn_start(Integrator *it);
 int integ_rkn_step(Integrator *it);
-void integ_rkn_interp(const Integrator *it, double t, double y[2]);
+void integ_rkn_interp(const Integrator *it, double s, double y[2]);
 
 void integ_symplectic_start(Integrator *it);
 int integ_symplectic_step(Integrator *it);
-void integ_symplectic_interp(const Integrator *it, double t, double y[2]);
+void integ_symplectic_interp(const Integrator *it, double s, double y[2]);
 
 #endif

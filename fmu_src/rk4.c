@@ -53,7 +53,7 @@ int integ_rk4_step(Integrator *it)
     return 0;
 }
 
-void integ_rk4_interp(const Integrator *it, double t, double y[2])
+void integ_rk4_interp(const Integrator *it, double s, double y[2])
 {
-    integ_hermite5(it, t, y);
+    integ_hermite5(it, s, y);
 }

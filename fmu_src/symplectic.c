@@ -87,7 +87,7 @@ int integ_symplectic_step(Integrator *it)
     return 0;
 }
 
-void integ_symplectic_interp(const Integrator *it, double t, double y[2])
+void integ_symplectic_interp(const Integrator *it, double s, double y[2])
 {
     /* p(s) = p0 + v0 s + a0 s^2/2 + j0 s^3/6 + c4 s^4 + c5 s^5 + c6 s^6 + c7 s^7 on
      * s = (t - t_prev)/h, with v, a, j the 1st, 2nd, 3rd derivatives times h, h^2, h^3,
@@ -97,7 +97,6 @@ void integ_symplectic_interp(const Integrator *it, double t, double y[2])
      *   c4 =  35 R0 - 15 R1 + 5/2 R2 - 1/6 R3,   c5 = -84 R0 + 39 R1 - 7 R2 + 1/2 R3,
      *   c6 =  70 R0 - 34 R1 + 13/2 R2 - 1/2 R3,  c7 = -20 R0 + 10 R1 - 2 R2 + 1/6 R3. */
     const double h = it->h_last;
-    const double s = (t - it->t_prev) / h;
     const double p0 = it->y_prev[0], p1 = it->y[0];
     const double v0 = h * it->y_prev[1], v1 = h * it->y[1];
     const double a0 = h * h * it->f_prev[1], a1 = h * h * it->f[1];

@@ -14,7 +14,7 @@ from collections.abc import Callable, Sequence
 from pathlib import Path
 
 from .errors import UsageError
-from .spec import CS_SOLVERS, ME_SOLVERS, SOLVERS, Method, Pendulum, TimeGrid
+from .spec import CS_SOLVERS, DEFAULT_CS_SOLVER, ME_SOLVERS, SOLVERS, Method, Pendulum, TimeGrid
 
 MAX_GRID_VALUES = 100_000
 """Most values one grid axis may expand to (a guard against a typo like ``0:1:1e9``)."""
@@ -202,7 +202,7 @@ def add_method_arguments(parser: argparse.ArgumentParser) -> None:
                        help="CS: Co-Simulation with the FMU's own solver; ME: Model Exchange with fmpy's "
                             "CVODE (default: CS, or whatever --solver implies)")
     group.add_argument("-s", "--solver", choices=SOLVERS, type=str.lower, default=None, metavar="NAME",
-                       help=f"CS: {', '.join(CS_SOLVERS)} (default dopri5); ME: {', '.join(ME_SOLVERS)}")
+                       help=f"CS: {', '.join(CS_SOLVERS)} (default rkn); ME: {', '.join(ME_SOLVERS)}")
     group.add_argument("-t", "--tolerance", type=tolerance, default=None, metavar="RTOL",
                        help="relative tolerance in (0, 1) (default: the FMU's 1e-8)")
 
@@ -235,7 +235,7 @@ def method_from(args: argparse.Namespace) -> Method:
     """
     interface, solver = args.interface, args.solver
     if solver is None:
-        solver = ME_SOLVERS[0] if interface == "ME" else CS_SOLVERS[0]
+        solver = ME_SOLVERS[0] if interface == "ME" else DEFAULT_CS_SOLVER
     allowed = ME_SOLVERS if interface == "ME" else CS_SOLVERS if interface == "CS" else SOLVERS
     if solver not in allowed:
         kind = "Model Exchange" if solver in ME_SOLVERS else "Co-Simulation"

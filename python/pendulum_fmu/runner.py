@@ -34,7 +34,7 @@ RECORDED: tuple[str, ...] = ("theta", "omega", "theta_exact", "omega_exact", "x"
 STATS: tuple[str, ...] = ("stats.steps", "stats.rejected_steps", "stats.rhs_evaluations")
 
 DEFAULT_METHOD = Method()
-"""The FMU's dopri5 at its default tolerance."""
+"""The FMU's default solver (rkn) at its default tolerance."""
 DEFAULT_GRID = TimeGrid()
 """Ten exact periods, 50 output points a period."""
 

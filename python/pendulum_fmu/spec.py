@@ -16,6 +16,8 @@ Interface = Literal["CS", "ME"]
 StopUnit = Literal["s", "periods"]
 
 CS_SOLVERS: tuple[str, ...] = ("dopri5", "rk4", "rkn", "symplectic")
+DEFAULT_CS_SOLVER = "rkn"
+"""The FMU's own default (start value of ``solver`` in modelDescription.xml)."""
 """The FMU's own Co-Simulation methods: the items of the ``Solver`` enumeration, in order."""
 
 ME_SOLVERS: tuple[str, ...] = ("cvode",)
@@ -97,7 +99,7 @@ class Method:
         Relative tolerance in (0, 1); None uses the FMU's default (1e-8).
     """
 
-    solver: str = "dopri5"
+    solver: str = DEFAULT_CS_SOLVER
     tolerance: float | None = None
 
     def __post_init__(self) -> None:

@@ -27,6 +27,7 @@ from typing import TYPE_CHECKING, Any
 from .arguments import add_fmu_argument, angle_degrees, describe, finite, grid, integer, positive, solver_list, tolerance
 from .errors import UsageError
 from .locate import locate_fmu
+from .spec import DEFAULT_CS_SOLVER
 from .sweep_grid import COLUMN_KINDS, COLUMNS, SweepGrid, SweepPoint, point_of
 
 if TYPE_CHECKING:
@@ -322,9 +323,9 @@ def configure(parser: argparse.ArgumentParser) -> None:
                       help="lengths > 0, m (default 1)")
     axes.add_argument("-g", "--gravities", type=grid(positive("m/s^2")), default=[9.81], metavar="M_S2",
                       help="gravitational accelerations > 0, m/s^2 (default 9.81)")
-    axes.add_argument("-s", "--solvers", type=solver_list, default=["dopri5"], metavar="NAMES",
+    axes.add_argument("-s", "--solvers", type=solver_list, default=[DEFAULT_CS_SOLVER], metavar="NAMES",
                       help="dopri5, rk4, rkn, symplectic (Co-Simulation) and cvode (Model Exchange) "
-                           "(default dopri5)")
+                           "(default rkn)")
     axes.add_argument("-t", "--tolerances", type=grid(tolerance), default=[1e-8], metavar="RTOLS",
                       help="relative tolerances in (0, 1) (default 1e-8)")
     runs = parser.add_argument_group("every run")

@@ -6,7 +6,7 @@ import itertools
 from dataclasses import astuple, dataclass, fields
 from typing import Any
 
-from .spec import Method, Pendulum, TimeGrid
+from .spec import DEFAULT_CS_SOLVER, Method, Pendulum, TimeGrid
 
 Key = tuple[float, float, float, float, str, float, float, int]
 """A run's identity: its input values, exactly (used to skip runs already written)."""
@@ -132,7 +132,7 @@ class SweepGrid:
     omega0s: tuple[float, ...] = (0.0,)
     lengths: tuple[float, ...] = (1.0,)
     gravities: tuple[float, ...] = (9.81,)
-    solvers: tuple[str, ...] = ("dopri5",)
+    solvers: tuple[str, ...] = (DEFAULT_CS_SOLVER,)
     tolerances: tuple[float, ...] = (1e-8,)
     periods: float = 10.0
     points_per_period: int = 50
