@@ -363,8 +363,7 @@ void elliptic_sncndn_reduced(const EllipticParam *p, double v, double *sn, doubl
     *dn = E * inv;
 }
 
-/* n mod 4 in 0..3 for an integer-valued double n (0 for a non-finite n). */
-static int quarter_of(double n)
+int elliptic_quarter_of(double n)
 {
     if (fabs(n) < 0x1p62) {
         return (int)((long long)n & 3);
@@ -381,7 +380,7 @@ void elliptic_sncndn(const EllipticParam *p, double u, double *sn, double *cn, d
     double n, S, C, E, D;
     double r = elliptic_reduce(p, u, 0.0, &n);
     elliptic_sncndn_homogeneous(p, r, &S, &C, &E, &D);
-    switch (quarter_of(n)) {
+    switch (elliptic_quarter_of(n)) {
     case 0: /* u = r */
         *sn = S / D;
         *cn = C / D;
@@ -412,6 +411,6 @@ double elliptic_am(const EllipticParam *p, double u)
     elliptic_sncndn_homogeneous(p, r, &S, &C, &E, &D);
     /* am(nK + r) = n pi/2 + delta: delta = am r for even n; for odd n, sin and cos of
      * am(nK + r) - n pi/2 are proportional to k' sn r and cn r (table in elliptic.h). */
-    double delta = elliptic_atan_ratio((quarter_of(n) & 1) ? p->kc * S : S, C);   /* C > 0 */
+    double delta = elliptic_atan_ratio((elliptic_quarter_of(n) & 1) ? p->kc * S : S, C);   /* C > 0 */
     return fma(n, HALF_PI_HI, fma(n, HALF_PI_LO, delta));
 }

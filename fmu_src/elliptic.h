@@ -325,6 +325,10 @@ static inline void elliptic_sncndn_homogeneous_pair(const EllipticParam *p, doub
 /* sn, cn, dn of a reduced argument v, |v| <= K/2 (the homogeneous form divided out). */
 void elliptic_sncndn_reduced(const EllipticParam *p, double v, double *sn, double *cn, double *dn);
 
+/* n mod 4 in 0..3 for an integer-valued double n (0 for a non-finite n): the quarter of a
+ * period that a reduction quotient n lands in. */
+int elliptic_quarter_of(double n);
+
 /* sn(u|m), cn(u|m), dn(u|m) for any real u: reduction to u = n K + r, then by n mod 4
  * (A&S 16.8.1-3 and the table of A&S 16.8 for shifts by K, 2K, 3K):
  *   n = 0: ( sn r,          cn r,              dn r      )

@@ -57,19 +57,6 @@ static EllipticDD subtract_turns(EllipticDD x, double j)
     return elliptic_dd_add(x, elliptic_dd(-j * 2.0 * PI_LOLO));
 }
 
-/* n mod 4 in 0..3 for an integer-valued double n (0 for a non-finite n). */
-static int quarter_of(double n)
-{
-    if (fabs(n) < 0x1p62) {
-        return (int)((long long)n & 3);
-    }
-    if (!isfinite(n)) {
-        return 0;
-    }
-    double r = fmod(n, 4.0);
-    return (int)(r < 0.0 ? r + 4.0 : r);
-}
-
 /* x * 2^exponent for a double-double (exact unless it overflows or underflows). */
 static EllipticDD dd_ldexp(EllipticDD x, int exponent)
 {
@@ -292,7 +279,7 @@ void pendulum_exact_eval(const PendulumExact *ex, double t, double *theta, doubl
         elliptic_sncndn_homogeneous_pair(&ex->ell, f * ex->K_hi, &h0, &h1);
         /* The quarter n mod 4 picks the formulas of the header comment through exact 0/1
          * weights (x * 0 + y * 1 == y exactly): no data-dependent branch. */
-        const int quarter = quarter_of(n);
+        const int quarter = elliptic_quarter_of(n);
         const double odd = (double)(quarter & 1), even = 1.0 - odd;
         const double sign = 1.0 - (double)(quarter & 2);          /* -1 for n = 2, 3 mod 4 */
         /* theta/2 = atan2(k sn u, dn u) = 2 atan(sqrt(k_1) sn(u_1 | m_1)) (elliptic.h), and at
@@ -306,7 +293,7 @@ void pendulum_exact_eval(const PendulumExact *ex, double t, double *theta, doubl
         double n, S, C, E, D;
         const double f = phase_quarters(ex, t, &n);
         elliptic_sncndn_homogeneous(&ex->ell, f * ex->K_hi, &S, &C, &E, &D); /* sn r = S/D, ... */
-        const int quarter = quarter_of(n);
+        const int quarter = elliptic_quarter_of(n);
         const double odd = (double)(quarter & 1), even = 1.0 - odd;
         /* am(nK + r) - n pi/2 = atan(sn r / cn r) (n even), atan(k' sn r / cn r) (n odd); C > 0
          * for |r| < K, as elliptic_atan_ratio requires */
