@@ -343,6 +343,21 @@ void elliptic_sncndn(const EllipticParam *p, double u, double *sn, double *cn, d
 #define ELLIPTIC_QUARTER_PI_HI 0x1.921fb54442d18p-1
 #define ELLIPTIC_QUARTER_PI_LO 0x1.1a62633145c07p-55
 
+/* g(s) = (atan(sqrt s)/sqrt s - 1)/s on [0, tan^2(pi/8)]: Chebyshev fit of degree 11,
+ * generated with mpmath.chebyfit at 50 digits (max fit error 1.2e-18); coefficients
+ * g_0..g_11, evaluated by Estrin's scheme. atan(t) = t + t s g(s) with s = t^2. */
+static inline double elliptic_atan_series(double s)
+{
+    const double s2 = s * s, s4 = s2 * s2, s8 = s4 * s4;
+    const double g01 = -0x1.5555555555555p-2 + s * 0x1.9999999999953p-3;
+    const double g23 = -0x1.249249248d7eep-3 + s * 0x1.c71c71c304b68p-4;
+    const double g45 = -0x1.745d165df3f95p-4 + s * 0x1.3b1392d9e785cp-4;
+    const double g67 = -0x1.110e880a7a521p-4 + s * 0x1.e19a13b9fc6dfp-5;
+    const double g89 = -0x1.ac7a938b69c93p-5 + s * 0x1.74ddd408bb4c1p-5;
+    const double g1011 = -0x1.1b33b923aa954p-5 + s * 0x1.0ad36a455cafbp-6;
+    return ((g01 + s2 * g23) + s4 * (g45 + s2 * g67)) + s8 * (g89 + s2 * g1011);
+}
+
 /* atan(y / x) for x > 0 and finite y (that is atan2(y, x) on the right half-plane), within
  * about 1 ulp:
  * t = |y|/x is mapped into |t| <= tan(pi/8) by atan(a/b) = pi/4 + atan((a - b)/(a + b)) and
@@ -365,17 +380,7 @@ static inline double elliptic_atan_ratio(double y, double x)
     const double base_lo = w1 * ELLIPTIC_QUARTER_PI_LO + w3 * (2.0 * ELLIPTIC_QUARTER_PI_LO);
     const double t = num / den;
     const double s = t * t;
-    /* g(s) = (atan(sqrt s)/sqrt s - 1)/s on [0, tan^2(pi/8)]: Chebyshev fit of degree 11,
-     * generated with mpmath.chebyfit at 50 digits (max fit error 1.2e-18); coefficients
-     * g_0..g_11, evaluated by Estrin's scheme. */
-    const double s2 = s * s, s4 = s2 * s2, s8 = s4 * s4;
-    const double g01 = -0x1.5555555555555p-2 + s * 0x1.9999999999953p-3;
-    const double g23 = -0x1.249249248d7eep-3 + s * 0x1.c71c71c304b68p-4;
-    const double g45 = -0x1.745d165df3f95p-4 + s * 0x1.3b1392d9e785cp-4;
-    const double g67 = -0x1.110e880a7a521p-4 + s * 0x1.e19a13b9fc6dfp-5;
-    const double g89 = -0x1.ac7a938b69c93p-5 + s * 0x1.74ddd408bb4c1p-5;
-    const double g1011 = -0x1.1b33b923aa954p-5 + s * 0x1.0ad36a455cafbp-6;
-    const double g = ((g01 + s2 * g23) + s4 * (g45 + s2 * g67)) + s8 * (g89 + s2 * g1011);
+    const double g = elliptic_atan_series(s);
     const double angle = base_hi + (base_lo + (t + t * s * g));
     return copysign(angle, y);
 }
@@ -386,14 +391,8 @@ static inline double elliptic_atan_unit(double y, double x)
     const double a = fabs(y), b = x;
     const double w1 = (double)(a > ELLIPTIC_TAN_PI_8 * b), w0 = 1.0 - w1;  /* exact 0/1 */
     const double t = (w0 * a + w1 * (a - b)) / (w0 * b + w1 * (a + b));
-    const double s = t * t, s2 = s * s, s4 = s2 * s2, s8 = s4 * s4;
-    const double g01 = -0x1.5555555555555p-2 + s * 0x1.9999999999953p-3;
-    const double g23 = -0x1.249249248d7eep-3 + s * 0x1.c71c71c304b68p-4;
-    const double g45 = -0x1.745d165df3f95p-4 + s * 0x1.3b1392d9e785cp-4;
-    const double g67 = -0x1.110e880a7a521p-4 + s * 0x1.e19a13b9fc6dfp-5;
-    const double g89 = -0x1.ac7a938b69c93p-5 + s * 0x1.74ddd408bb4c1p-5;
-    const double g1011 = -0x1.1b33b923aa954p-5 + s * 0x1.0ad36a455cafbp-6;
-    const double g = ((g01 + s2 * g23) + s4 * (g45 + s2 * g67)) + s8 * (g89 + s2 * g1011);
+    const double s = t * t;
+    const double g = elliptic_atan_series(s);
     const double angle =
         w1 * ELLIPTIC_QUARTER_PI_HI + (w1 * ELLIPTIC_QUARTER_PI_LO + (t + t * s * g));
     return copysign(angle, y);
