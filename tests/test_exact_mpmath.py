@@ -312,6 +312,16 @@ def initial_speed(theta0: float, factor: float, w0: float) -> float:
     return factor * max(separatrix_speed(theta0, w0), 1e-3 * w0) if factor else 0.0
 
 
+def start_motion(port: ExactPort, theta0: float, factor: float, length: float,
+                 gravity: float) -> tuple[float, float, float]:
+    """Initialize the port; return w0, omega0 and a time span (one period, or 20/w0 if none)."""
+    w0 = frequency(length, gravity)
+    omega0 = initial_speed(theta0, factor, w0)
+    port.initialize(theta0, omega0, length, gravity)
+    period = port.period()
+    return w0, omega0, period if math.isfinite(period) else 20.0 / w0
+
+
 PROPERTY_SETTINGS = settings(max_examples=40, deadline=None,
                              suppress_health_check=[HealthCheck.too_slow])
 
@@ -322,11 +332,7 @@ PROPERTY_SETTINGS = settings(max_examples=40, deadline=None,
 def test_accuracy_property(port: ExactPort, theta0: float, factor: float, length: float,
                            gravity: float, fractions: list[float]) -> None:
     """Any state: theta within 5e-14 (plus rounding of a large theta) and omega within 5e-14."""
-    w0 = frequency(length, gravity)
-    omega0 = initial_speed(theta0, factor, w0)
-    port.initialize(theta0, omega0, length, gravity)
-    period = port.period()
-    span = period if math.isfinite(period) else 20.0 / w0
+    w0, omega0, span = start_motion(port, theta0, factor, length, gravity)
     times = [f * span for f in fractions]
     theta, omega = port.evaluate(times)
     ref_theta, ref_omega, _ = closed_form(theta0, omega0, w0, times)
@@ -342,11 +348,7 @@ def test_accuracy_property(port: ExactPort, theta0: float, factor: float, length
 def test_energy_conserved(port: ExactPort, theta0: float, factor: float, length: float,
                           gravity: float, fractions: list[float]) -> None:
     """H = omega^2/2 + 2 w0^2 sin^2(theta/2) stays at its initial value to rounding."""
-    w0 = frequency(length, gravity)
-    omega0 = initial_speed(theta0, factor, w0)
-    port.initialize(theta0, omega0, length, gravity)
-    period = port.period()
-    span = period if math.isfinite(period) else 20.0 / w0
+    w0, omega0, span = start_motion(port, theta0, factor, length, gravity)
     theta, omega = port.evaluate([f * span for f in fractions])
     energy0 = 0.5 * omega0**2 + 2.0 * w0**2 * math.sin(theta0 / 2.0) ** 2
     energy = 0.5 * omega**2 + 2.0 * w0**2 * np.sin(theta / 2.0) ** 2
@@ -359,11 +361,8 @@ def test_energy_conserved(port: ExactPort, theta0: float, factor: float, length:
 def test_odd_symmetry(port: ExactPort, theta0: float, factor: float, length: float,
                       gravity: float, fraction: float) -> None:
     """(theta0, omega0) -> (-theta0, -omega0) mirrors the whole motion."""
-    w0 = frequency(length, gravity)
-    omega0 = initial_speed(theta0, factor, w0)
-    port.initialize(theta0, omega0, length, gravity)
-    period = port.period()
-    t = fraction * (period if math.isfinite(period) else 20.0 / w0)
+    w0, omega0, span = start_motion(port, theta0, factor, length, gravity)
+    t = fraction * span
     theta, omega = port.evaluate([t])
     port.initialize(-theta0, -omega0, length, gravity)
     mirrored_theta, mirrored_omega = port.evaluate([t])
