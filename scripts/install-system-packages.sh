@@ -1,0 +1,10 @@
+#!/usr/bin/env bash
+# Debian packages the tests need beyond Python, cmake and gcc (run as root; CI calls it):
+# valgrind (memcheck of the FMI harness), clang + libFuzzer runtime (the fuzz target),
+# mingw-w64 + wine64 (the win64 binary, built and run), gcc-aarch64 + qemu-user (the arm64
+# code, built and run), llvm (llvm-lipo/llvm-nm/llvm-objdump to inspect the macOS binary).
+set -euo pipefail
+packages=(cmake gcc python3-venv valgrind clang lld libclang-rt-14-dev llvm
+          mingw-w64 wine64 qemu-user gcc-aarch64-linux-gnu libc6-dev-arm64-cross)
+apt-get update -q
+DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends "${packages[@]}"
