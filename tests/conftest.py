@@ -6,7 +6,7 @@ from pathlib import Path
 
 import pytest
 
-from pendulum_fmu.build import find_fmu
+from pendulum_fmu.fmu.build import find_fmu
 
 
 @pytest.fixture(scope="session")

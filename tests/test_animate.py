@@ -11,7 +11,7 @@ import pytest
 from PIL import Image
 from scipy.special import ellipk
 
-from pendulum_fmu.cli import main
+from pendulum_fmu.cli.main import main
 
 
 def test_gif_has_one_frame_per_step_of_film_time(fmu_path: Path, tmp_path: Path) -> None:

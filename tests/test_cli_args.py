@@ -9,9 +9,9 @@ from pathlib import Path
 
 import pytest
 
-from pendulum_fmu import locate
-from pendulum_fmu.arguments import grid, positive
-from pendulum_fmu.cli import main
+from pendulum_fmu.fmu import locate
+from pendulum_fmu.cli.arguments import grid, positive
+from pendulum_fmu.cli.main import main
 from pendulum_fmu.errors import UsageError
 from pendulum_fmu.spec import Method, Pendulum, TimeGrid
 

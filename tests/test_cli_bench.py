@@ -7,13 +7,13 @@ from pathlib import Path
 
 import pytest
 
-from pendulum_fmu import bench
-from pendulum_fmu.cli import main
+from pendulum_fmu.cli import bench
+from pendulum_fmu.cli.main import main
 
 
 def test_bench_exact_is_forwarded_with_its_own_help(capsys: pytest.CaptureFixture[str]) -> None:
     if "exact" not in bench.available():
-        pytest.skip("pendulum_fmu.bench_exact is not installed")
+        pytest.skip("pendulum_fmu.bench.exact is not installed")
     with pytest.raises(SystemExit) as stop:
         main(["bench", "exact", "--help"])
     assert stop.value.code == 0

@@ -11,10 +11,10 @@ import pytest
 from PIL import Image
 from scipy.special import ellipk
 
-from pendulum_fmu.cli import main
-from pendulum_fmu.runner import FmuRunner
+from pendulum_fmu.cli.main import main
+from pendulum_fmu.fmu.runner import FmuRunner
 from pendulum_fmu.spec import CS_SOLVERS, Method, Pendulum, TimeGrid
-from pendulum_fmu.tables import read_table
+from pendulum_fmu.output.tables import read_table
 
 
 def exact_period(amplitude_rad: float, length: float, gravity: float = 9.81) -> float:
@@ -78,7 +78,7 @@ def test_every_cosimulation_solver_is_the_one_run(fmu_path: Path) -> None:
 
 
 def test_compare_writes_one_png(fmu_path: Path, tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
-    out = tmp_path / "figures" / "compare.png"
+    out = tmp_path / "compare.png"
     assert main(["compare", "-a", "170", "--solver", "rk4", "--tolerance", "1e-6", "-p", "3", "--out", str(out),
                  "--fmu", str(fmu_path)]) == 0
     with Image.open(out) as image:

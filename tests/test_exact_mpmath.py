@@ -1,6 +1,6 @@
 """The FMU's exact solution (theta_exact, omega_exact, period) against mpmath at 50 digits.
 
-Everything goes through the FMU (Model Exchange, :class:`pendulum_fmu.exact_port.ExactPort`).
+Everything goes through the FMU (Model Exchange, :class:`pendulum_fmu.fmu.exact_port.ExactPort`).
 The references take the FMU's binary inputs exactly (theta0, omega0, t as given, and
 w0 = sqrt(g / L) rounded as the FMU rounds it) and work at 50 significant digits:
 
@@ -27,7 +27,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from pendulum_fmu.exact_port import ExactPort
+from pendulum_fmu.fmu.exact_port import ExactPort
 
 DIGITS = 50
 """Working precision of every reference, in decimal digits."""

@@ -12,7 +12,7 @@ from fmpy import read_model_description
 from fmpy.fmi2 import FMU2Slave
 from fmpy.validation import validate_fmu
 
-from pendulum_fmu.build import REPO_ROOT
+from pendulum_fmu.fmu.build import REPO_ROOT
 
 
 def test_validate_fmu_reports_no_problem(fmu_path: Path) -> None:

@@ -15,7 +15,7 @@ from fmpy.container_fmu.config import Component
 from fmpy.cross_check.validate_vendor_repo import validate_test_fmu
 from fmpy.model_description import CoSimulation, ModelDescription, ModelVariable, Unknown
 
-from pendulum_fmu.cross_check import export
+from pendulum_fmu.fmu.cross_check import export
 
 THETA0 = math.radians(80.0)
 OUTPUTS = ["theta", "omega", "theta_exact", "omega_exact"]

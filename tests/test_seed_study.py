@@ -14,8 +14,8 @@ from fmpy import simulate_fmu
 from fmpy.build import build_platform_binary
 from scipy.special import ellipk
 
-from pendulum_fmu.period import measured_period
-from pendulum_fmu.simulate import Scenario, simulate
+from pendulum_fmu.fmu.period import measured_period
+from pendulum_fmu.fmu.simulate import Scenario, simulate
 
 SEED_AMPLITUDES = (75.0, 80.0, 85.0, 90.0)
 

@@ -15,7 +15,7 @@ import pytest
 from fmpy import extract, read_model_description, simulate_fmu
 from fmpy.model_description import ModelDescription
 
-from pendulum_fmu.wp_runs import FMU_SOLVERS
+from pendulum_fmu.bench.workprecision.runs import FMU_SOLVERS
 
 P1_AMPLITUDES = (75.0, 80.0, 85.0, 90.0)
 W0SQ = 9.81

@@ -10,11 +10,11 @@ import numpy as np
 import pytest
 from fmpy import extract
 
-from pendulum_fmu import bench_solvers
-from pendulum_fmu.wp_analysis import Point, aggregate, cost_at, front
-from pendulum_fmu.wp_cdriver import find_driver, parse, run_driver, shared_library
-from pendulum_fmu.wp_problems import cases, energy_errors, make_grid
-from pendulum_fmu.wp_runs import Run, run_fmu_cs, run_solve_ivp
+from pendulum_fmu.bench import solvers as bench_solvers
+from pendulum_fmu.bench.workprecision.analysis import Point, aggregate, cost_at, front
+from pendulum_fmu.bench.workprecision.cdriver import find_driver, parse, run_driver, shared_library
+from pendulum_fmu.bench.workprecision.problems import cases, energy_errors, make_grid
+from pendulum_fmu.bench.workprecision.runs import Run, run_fmu_cs, run_solve_ivp
 
 
 def _point(err: float, evals: int, tol: float = 1e-6) -> Point:

@@ -16,9 +16,9 @@ import pytest
 from PIL import Image
 from scipy.special import ellipk
 
-from pendulum_fmu.cli import main
-from pendulum_fmu.sweep import JOURNAL, JOURNAL_FMU, read_sweep_table
-from pendulum_fmu.sweep_grid import COLUMNS, TIMING_COLUMNS
+from pendulum_fmu.cli.main import main
+from pendulum_fmu.sweep.run import JOURNAL, JOURNAL_FMU, read_sweep_table
+from pendulum_fmu.sweep.grid import COLUMNS, TIMING_COLUMNS
 
 GRID = ["--amplitudes", "30,75:90:4", "--lengths", "1,2", "--solvers", "dopri5,cvode", "--periods", "3",
         "--points-per-period", "20"]
@@ -162,7 +162,7 @@ def test_sweep_through_a_running_scheduler_gives_the_local_table(local_sweep: Pa
     # each worker extracted and loaded the FMU once, however many tasks it ran
     from distributed import Client
 
-    from pendulum_fmu.sweep_worker import load_count
+    from pendulum_fmu.sweep.worker import load_count
 
     with Client(dask_scheduler) as client:
         assert sorted(client.run(load_count).values()) == [1, 1]

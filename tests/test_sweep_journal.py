@@ -4,9 +4,9 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from pendulum_fmu.journal import Journal, read_journal
-from pendulum_fmu.sweep import batches
-from pendulum_fmu.sweep_grid import COLUMNS, SweepGrid, SweepPoint
+from pendulum_fmu.sweep.journal import Journal, read_journal
+from pendulum_fmu.sweep.cluster import batches
+from pendulum_fmu.sweep.grid import COLUMNS, SweepGrid, SweepPoint
 
 
 def _row(point: SweepPoint, error: float) -> dict[str, object]:

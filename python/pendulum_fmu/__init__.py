@@ -8,8 +8,8 @@ The typed API, imported on first use (so ``import pendulum_fmu`` stays quick)::
         run = runner.run(Pendulum.from_degrees(85), Method("rkn", 1e-10), TimeGrid(10, "periods"))
     print(run.period, run.max_error)
 
-Sweeps: :class:`SweepGrid` and :func:`run_sweep`; figures: ``pendulum_fmu.compare.compare``
-and ``pendulum_fmu.animate.animate``; the seed's study: ``pendulum-fmu study``.
+Sweeps: :class:`SweepGrid` and :func:`run_sweep`; figures: ``pendulum_fmu.figures.comparison.compare``
+and ``pendulum_fmu.figures.animation.animate``; the seed's study: ``pendulum-fmu study``.
 """
 
 from __future__ import annotations
@@ -22,24 +22,24 @@ __version__ = "0.1.0"
 
 _EXPORTS: dict[str, str] = {
     "Pendulum": "spec", "Method": "spec", "TimeGrid": "spec", "SOLVERS": "spec",
-    "FmuRunner": "runner", "Trajectory": "runner",
-    "SweepGrid": "sweep_grid", "SweepPoint": "sweep_grid", "run_sweep": "sweep",
+    "FmuRunner": "fmu.runner", "Trajectory": "fmu.runner",
+    "SweepGrid": "sweep.grid", "SweepPoint": "sweep.grid", "run_sweep": "sweep.run",
     "UsageError": "errors", "SimulationError": "errors", "BuildError": "errors",
-    "locate_fmu": "locate",
+    "locate_fmu": "fmu.locate",
 }
 
 if TYPE_CHECKING:
-    from .errors import BuildError, SimulationError, UsageError
-    from .locate import locate_fmu
-    from .runner import FmuRunner, Trajectory
-    from .spec import SOLVERS, Method, Pendulum, TimeGrid
-    from .sweep import run_sweep
-    from .sweep_grid import SweepGrid, SweepPoint
+    from pendulum_fmu.errors import BuildError, SimulationError, UsageError
+    from pendulum_fmu.fmu.locate import locate_fmu
+    from pendulum_fmu.fmu.runner import FmuRunner, Trajectory
+    from pendulum_fmu.spec import SOLVERS, Method, Pendulum, TimeGrid
+    from pendulum_fmu.sweep.run import run_sweep
+    from pendulum_fmu.sweep.grid import SweepGrid, SweepPoint
 
 
 def fmu_path() -> Path:
-    """The ``Pendulum.fmu`` matching this package (see :func:`pendulum_fmu.locate.locate_fmu`)."""
-    from .locate import locate_fmu
+    """The ``Pendulum.fmu`` matching this package (see :func:`pendulum_fmu.fmu.locate.locate_fmu`)."""
+    from pendulum_fmu.fmu.locate import locate_fmu
 
     return locate_fmu()
 

@@ -1,5 +1,5 @@
 """``python -m pendulum_fmu``: the command line."""
 
-from .cli import main
+from pendulum_fmu.cli.main import main
 
 raise SystemExit(main())

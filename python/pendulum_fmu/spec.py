@@ -10,7 +10,7 @@ import math
 from dataclasses import dataclass
 from typing import Literal
 
-from .errors import UsageError
+from pendulum_fmu.errors import UsageError
 
 Interface = Literal["CS", "ME"]
 StopUnit = Literal["s", "periods"]

@@ -1,0 +1,72 @@
+"""``pendulum-fmu bench``: the benchmarks, one subcommand each.
+
+``exact`` and ``solvers`` are modules of their own with a ``main(argv)``; the command line
+hands them the rest of the arguments untouched. To add one, add a line to
+:data:`FORWARDED` (it appears as soon as its module exists) or a module with
+``configure``/``run`` like :mod:`pendulum_fmu.cli.bench_sweep`.
+"""
+
+from __future__ import annotations
+
+import argparse
+import importlib
+import importlib.util
+import sys
+
+from pendulum_fmu.cli import bench_sweep
+
+NAME = "bench"
+HELP = "benchmarks: exact evaluation, work-precision of the solvers, sweep throughput"
+DESCRIPTION = "Benchmarks of the FMU and of this tool. 'pendulum-fmu bench BENCHMARK --help' for each one's options."
+EPILOG = """\
+examples:
+  pendulum-fmu bench exact -n 100000
+  pendulum-fmu bench sweep --runs 1000 --workers 1 2
+"""
+
+FORWARDED: dict[str, tuple[str, str]] = {
+    "exact": ("pendulum_fmu.bench.exact", "the FMU's exact solution in C against scipy's ellipj (ns per point)"),
+    "solvers": ("pendulum_fmu.bench.solvers", "work-precision of the solvers: error against cost"),
+}
+"""Benchmark name -> (module with ``main(argv) -> int``, one-line help)."""
+
+
+def available() -> dict[str, tuple[str, str]]:
+    """The forwarded benchmarks whose module is installed."""
+    return {name: entry for name, entry in FORWARDED.items() if importlib.util.find_spec(entry[0]) is not None}
+
+
+def forward(argv: list[str]) -> int | None:
+    """Run ``bench NAME ...`` of a forwarded benchmark; None when ``argv`` is not one.
+
+    The module parses its own arguments (its ``--help`` included), under the program name
+    ``pendulum-fmu bench NAME``.
+    """
+    if len(argv) < 2 or argv[0] != NAME or argv[1] not in available():
+        return None
+    module = importlib.import_module(available()[argv[1]][0])
+    saved = sys.argv[0]
+    sys.argv[0] = f"pendulum-fmu bench {argv[1]}"
+    try:
+        return int(module.main(argv[2:]) or 0)
+    finally:
+        sys.argv[0] = saved
+
+
+def configure(parser: argparse.ArgumentParser) -> None:
+    """Add the benchmark subcommands."""
+    benchmarks = parser.add_subparsers(dest="benchmark", metavar="BENCHMARK", title="benchmarks", required=True)
+    for name, (_, text) in available().items():
+        # Listed for --help only: forward() runs these before argparse sees them.
+        benchmarks.add_parser(name, help=text, add_help=False)
+    sweep = benchmarks.add_parser(bench_sweep.NAME, help=bench_sweep.HELP, description=bench_sweep.DESCRIPTION,
+                                  formatter_class=argparse.RawDescriptionHelpFormatter)
+    bench_sweep.configure(sweep)
+    sweep.set_defaults(subparser=sweep)
+
+
+def run(args: argparse.Namespace) -> int:
+    """Run the benchmark chosen."""
+    if args.benchmark == bench_sweep.NAME:
+        return bench_sweep.run(args)
+    raise AssertionError(f"benchmark {args.benchmark} is forwarded before parsing")

@@ -1,0 +1,100 @@
+"""The ``pendulum-fmu`` command: argparse subcommands, one module each.
+
+Each subcommand module has ``NAME``, ``HELP``, ``DESCRIPTION``, ``EPILOG``, ``configure(parser)``
+and ``run(args) -> int``, and imports its heavy dependencies (fmpy, matplotlib, Dask) inside
+``run``, so ``--help`` answers at once. A user's mistake (:class:`UsageError`, or a value
+argparse rejects) prints ``pendulum-fmu CMD: error: argument ...: ...`` and exits with 2;
+a failed build or simulation prints its reason and exits with 1; neither shows a traceback.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from types import ModuleType
+
+from pendulum_fmu import __version__
+from pendulum_fmu.cli import animate, bench, compare, simulate, study, sweep
+from pendulum_fmu.errors import BuildError, SimulationError, UsageError
+
+COMMANDS: tuple[ModuleType, ...] = (simulate, compare, study, animate, sweep, bench)
+
+DESCRIPTION = """\
+Build, run and check Pendulum.fmu: the nonlinear pendulum theta'' + (g/L) sin(theta) = 0,
+FMI 2.0 Co-Simulation and Model Exchange, with its exact Jacobi-elliptic solution inside.
+"""
+EPILOG = """\
+'pendulum-fmu COMMAND --help' shows each command's options. The FMU used is --fmu PATH,
+else $PENDULUM_FMU, else the one installed with the package, else the repository's build/
+(rebuilt with CMake when its sources changed).
+
+examples:
+  pendulum-fmu study
+  pendulum-fmu simulate --amplitude 85 --periods 20 --out run.csv
+  pendulum-fmu compare --amplitude 170 --solver rk4 --tolerance 1e-6 --out rk4.png
+  pendulum-fmu animate --amplitude 120 --out pendulum.gif
+  pendulum-fmu sweep --amplitudes 1:179:100 --solvers dopri5,rkn,cvode --out out/sweep
+  pendulum-fmu bench sweep
+"""
+
+
+class _Formatter(argparse.RawDescriptionHelpFormatter):
+    """Keep the descriptions' line breaks; a little more room for option names."""
+
+    def __init__(self, prog: str) -> None:
+        super().__init__(prog, max_help_position=34)
+
+
+def build_parser() -> argparse.ArgumentParser:
+    """The full parser, every subcommand configured."""
+    parser = argparse.ArgumentParser(prog="pendulum-fmu", description=DESCRIPTION, epilog=EPILOG,
+                                     formatter_class=_Formatter)
+    parser.add_argument("--version", action="version", version=f"%(prog)s {__version__}")
+    commands = parser.add_subparsers(dest="command", metavar="COMMAND", title="commands", required=True)
+    for module in COMMANDS:
+        sub = commands.add_parser(module.NAME, help=module.HELP, description=module.DESCRIPTION,
+                                  epilog=module.EPILOG, formatter_class=_Formatter)
+        module.configure(sub)
+        sub.set_defaults(handler=module.run)
+        if sub.get_default("subparser") is None:
+            sub.set_defaults(subparser=sub)
+    return parser
+
+
+def main(argv: list[str] | None = None) -> int:
+    """Run ``pendulum-fmu COMMAND [options]``.
+
+    Parameters
+    ----------
+    argv : list of str, optional
+        Arguments without the program name (default: ``sys.argv[1:]``).
+
+    Returns
+    -------
+    int
+        The exit code: 0 done, 1 a build or run failed, 2 a bad argument, 130 interrupted.
+        argparse's own errors and ``--help`` leave through ``SystemExit`` as usual.
+    """
+    arguments = sys.argv[1:] if argv is None else list(argv)
+    forwarded = bench.forward(arguments)
+    if forwarded is not None:
+        return forwarded
+    parser = build_parser()
+    args = parser.parse_args(arguments)
+    subparser: argparse.ArgumentParser = args.subparser
+    try:
+        return int(args.handler(args))
+    except UsageError as error:
+        subparser.error(str(error))  # usage line, "error: argument ...", exit 2
+    except (BuildError, SimulationError) as error:
+        print(f"{subparser.prog}: error: {error}", file=sys.stderr)
+        return 1
+    except OSError as error:  # a file that vanished or a full disk, after the checks passed
+        where = f": {error.filename!r}" if error.filename else ""
+        print(f"{subparser.prog}: error: {error.strerror or error}{where}", file=sys.stderr)
+        return 1
+    except KeyboardInterrupt:
+        hint = "; run the same command again to resume" if args.command == "sweep" else ""
+        print(f"\n{subparser.prog}: interrupted{hint}", file=sys.stderr)
+        return 130
+    return 0  # not reached: subparser.error exits

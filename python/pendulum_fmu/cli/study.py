@@ -1,0 +1,60 @@
+"""``pendulum-fmu study``: the command line of :mod:`pendulum_fmu.study`."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+from pendulum_fmu.cli.arguments import add_fmu_argument, output_folder, positive
+from pendulum_fmu.fmu.locate import locate_fmu
+from pendulum_fmu.output.paths import make_output_folder
+
+NAME = "study"
+HELP = "the seed's study: 75-90 deg, Figures 3-5, period ratio, error table, HTML report"
+DESCRIPTION = """\
+The seed's study (the README's main job): build the FMU, release the pendulum from rest at
+75, 80, 85 and 90 deg, simulate it in Co-Simulation (the FMU's default solver, rkn, at its
+default tolerance 1e-8) and in Model Exchange (fmpy's CVODE at 1e-10), and write to --out:
+Figures 3-5 (theta against w0 t: numerical, exact, overlaid), the period ratio T/T0 against
+amplitude up to 179.999999 deg, runs.csv, report.md and report.html (table and figures in one
+page). The error table is printed.
+"""
+EPILOG = """\
+examples:
+  pendulum-fmu study                      # writes out/study/
+  pendulum-fmu study --out /tmp/study --periods 5
+"""
+
+
+def configure(parser: argparse.ArgumentParser) -> None:
+    """Add the options of ``study``."""
+    parser.add_argument("--out", type=output_folder, default="out/study", metavar="DIR",
+                        help="output folder, created with its missing parents (default: out/study in the current "
+                             "folder)")
+    add_fmu_argument(parser)
+    parser.add_argument("--periods", type=positive("periods", 1000), default=10.0,
+                        help="exact periods to simulate, in (0, 1000] (default 10)")
+
+
+def run(args: argparse.Namespace) -> int:
+    """Run the study with parsed arguments; write plots, CSV, table and reports to ``args.out``."""
+    from pendulum_fmu.study.job import write_study
+
+    fmu = locate_fmu(args.fmu)
+    make_output_folder(args.out)
+    table = write_study(fmu, args.out, args.periods)
+    print(table)
+    print(f"\nwritten to {args.out} (open report.html)")
+    return 0
+
+
+def main(argv: list[str] | None = None) -> int:
+    """``python -m pendulum_fmu.cli.study [options]``: the same as ``pendulum-fmu study``."""
+    from pendulum_fmu.cli.main import main as cli_main
+
+    return cli_main(["study", *(sys.argv[1:] if argv is None else argv)])
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

@@ -1,0 +1,38 @@
+"""Human-readable lines about a run, printed by simulate, compare and animate."""
+
+from __future__ import annotations
+
+import math
+
+from pendulum_fmu.fmu.runner import Trajectory, reference_period
+
+
+def pendulum_text(trajectory: Trajectory) -> str:
+    """``amplitude 75 deg, omega0 0 rad/s, L 1 m, g 9.81 m/s^2``."""
+    p = trajectory.pendulum
+    return (f"amplitude {p.amplitude_deg:.6g} deg, omega0 {p.omega0:g} rad/s, L {p.length:g} m, "
+            f"g {p.gravity:g} m/s^2")
+
+
+def summary_lines(trajectory: Trajectory) -> list[str]:
+    """What was run, the exact period, the cost and the error, one fact a line."""
+    p, t = trajectory.pendulum, trajectory
+    period = t.period
+    stop = float(t.result["time"][-1])
+    if math.isfinite(period):
+        period_text = f"{period:.9g} s (exact, from the FMU), T/T0 = {period / p.small_angle_period:.6f}"
+    else:
+        period_text = "infinite (separatrix): times counted in T0 = 2 pi / w0"
+    cost = f"{t.wall_time * 1e3:.1f} ms"
+    if t.steps is not None:
+        cost = (f"{t.steps} steps, {t.rejected_steps} rejected, {t.rhs_evaluations} right-hand-side "
+                f"evaluations, {cost}")
+    return [
+        f"pendulum  {pendulum_text(t)} (w0 = {p.w0:.6g} rad/s)",
+        f"method    {t.method.label}",
+        f"period    {period_text}",
+        (f"run       {t.result.size} output points to t = {stop:.6g} s "
+         f"({stop / reference_period(period, p):.6g} periods); {cost}"),
+        (f"error     max |theta - theta_exact| = {t.max_error:.3e} rad, "
+         f"max |omega - omega_exact| = {t.max_omega_error:.3e} rad/s"),
+    ]

@@ -1,0 +1,192 @@
+"""The swinging pendulum, numerical and exact side by side, as a GIF or MP4."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from pendulum_fmu.errors import UsageError
+from pendulum_fmu.fmu.runner import FmuRunner, Trajectory, reference_period
+from pendulum_fmu.spec import Method, Pendulum, StopUnit, TimeGrid
+
+
+MAX_FRAMES = 1500
+"""Most frames an animation may have (a minute at 25 frames/s; a GIF is assembled in memory)."""
+
+
+def _frame_count(grid: TimeGrid, period: float, pendulum: Pendulum) -> int:
+    return len(grid.times(reference_period(period, pendulum)))
+
+
+class _GifFrames:
+    """Collect frames (128 colours each, no dithering) and write an endless-loop GIF."""
+
+    def __init__(self, path: Path, fps: int) -> None:
+        self.path, self.fps = path, fps
+        self.frames: list[Any] = []
+
+    def add(self, rgb: np.ndarray) -> None:
+        from PIL import Image
+
+        self.frames.append(Image.fromarray(rgb).quantize(colors=128, method=Image.Quantize.FASTOCTREE,
+                                                         dither=Image.Dither.NONE))
+
+    def close(self) -> None:
+        first, *rest = self.frames
+        first.save(self.path, save_all=True, append_images=rest, duration=round(1000 / self.fps), loop=0)
+
+
+class _Mp4Frames:
+    """Stream frames to ffmpeg (the binary imageio-ffmpeg ships): H.264, yuv420p."""
+
+    def __init__(self, path: Path, fps: int, size: tuple[int, int]) -> None:
+        import imageio_ffmpeg
+
+        self._writer = imageio_ffmpeg.write_frames(str(path), size, fps=fps, codec="libx264", quality=7,
+                                                   macro_block_size=16)
+        self._writer.send(None)
+
+    def add(self, rgb: np.ndarray) -> None:
+        self._writer.send(np.ascontiguousarray(rgb))
+
+    def close(self) -> None:
+        self._writer.close()
+
+
+def render(trajectory: Trajectory, out: Path, fps: int, trail: float = 1.0) -> Path:
+    """Draw every output point of ``trajectory`` as one frame and write the GIF or MP4.
+
+    The axes, labels and legends are drawn once; each frame restores them and draws only
+    the rods, bobs, paths and texts (blitting), so a frame costs a few milliseconds.
+
+    Parameters
+    ----------
+    trajectory : Trajectory
+        A run whose output points are the frames.
+    out : Path
+        ``.gif`` or ``.mp4``.
+    fps : int
+        Frames per second of the file.
+    trail : float
+        Seconds of simulated time of the bob's path drawn behind it.
+
+    Returns
+    -------
+    Path
+        ``out``.
+    """
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    r, p, m = trajectory.result, trajectory.pendulum, trajectory.method
+    time = r["time"]
+    theta = {"numeric": r["theta"], "exact": r["theta_exact"]}
+    xy = {name: (p.length * np.sin(angle), -p.length * np.cos(angle)) for name, angle in theta.items()}
+    dt = float(time[1] - time[0]) if time.size > 1 else 1.0
+    trail_points = max(2, round(trail / dt))
+    period = trajectory.period if math.isfinite(trajectory.period) else p.small_angle_period
+    error = np.abs(theta["numeric"] - theta["exact"])
+
+    # 960 x 480 pixels: both multiples of 16, so H.264 needs no rescaling.
+    fig, axes = plt.subplots(1, 2, figsize=(9.6, 4.8), dpi=100)
+    fig.subplots_adjust(left=0.075, right=0.985, bottom=0.11, top=0.86, wspace=0.22)
+    titles = {"numeric": f"numerical: FMU, {m.label}", "exact": "exact: Jacobi elliptic (theta_exact, in the FMU)"}
+    colors = {"numeric": "tab:blue", "exact": "tab:orange"}
+    moving: dict[str, tuple[Any, Any, Any, Any]] = {}
+    limit = 1.22 * p.length
+    for ax, name in zip(axes, ("numeric", "exact")):
+        ax.set_xlim(-limit, limit)
+        ax.set_ylim(-limit, limit)
+        ax.set_aspect("equal")
+        ax.set_xlabel("x (m)")
+        ax.set_ylabel("y (m)")
+        ax.set_title(titles[name], fontsize=10)
+        ax.grid(alpha=0.25)
+        ax.plot([0], [0], "ks", ms=5, label="pivot")
+        path, = ax.plot([], [], "-", color=colors[name], lw=1.4, alpha=0.5, animated=True,
+                        label=f"path, last {trail:g} s")
+        rod, = ax.plot([], [], "-", color="0.35", lw=2.2, animated=True, label="rod")
+        bob, = ax.plot([], [], "o", color=colors[name], ms=15, mec="k", animated=True, label="bob")
+        text = ax.text(0.03, 0.97, "", transform=ax.transAxes, va="top", fontsize=9, family="monospace",
+                       animated=True)
+        ax.legend(loc="lower right", fontsize=7, framealpha=0.9, markerscale=0.6)
+        moving[name] = (path, rod, bob, text)
+    heading = fig.text(0.5, 0.965, "", ha="center", va="top", fontsize=10, animated=True)
+    canvas = fig.canvas
+    canvas.draw()
+    background = canvas.copy_from_bbox(fig.bbox)  # type: ignore[attr-defined]
+    width, height = canvas.get_width_height()
+    frames: _GifFrames | _Mp4Frames = (_Mp4Frames(out, fps, (width, height)) if out.suffix.lower() == ".mp4"
+                                       else _GifFrames(out, fps))
+    try:
+        for k in range(time.size):
+            canvas.restore_region(background)  # type: ignore[attr-defined]
+            start = max(0, k - trail_points)
+            for ax, name in zip(axes, ("numeric", "exact")):
+                path, rod, bob, text = moving[name]
+                x, y = xy[name]
+                path.set_data(x[start:k + 1], y[start:k + 1])
+                rod.set_data([0.0, x[k]], [0.0, y[k]])
+                bob.set_data([x[k]], [y[k]])
+                line = f"theta = {math.degrees(theta[name][k]):8.2f} deg"
+                if name == "numeric":
+                    line += f"\n|theta - theta_exact| = {error[k]:.1e} rad"
+                text.set_text(line)
+                for artist in (path, rod, bob, text):
+                    ax.draw_artist(artist)
+            heading.set_text(f"theta0 = {p.amplitude_deg:.6g} deg, omega0 = {p.omega0:g} rad/s, L = {p.length:g} m, "
+                             f"g = {p.gravity:g} m/s^2        t = {time[k]:6.2f} s  ({time[k] / period:5.2f} periods)")
+            fig.draw_artist(heading)
+            frames.add(np.asarray(canvas.buffer_rgba())[:, :, :3])  # type: ignore[attr-defined]
+    finally:
+        plt.close(fig)
+        frames.close()
+    return out
+
+
+def animate(fmu: Path, pendulum: Pendulum, method: Method, stop: float, unit: StopUnit, out: Path,
+            fps: int = 25, speed: float = 1.0) -> Trajectory:
+    """Simulate one frame per 1/fps s of film and write the animation.
+
+    Parameters
+    ----------
+    fmu : Path
+        ``Pendulum.fmu``.
+    pendulum, method
+        What to run.
+    stop : float
+        Simulated time span, in seconds or periods (``unit``).
+    unit : {"s", "periods"}
+        Unit of ``stop``.
+    out : Path
+        ``.gif`` or ``.mp4``.
+    fps : int
+        Frames per second of film.
+    speed : float
+        Simulated seconds per second of film (2 plays twice as fast as life).
+
+    Returns
+    -------
+    Trajectory
+        The run drawn.
+
+    Raises
+    ------
+    UsageError
+        If the film would have more than :data:`MAX_FRAMES` frames.
+    """
+    grid = TimeGrid(stop, unit, output_interval=speed / fps)
+    with FmuRunner(fmu) as runner:
+        frames = _frame_count(grid, runner.period(pendulum), pendulum)
+        if frames > MAX_FRAMES:
+            argument = "--periods" if unit == "periods" else "--stop-time"
+            raise UsageError(argument, f"the animation would have {frames} frames, at most {MAX_FRAMES} are "
+                                       "allowed: shorten it, lower --fps or raise --speed")
+        trajectory = runner.run(pendulum, method, grid)
+    render(trajectory, out, fps)
+    return trajectory

@@ -1,0 +1,117 @@
+"""Find the ``Pendulum.fmu`` that matches this package, building it when needed.
+
+Order: an explicit path (``--fmu``), then ``$PENDULUM_FMU``, then the FMU installed inside
+the package (a wheel built by ``setup.py`` carries one), then, in a source checkout, the
+CMake build in ``build/``, rebuilt incrementally when a source is newer than it.
+"""
+
+from __future__ import annotations
+
+import os
+import shutil
+import zipfile
+from pathlib import Path
+
+from pendulum_fmu.fmu.build import DEFAULT_BUILD_DIR, PACKAGED_FMU, REPO_ROOT, build_fmu, fmu_in
+from pendulum_fmu.errors import BuildError, UsageError
+
+SOURCES: tuple[str, ...] = ("fmu_src", "modelDescription.xml", "CMakeLists.txt")
+"""What the FMU is built from, relative to the repository root."""
+
+
+def newest_source_time(root: Path = REPO_ROOT) -> float:
+    """Latest modification time (epoch s) of any file the FMU is built from."""
+    newest = 0.0
+    for name in SOURCES:
+        path = root / name
+        files = path.rglob("*") if path.is_dir() else [path]
+        newest = max([newest] + [f.stat().st_mtime for f in files if f.is_file()])
+    return newest
+
+
+def is_source_checkout(root: Path = REPO_ROOT) -> bool:
+    """True when the package runs from the repository (an editable install)."""
+    return (root / "CMakeLists.txt").is_file() and (root / "modelDescription.xml").is_file()
+
+
+def fmu_problem(path: Path) -> str | None:
+    """What makes ``path`` unusable as an FMU (not a zip, no modelDescription.xml), or None.
+
+    Parameters
+    ----------
+    path : Path
+        An existing file.
+
+    Returns
+    -------
+    str or None
+        One line naming the file and the problem; None when it looks like an FMU.
+    """
+    try:
+        with zipfile.ZipFile(path) as archive:
+            names = set(archive.namelist())
+    except (zipfile.BadZipFile, OSError) as error:
+        return f"{str(path)!r} is not an FMU (not a zip archive: {error})"
+    if "modelDescription.xml" not in names:
+        return f"{str(path)!r} is not an FMU: the archive has no modelDescription.xml"
+    return None
+
+
+def locate_fmu(explicit: Path | None = None, build: bool = True) -> Path:
+    """Return the FMU to run.
+
+    Parameters
+    ----------
+    explicit : Path, optional
+        A path the user gave (``--fmu``); it must exist.
+    build : bool
+        In a source checkout, (re)build ``build/Pendulum.fmu`` when it is missing or older
+        than its sources.
+
+    Returns
+    -------
+    Path
+        An existing ``Pendulum.fmu``.
+
+    Raises
+    ------
+    UsageError
+        If the given path or ``$PENDULUM_FMU`` does not exist, or no FMU can be found.
+    BuildError
+        If CMake fails.
+    """
+    if explicit is not None:
+        if not Path(explicit).is_file():
+            raise UsageError("--fmu", f"no such file: {str(explicit)!r}")
+        problem = fmu_problem(Path(explicit))
+        if problem is not None:
+            raise UsageError("--fmu", problem)
+        return Path(explicit)
+    override = os.environ.get("PENDULUM_FMU")
+    if override:
+        if not Path(override).is_file():
+            raise UsageError("$PENDULUM_FMU", f"no such file: {override!r}: build the FMU "
+                             "(cmake -S . -B build && cmake --build build) or unset PENDULUM_FMU")
+        problem = fmu_problem(Path(override))
+        if problem is not None:
+            raise UsageError("$PENDULUM_FMU", problem)
+        return Path(override)
+    if PACKAGED_FMU.is_file():
+        return PACKAGED_FMU
+    if not is_source_checkout():
+        raise UsageError("--fmu", "no Pendulum.fmu installed with the package and no source checkout to "
+                                  "build one from: pass --fmu PATH or set PENDULUM_FMU")
+    fmu = fmu_in(DEFAULT_BUILD_DIR)
+    if fmu.is_file() and (not build or fmu.stat().st_mtime >= newest_source_time()):
+        return fmu
+    if not build:
+        raise UsageError("--fmu", f"{fmu} is missing: build it (cmake -S . -B build && cmake --build build), "
+                                  "pass --fmu PATH or set PENDULUM_FMU")
+    if shutil.which("cmake") is None:
+        raise UsageError("--fmu", f"{fmu} is missing or out of date and cmake is not on PATH to build it: "
+                                  "install cmake, pass --fmu PATH or set PENDULUM_FMU")
+    try:
+        return build_fmu(DEFAULT_BUILD_DIR)
+    except RuntimeError as error:
+        tail = "\n".join(str(error).strip().splitlines()[-15:])
+        raise BuildError(f"building {fmu} with CMake failed:\n{tail}") from error

@@ -1,0 +1,240 @@
+"""Load the FMU once and run many initial value problems on it.
+
+:class:`FmuRunner` extracts ``Pendulum.fmu`` once, instantiates one Co-Simulation slave
+and (if needed) one Model Exchange model, and resets them between runs: a sweep worker
+pays the unzip and ``dlopen`` once, not once per run.
+
+Co-Simulation runs are driven by a short loop here (``fmi2DoStep`` to each output point,
+then one ``fmi2GetReal``), which costs about half of fmpy's general ``simulate_fmu``;
+Model Exchange runs go through fmpy's ``simulate_fmu`` with its CVODE solver, on the
+already instantiated model.
+"""
+
+from __future__ import annotations
+
+import math
+import shutil
+import tempfile
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+from types import TracebackType
+from typing import Self
+
+import numpy as np
+from fmpy import extract, instantiate_fmu, read_model_description, simulate_fmu
+from fmpy.fmi2 import FMU2Model, FMU2Slave
+
+from pendulum_fmu.errors import SimulationError
+from pendulum_fmu.spec import CS_SOLVERS, Method, Pendulum, TimeGrid
+
+RECORDED: tuple[str, ...] = ("theta", "omega", "theta_exact", "omega_exact", "x", "y")
+"""Outputs recorded at every output point, besides time."""
+
+STATS: tuple[str, ...] = ("stats.steps", "stats.rejected_steps", "stats.rhs_evaluations")
+
+DEFAULT_METHOD = Method()
+"""The FMU's default solver (rkn) at its default tolerance."""
+DEFAULT_GRID = TimeGrid()
+"""Ten exact periods, 50 output points a period."""
+
+
+@dataclass
+class Trajectory:
+    """One run: its inputs, the recorded outputs and what it cost.
+
+    Attributes
+    ----------
+    pendulum, method, grid
+        What was run.
+    period : float
+        The FMU's exact ``period`` output, s (``inf`` on the separatrix).
+    result : numpy.ndarray
+        Structured array with ``time`` and the fields of :data:`RECORDED`.
+    steps, rejected_steps, rhs_evaluations : int or None
+        The Co-Simulation solver's counters; None in Model Exchange.
+    wall_time : float
+        Seconds spent in the run (initialization to the last output).
+    """
+
+    pendulum: Pendulum
+    method: Method
+    grid: TimeGrid
+    period: float
+    result: np.ndarray = field(repr=False)
+    steps: int | None
+    rejected_steps: int | None
+    rhs_evaluations: int | None
+    wall_time: float
+
+    @property
+    def theta_error(self) -> np.ndarray:
+        """theta - theta_exact at the output points, rad."""
+        return self.result["theta"] - self.result["theta_exact"]
+
+    @property
+    def max_error(self) -> float:
+        """max |theta - theta_exact| over the output points, rad."""
+        return float(np.max(np.abs(self.theta_error)))
+
+    @property
+    def max_omega_error(self) -> float:
+        """max |omega - omega_exact| over the output points, rad/s."""
+        return float(np.max(np.abs(self.result["omega"] - self.result["omega_exact"])))
+
+
+def reference_period(period: float, pendulum: Pendulum) -> float:
+    """The period a time grid counts in: the exact one, or T0 where that is infinite or 0."""
+    return period if math.isfinite(period) and period > 0 else pendulum.small_angle_period
+
+
+class FmuRunner:
+    """An extracted, instantiated FMU that runs one problem after another.
+
+    Parameters
+    ----------
+    fmu : Path
+        ``Pendulum.fmu``.
+
+    Notes
+    -----
+    Not thread-safe: use one runner per thread. Use it as a context manager, or call
+    :meth:`close`, to free the instances and delete the extracted files.
+    """
+
+    def __init__(self, fmu: Path) -> None:
+        self.fmu = Path(fmu)
+        self._tempdir = tempfile.mkdtemp(prefix="pendulum-fmu-")
+        self._unzipdir = extract(str(self.fmu), unzipdir=self._tempdir)
+        self.model_description = read_model_description(self._unzipdir, validate=False)
+        self.vr: dict[str, int] = {v.name: v.valueReference for v in self.model_description.modelVariables}
+        self._slave: FMU2Slave | None = None
+        self._model: FMU2Model | None = None
+        self._slave_used = False
+        self._model_used = False
+
+    def __enter__(self) -> Self:
+        return self
+
+    def __exit__(self, kind: type[BaseException] | None, error: BaseException | None,
+                 trace: TracebackType | None) -> None:
+        self.close()
+
+    def close(self) -> None:
+        """Free the FMU instances and delete the extracted files."""
+        for instance in (self._slave, self._model):
+            if instance is not None:
+                instance.freeInstance()
+        self._slave = self._model = None
+        shutil.rmtree(self._tempdir, ignore_errors=True)
+
+    # -- instances ---------------------------------------------------------------------------
+    def _fresh_slave(self) -> FMU2Slave:
+        if self._slave is None:
+            self._slave = instantiate_fmu(self._unzipdir, self.model_description, fmi_type="CoSimulation")
+        elif self._slave_used:
+            self._slave.reset()
+        self._slave_used = True
+        return self._slave
+
+    def _fresh_model(self) -> FMU2Model:
+        if self._model is None:
+            self._model = instantiate_fmu(self._unzipdir, self.model_description, fmi_type="ModelExchange")
+        elif self._model_used:
+            self._model.reset()
+        self._model_used = True
+        return self._model
+
+    def _initialize(self, instance: FMU2Slave | FMU2Model, pendulum: Pendulum, method: Method) -> float:
+        """setupExperiment, start values, initialization; returns the FMU's ``period``."""
+        instance.setupExperiment(tolerance=method.effective_tolerance, startTime=0.0)
+        values = pendulum.start_values()
+        instance.setReal([self.vr[name] for name in values], list(values.values()))
+        if method.interface == "CS":
+            instance.setInteger([self.vr["solver"]], [CS_SOLVERS.index(method.solver) + 1])
+        instance.enterInitializationMode()
+        instance.exitInitializationMode()
+        return float(instance.getReal([self.vr["period"]])[0])
+
+    # -- runs --------------------------------------------------------------------------------
+    def period(self, pendulum: Pendulum) -> float:
+        """The FMU's exact ``period`` for this problem, s (``inf`` on the separatrix)."""
+        slave = self._fresh_slave()
+        try:
+            value = self._initialize(slave, pendulum, DEFAULT_METHOD)
+            slave.terminate()
+        except Exception as error:  # fmpy raises FMICallException, ctypes may raise OSError
+            raise SimulationError(f"the FMU failed to initialize {pendulum}: {error}") from error
+        return value
+
+    def run(self, pendulum: Pendulum, method: Method = DEFAULT_METHOD, grid: TimeGrid = DEFAULT_GRID) -> Trajectory:
+        """Simulate one problem.
+
+        Parameters
+        ----------
+        pendulum : Pendulum
+            Parameters and initial state.
+        method : Method
+            Solver and tolerance (``cvode`` runs in Model Exchange).
+        grid : TimeGrid
+            Output points and stop time.
+
+        Returns
+        -------
+        Trajectory
+            Outputs at every point of the grid and the solver's cost.
+
+        Raises
+        ------
+        SimulationError
+            If an FMI call fails.
+        """
+        try:
+            if method.interface == "CS":
+                return self._run_cs(pendulum, method, grid)
+            return self._run_me(pendulum, method, grid)
+        except SimulationError:
+            raise
+        except Exception as error:  # fmpy raises FMICallException or a plain Exception
+            raise SimulationError(f"{method.label} failed on {pendulum}: {error}") from error
+
+    def _run_cs(self, pendulum: Pendulum, method: Method, grid: TimeGrid) -> Trajectory:
+        start = time.perf_counter()
+        slave = self._fresh_slave()
+        period = self._initialize(slave, pendulum, method)
+        times = grid.times(reference_period(period, pendulum))
+        refs = [self.vr[name] for name in RECORDED]
+        values = np.empty((len(times), len(RECORDED)))
+        values[0] = slave.getReal(refs)
+        for k in range(1, len(times)):
+            slave.doStep(currentCommunicationPoint=times[k - 1], communicationStepSize=times[k] - times[k - 1])
+            values[k] = slave.getReal(refs)
+        steps, rejected, rhs = slave.getInteger([self.vr[name] for name in STATS])
+        slave.terminate()
+        wall = time.perf_counter() - start
+        result = np.empty(len(times), dtype=[("time", float)] + [(name, float) for name in RECORDED])
+        result["time"] = times
+        for column, name in enumerate(RECORDED):
+            result[name] = values[:, column]
+        return Trajectory(pendulum, method, grid, period, result, int(steps), int(rejected), int(rhs), wall)
+
+    def _run_me(self, pendulum: Pendulum, method: Method, grid: TimeGrid) -> Trajectory:
+        start = time.perf_counter()
+        model = self._fresh_model()
+        # The grid needs the period before the run: ask the FMU, then start afresh.
+        period = self._initialize(model, pendulum, method)
+        model.terminate()
+        model.reset()
+        times = grid.times(reference_period(period, pendulum))
+        interval = times[1] - times[0]
+        recorded = simulate_fmu(
+            self._unzipdir, model_description=self.model_description, fmu_instance=model,
+            fmi_type="ModelExchange", solver="CVode", start_time=0.0, stop_time=times[-1],
+            output_interval=interval, relative_tolerance=method.effective_tolerance,
+            start_values=pendulum.start_values(), output=list(RECORDED), validate=False,
+            record_events=False)
+        wall = time.perf_counter() - start
+        result = np.empty(recorded.size, dtype=[("time", float)] + [(name, float) for name in RECORDED])
+        for name in result.dtype.names or ():
+            result[name] = recorded[name]
+        return Trajectory(pendulum, method, grid, period, result, None, None, None, wall)

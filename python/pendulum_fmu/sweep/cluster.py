@@ -1,0 +1,154 @@
+"""Dask for a sweep: a client on a local cluster or a running scheduler, and the runs dealt out to it."""
+
+from __future__ import annotations
+
+import logging
+import math
+import sys
+import time
+from collections.abc import Callable, Iterator, Sequence
+from contextlib import contextmanager
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+from pendulum_fmu.errors import UsageError
+from pendulum_fmu.sweep.grid import SweepPoint
+
+if TYPE_CHECKING:
+    from distributed import Client
+
+TASKS_PER_THREAD = 8
+MAX_BATCH = 64
+
+
+@contextmanager
+def dask_client(scheduler: str | None = None, workers: int = 2) -> Iterator[Client]:
+    """A Dask client: on ``scheduler`` if given, else on a new local cluster of processes.
+
+    Parameters
+    ----------
+    scheduler : str, optional
+        Address of a running scheduler (``tcp://host:port``).
+    workers : int
+        Worker processes of the local cluster (one thread each: fmpy's loop holds the GIL).
+
+    Yields
+    ------
+    distributed.Client
+        Connected, with at least one worker.
+
+    Raises
+    ------
+    UsageError
+        If the scheduler cannot be reached or has no worker.
+    """
+    from distributed import Client, LocalCluster
+
+    if scheduler is None:
+        cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None,
+                               silence_logs=logging.ERROR)
+        client = Client(cluster)
+        try:
+            yield client
+        finally:
+            client.close()
+            cluster.close()
+        return
+    try:
+        client = Client(scheduler, timeout="10s")
+    except (OSError, TimeoutError) as error:
+        raise UsageError("--scheduler", f"cannot reach a Dask scheduler at {scheduler}: {error}") from None
+    try:
+        try:
+            client.wait_for_workers(1, timeout=30)
+        except TimeoutError:
+            raise UsageError("--scheduler", f"the scheduler at {scheduler} has no worker (waited 30 s)") from None
+        yield client
+    finally:
+        client.close()
+
+
+def worker_threads(client: Client) -> int:
+    """Total worker threads behind a client."""
+    return max(1, sum(client.nthreads().values()))
+
+
+def batches(points: Sequence[SweepPoint], threads: int, batch_size: int | None = None) -> list[list[SweepPoint]]:
+    """Split points into tasks of about equal cost: about 8 per worker thread, at most 64 runs each.
+
+    The points are dealt out like cards (task i gets points i, i + n, i + 2n, ...), so each
+    task holds amplitudes from the whole range, costs about the same as the others, and the
+    last tasks of a sweep finish together instead of one straggler holding it up.
+
+    Parameters
+    ----------
+    points : sequence of SweepPoint
+        The runs.
+    threads : int
+        Worker threads that will run them.
+    batch_size : int, optional
+        Runs per task instead of the default.
+
+    Returns
+    -------
+    list of list of SweepPoint
+        Every point exactly once; the tasks' sizes differ by at most one.
+    """
+    if not points:
+        return []
+    size = batch_size or MAX_BATCH
+    tasks = max(math.ceil(len(points) / size), 1 if batch_size else min(len(points), TASKS_PER_THREAD * threads))
+    return [list(points[i::tasks]) for i in range(tasks)]
+
+
+def execute(client: Client, fmu: Path, points: Sequence[SweepPoint],
+            on_rows: Callable[[list[dict[str, Any]]], None] = lambda rows: None, progress: bool = True,
+            batch_size: int | None = None) -> float:
+    """Run points on the client's workers; hand each finished batch's rows to ``on_rows``.
+
+    Parameters
+    ----------
+    client : distributed.Client
+        Connected client.
+    fmu : Path
+        The FMU, sent to every worker once.
+    points : sequence of SweepPoint
+        The runs.
+    on_rows : callable
+        Called in the client with every batch's rows as it finishes (any order).
+    progress : bool
+        Show a progress bar (runs done, rate, time left) on stderr.
+    batch_size : int, optional
+        Runs per task (default: about 8 tasks per worker thread, at most 64 runs each).
+
+    Returns
+    -------
+    float
+        Seconds from the first submission to the last result.
+    """
+    from distributed import as_completed
+    from tqdm import tqdm
+
+    from pendulum_fmu.sweep.worker import run_points, warm
+
+    data = fmu.read_bytes()
+    client.run(warm, data)  # every worker loads the FMU now, not inside the timed first task
+    # A key of its own (hash=False): a second sweep on the same client must not reuse the key of
+    # the first one's data, which the scheduler may be releasing at that moment.
+    shared = client.scatter(data, broadcast=True, hash=False)
+    start = time.perf_counter()
+    futures = [client.submit(run_points, shared, batch, pure=False)
+               for batch in batches(points, worker_threads(client), batch_size)]
+    bar = tqdm(total=len(points), unit="run", desc="sweep", disable=not progress, file=sys.stderr,
+               dynamic_ncols=True, smoothing=0.05)
+    try:
+        for future in as_completed(futures):
+            rows = future.result()
+            on_rows(rows)
+            bar.update(len(rows))
+    except BaseException:
+        client.cancel(futures)
+        raise
+    finally:
+        bar.close()
+    return time.perf_counter() - start

@@ -1,0 +1,113 @@
+"""Summary plots of a sweep: period ratio, largest error and cost, each against what drives it."""
+
+from __future__ import annotations
+
+from collections import defaultdict
+from collections.abc import Sequence
+from pathlib import Path
+from typing import Any
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+from matplotlib.ticker import FuncFormatter  # noqa: E402
+
+from pendulum_fmu.fmu.period import exact_period_ratio  # noqa: E402
+
+SOLVER_COLORS = {"dopri5": "tab:blue", "rk4": "tab:red", "rkn": "tab:green", "symplectic": "tab:purple",
+                 "cvode": "tab:orange"}
+MARKERS = "os^Dv<>ph*"
+
+
+def _ok(rows: Sequence[dict[str, Any]]) -> list[dict[str, Any]]:
+    return [row for row in rows if row["status"] == "ok"]
+
+
+def _positive(values: Sequence[float]) -> np.ndarray:
+    array = np.asarray(values, dtype=float)
+    return np.where(array > 0.0, array, np.nan)
+
+
+def _groups(rows: Sequence[dict[str, Any]], *columns: str) -> dict[tuple[Any, ...], list[dict[str, Any]]]:
+    groups: dict[tuple[Any, ...], list[dict[str, Any]]] = defaultdict(list)
+    for row in rows:
+        groups[tuple(row[c] for c in columns)].append(row)
+    return dict(sorted(groups.items(), key=lambda item: tuple(str(v) for v in item[0])))
+
+
+def _method_style(solver: str, tolerance: float, tolerances: list[float]) -> dict[str, Any]:
+    return {"color": SOLVER_COLORS.get(solver, "k"), "marker": MARKERS[tolerances.index(tolerance) % len(MARKERS)]}
+
+
+def plot_period(rows: Sequence[dict[str, Any]], path: Path) -> None:
+    """T/T0 against amplitude, one curve per initial velocity, with 2K(m)/pi for release from rest."""
+    fig, ax = plt.subplots(figsize=(8, 4.8))
+    for (omega0,), group in _groups(_ok(rows), "omega0_rad_s").items():
+        group = sorted(group, key=lambda row: row["amplitude_deg"])
+        ax.plot([r["amplitude_deg"] for r in group], [r["period_ratio"] for r in group], "o", ms=4,
+                label=f"FMU period / T0, omega0 = {omega0:g} rad/s")
+    amplitudes = [row["amplitude_deg"] for row in rows if row["omega0_rad_s"] == 0.0]
+    if amplitudes:
+        dense = np.linspace(min(amplitudes), max(amplitudes), 400)
+        inside = np.abs(dense) < 180.0
+        ax.plot(dense[inside], exact_period_ratio(np.radians(dense[inside])), "k--", lw=1,
+                label="2 K(m) / pi, from rest (scipy)")
+    ax.set_xlabel(r"amplitude $\theta_0$ (deg)")
+    ax.set_ylabel(r"$T / T_0$,  $T_0 = 2\pi\sqrt{L/g}$")
+    ax.set_title("Sweep: period against amplitude")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path, dpi=130)
+    plt.close(fig)
+
+
+def plot_error(rows: Sequence[dict[str, Any]], path: Path) -> None:
+    """Largest |theta - theta_exact| against amplitude, one series per solver and tolerance."""
+    ok = _ok(rows)
+    tolerances = sorted({row["tolerance"] for row in ok})
+    fig, ax = plt.subplots(figsize=(8.5, 4.8))
+    for (solver, tol), group in _groups(ok, "solver", "tolerance").items():
+        group = sorted(group, key=lambda row: row["amplitude_deg"])
+        ax.semilogy([r["amplitude_deg"] for r in group], _positive([r["max_error_rad"] for r in group]), ms=3.5,
+                    lw=0.8, label=f"{solver}, tol {tol:g}", **_method_style(solver, tol, tolerances))
+    ax.set_xlabel(r"amplitude $\theta_0$ (deg)")
+    ax.set_ylabel(r"max $|\theta - \theta_{exact}|$ (rad)")
+    ax.set_title(f"Sweep: largest error over {ok[0]['periods']:g} periods" if ok else "Sweep: largest error")
+    ax.grid(alpha=0.3, which="both")
+    ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    fig.tight_layout()
+    fig.savefig(path, dpi=130)
+    plt.close(fig)
+
+
+def plot_cost(rows: Sequence[dict[str, Any]], path: Path) -> None:
+    """Work-precision: largest error against wall time per run, one series per solver and tolerance."""
+    ok = _ok(rows)
+    tolerances = sorted({row["tolerance"] for row in ok})
+    fig, ax = plt.subplots(figsize=(8.5, 4.8))
+    for (solver, tol), group in _groups(ok, "solver", "tolerance").items():
+        ax.loglog([1e3 * r["wall_time_s"] for r in group], _positive([r["max_error_rad"] for r in group]),
+                  ls="none", ms=4, alpha=0.7, label=f"{solver}, tol {tol:g}",
+                  **_method_style(solver, tol, tolerances))
+    plain = FuncFormatter(lambda value, _: f"{value:g}")
+    ax.xaxis.set_major_formatter(plain)
+    ax.xaxis.set_minor_formatter(plain)
+    ax.set_xlabel("wall time per run (ms)")
+    ax.set_ylabel(r"max $|\theta - \theta_{exact}|$ (rad)")
+    ax.set_title("Sweep: error against cost")
+    ax.grid(alpha=0.3, which="both")
+    ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    fig.tight_layout()
+    fig.savefig(path, dpi=130)
+    plt.close(fig)
+
+
+def plot_sweep(rows: Sequence[dict[str, Any]], folder: Path) -> list[Path]:
+    """Write ``sweep_period.png``, ``sweep_error.png`` and ``sweep_cost.png`` into ``folder``."""
+    paths = [folder / "sweep_period.png", folder / "sweep_error.png", folder / "sweep_cost.png"]
+    for plot, path in zip((plot_period, plot_error, plot_cost), paths):
+        plot(rows, path)
+    return paths
