@@ -11,13 +11,23 @@ from pendulum_fmu.cli import bench
 from pendulum_fmu.cli.main import main
 
 
-def test_bench_exact_is_forwarded_with_its_own_help(capsys: pytest.CaptureFixture[str]) -> None:
-    if "exact" not in bench.available():
-        pytest.skip("pendulum_fmu.bench.exact is not installed")
+@pytest.mark.parametrize("name", ["exact", "speed", "sweep"])
+def test_bench_help_has_defaults_and_examples_and_no_rst(name: str, capsys: pytest.CaptureFixture[str]) -> None:
     with pytest.raises(SystemExit) as stop:
-        main(["bench", "exact", "--help"])
+        main(["bench", name, "--help"])
     assert stop.value.code == 0
-    assert capsys.readouterr().out.startswith("usage: pendulum-fmu bench exact")
+    out = capsys.readouterr().out
+    assert out.startswith(f"usage: pendulum-fmu bench {name}")
+    assert "(default" in out and "examples:" in out and "``" not in out
+
+
+def test_bench_exact_times_the_library_against_scipy(capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["bench", "exact", "-n", "20000", "--amplitudes", "80"]) == 0
+    line = re.search(r"^bench_exact amplitude_deg=80 n=20000 c_ns_per_point=(\S+) python_ns_per_point=(\S+) "
+                     r"scipy_ns_per_point=(\S+)$", capsys.readouterr().out, re.MULTILINE)
+    assert line is not None
+    python_ns, scipy_ns = float(line.group(2)), float(line.group(3))
+    assert 0 < python_ns < 1e4 and 0 < scipy_ns < 1e4
 
 
 def test_bench_lists_the_benchmarks_available(capsys: pytest.CaptureFixture[str]) -> None:

@@ -25,11 +25,12 @@ _EXPORTS: dict[str, str] = {
     "FmuRunner": "fmu.runner", "Trajectory": "fmu.runner",
     "SweepGrid": "sweep.grid", "SweepPoint": "sweep.grid", "run_sweep": "sweep.run",
     "UsageError": "errors", "SimulationError": "errors", "BuildError": "errors",
-    "locate_fmu": "fmu.locate",
+    "locate_fmu": "fmu.locate", "exact": "fmu.exact_lib",
 }
 
 if TYPE_CHECKING:
     from pendulum_fmu.errors import BuildError, SimulationError, UsageError
+    from pendulum_fmu.fmu.exact_lib import exact
     from pendulum_fmu.fmu.locate import locate_fmu
     from pendulum_fmu.fmu.runner import FmuRunner, Trajectory
     from pendulum_fmu.spec import SOLVERS, Method, Pendulum, TimeGrid
@@ -51,5 +52,5 @@ def __getattr__(name: str) -> Any:
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
-__all__ = ["SOLVERS", "BuildError", "FmuRunner", "Method", "Pendulum", "SimulationError", "SweepGrid", "SweepPoint",
+__all__ = ["SOLVERS", "BuildError", "exact", "FmuRunner", "Method", "Pendulum", "SimulationError", "SweepGrid", "SweepPoint",
            "TimeGrid", "Trajectory", "UsageError", "__version__", "fmu_path", "locate_fmu", "run_sweep"]

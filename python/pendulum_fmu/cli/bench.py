@@ -13,22 +13,27 @@ import importlib
 import importlib.util
 import sys
 
-from pendulum_fmu.cli import bench_sweep
+from types import ModuleType
+
+from pendulum_fmu.cli import bench_exact, bench_speed, bench_sweep
 
 NAME = "bench"
 HELP = "benchmarks: exact evaluation, work-precision of the solvers, sweep throughput"
 DESCRIPTION = "Benchmarks of the FMU and of this tool. 'pendulum-fmu bench BENCHMARK --help' for each one's options."
 EPILOG = """\
 examples:
+  pendulum-fmu bench speed
   pendulum-fmu bench exact -n 100000
   pendulum-fmu bench sweep --runs 1000 --workers 1 2
 """
 
 FORWARDED: dict[str, tuple[str, str]] = {
-    "exact": ("pendulum_fmu.bench.exact", "the FMU's exact solution in C against scipy's ellipj (ns per point)"),
     "solvers": ("pendulum_fmu.bench.solvers", "work-precision of the solvers: error against cost"),
 }
 """Benchmark name -> (module with ``main(argv) -> int``, one-line help)."""
+
+PARSED: tuple[ModuleType, ...] = (bench_exact, bench_speed, bench_sweep)
+"""Benchmarks with ``NAME``, ``HELP``, ``DESCRIPTION``, ``EPILOG``, ``configure`` and ``run``."""
 
 
 def available() -> dict[str, tuple[str, str]]:
@@ -59,14 +64,13 @@ def configure(parser: argparse.ArgumentParser) -> None:
     for name, (_, text) in available().items():
         # Listed for --help only: forward() runs these before argparse sees them.
         benchmarks.add_parser(name, help=text, add_help=False)
-    sweep = benchmarks.add_parser(bench_sweep.NAME, help=bench_sweep.HELP, description=bench_sweep.DESCRIPTION,
-                                  formatter_class=argparse.RawDescriptionHelpFormatter)
-    bench_sweep.configure(sweep)
-    sweep.set_defaults(subparser=sweep)
+    for module in PARSED:
+        sub = benchmarks.add_parser(module.NAME, help=module.HELP, description=module.DESCRIPTION,
+                                    epilog=module.EPILOG, formatter_class=argparse.RawDescriptionHelpFormatter)
+        module.configure(sub)
+        sub.set_defaults(subparser=sub, bench_handler=module.run)
 
 
 def run(args: argparse.Namespace) -> int:
     """Run the benchmark chosen."""
-    if args.benchmark == bench_sweep.NAME:
-        return bench_sweep.run(args)
-    raise AssertionError(f"benchmark {args.benchmark} is forwarded before parsing")
+    return int(args.bench_handler(args))

@@ -12,8 +12,12 @@ from pendulum_fmu.fmu.locate import locate_fmu
 
 NAME = "sweep"
 HELP = "sweep throughput, runs/s with 1 and 2 Dask workers, and the speed-up"
-DESCRIPTION = bench_sweep.__doc__ or HELP
-
+DESCRIPTION = (bench_sweep.__doc__ or HELP).replace("``", "")
+EPILOG = """\
+examples:
+  pendulum-fmu bench sweep                          # 1000 runs, 1 and 2 workers, median of 5
+  pendulum-fmu bench sweep --runs 200 --workers 1 2 4 --repeat 3
+"""
 
 
 def configure(parser: argparse.ArgumentParser) -> None:

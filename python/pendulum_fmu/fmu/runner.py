@@ -4,10 +4,14 @@
 and (if needed) one Model Exchange model, and resets them between runs: a sweep worker
 pays the unzip and ``dlopen`` once, not once per run.
 
-Co-Simulation runs are driven by a short loop here (``fmi2DoStep`` to each output point,
-then one ``fmi2GetReal``), which costs about half of fmpy's general ``simulate_fmu``;
-Model Exchange runs go through fmpy's ``simulate_fmu`` with its CVODE solver, on the
-already instantiated model.
+Co-Simulation runs are driven by :class:`~pendulum_fmu.fmu.fast_cs.FastStepper`: the
+FMU's own ``fmi2DoStep`` and one ``fmi2GetReal`` of every recorded output per point, called
+through ctypes prototypes with prebuilt arguments, the values landing straight in the result
+array (the fastest path that stays inside the FMI API). Model Exchange runs go through fmpy's
+``simulate_fmu`` with its CVODE solver, on the already instantiated model.
+
+Every message the FMU logs with status fmi2Warning during a run (for example its
+"hard case:" warning) is kept in :attr:`Trajectory.warnings`.
 """
 
 from __future__ import annotations
@@ -26,6 +30,8 @@ from fmpy import extract, instantiate_fmu, read_model_description, simulate_fmu
 from fmpy.fmi2 import FMU2Model, FMU2Slave
 
 from pendulum_fmu.errors import SimulationError
+from pendulum_fmu.fmu.fast_cs import FastStepper
+from pendulum_fmu.fmu.log import FmuLog
 from pendulum_fmu.spec import CS_SOLVERS, Method, Pendulum, TimeGrid
 
 RECORDED: tuple[str, ...] = ("theta", "omega", "theta_exact", "omega_exact", "x", "y")
@@ -55,6 +61,8 @@ class Trajectory:
         The Co-Simulation solver's counters; None in Model Exchange.
     wall_time : float
         Seconds spent in the run (initialization to the last output).
+    warnings : tuple of str
+        The messages the FMU logged with status fmi2Warning during the run, in order.
     """
 
     pendulum: Pendulum
@@ -66,6 +74,7 @@ class Trajectory:
     rejected_steps: int | None
     rhs_evaluations: int | None
     wall_time: float
+    warnings: tuple[str, ...] = ()
 
     @property
     def theta_error(self) -> np.ndarray:
@@ -112,6 +121,7 @@ class FmuRunner:
         self._model: FMU2Model | None = None
         self._slave_used = False
         self._model_used = False
+        self._log = FmuLog()
 
     def __enter__(self) -> Self:
         return self
@@ -131,7 +141,8 @@ class FmuRunner:
     # -- instances ---------------------------------------------------------------------------
     def _fresh_slave(self) -> FMU2Slave:
         if self._slave is None:
-            self._slave = instantiate_fmu(self._unzipdir, self.model_description, fmi_type="CoSimulation")
+            self._slave = instantiate_fmu(self._unzipdir, self.model_description, fmi_type="CoSimulation",
+                                          logger=self._log.callback)
         elif self._slave_used:
             self._slave.reset()
         self._slave_used = True
@@ -139,7 +150,8 @@ class FmuRunner:
 
     def _fresh_model(self) -> FMU2Model:
         if self._model is None:
-            self._model = instantiate_fmu(self._unzipdir, self.model_description, fmi_type="ModelExchange")
+            self._model = instantiate_fmu(self._unzipdir, self.model_description, fmi_type="ModelExchange",
+                                          logger=self._log.callback)
         elif self._model_used:
             self._model.reset()
         self._model_used = True
@@ -201,14 +213,10 @@ class FmuRunner:
     def _run_cs(self, pendulum: Pendulum, method: Method, grid: TimeGrid) -> Trajectory:
         start = time.perf_counter()
         slave = self._fresh_slave()
+        self._log.clear()
         period = self._initialize(slave, pendulum, method)
         times = grid.times(reference_period(period, pendulum))
-        refs = [self.vr[name] for name in RECORDED]
-        values = np.empty((len(times), len(RECORDED)))
-        values[0] = slave.getReal(refs)
-        for k in range(1, len(times)):
-            slave.doStep(currentCommunicationPoint=times[k - 1], communicationStepSize=times[k] - times[k - 1])
-            values[k] = slave.getReal(refs)
+        values = FastStepper(slave, [self.vr[name] for name in RECORDED]).run(times, self._log)
         steps, rejected, rhs = slave.getInteger([self.vr[name] for name in STATS])
         slave.terminate()
         wall = time.perf_counter() - start
@@ -216,11 +224,13 @@ class FmuRunner:
         result["time"] = times
         for column, name in enumerate(RECORDED):
             result[name] = values[:, column]
-        return Trajectory(pendulum, method, grid, period, result, int(steps), int(rejected), int(rhs), wall)
+        return Trajectory(pendulum, method, grid, period, result, int(steps), int(rejected), int(rhs), wall,
+                          self._log.warnings())
 
     def _run_me(self, pendulum: Pendulum, method: Method, grid: TimeGrid) -> Trajectory:
         start = time.perf_counter()
         model = self._fresh_model()
+        self._log.clear()
         # The grid needs the period before the run: ask the FMU, then start afresh.
         period = self._initialize(model, pendulum, method)
         model.terminate()
@@ -237,4 +247,4 @@ class FmuRunner:
         result = np.empty(recorded.size, dtype=[("time", float)] + [(name, float) for name in RECORDED])
         for name in result.dtype.names or ():
             result[name] = recorded[name]
-        return Trajectory(pendulum, method, grid, period, result, None, None, None, wall)
+        return Trajectory(pendulum, method, grid, period, result, None, None, None, wall, self._log.warnings())

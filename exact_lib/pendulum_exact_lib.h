@@ -1,0 +1,43 @@
+/* pendulum_exact_lib.h: the FMU's exact solution as a plain C library (no FMI), for callers
+ * that need theta_exact at many points without an FMU round trip per point (the Python
+ * function pendulum_fmu.exact). It runs the same pendulum_exact_init / pendulum_exact_eval
+ * as the FMU, with w0 = sqrt(g / L) and the initial state posed at t = 0, as the FMU does
+ * after initialization at start time 0, so its theta equals the FMU's theta_exact bit for bit. */
+#ifndef PENDULUM_EXACT_LIB_H
+#define PENDULUM_EXACT_LIB_H
+
+#include <stddef.h>
+
+#if defined(_WIN32)
+#define PENDULUM_EXACT_API __declspec(dllexport)
+#else
+#define PENDULUM_EXACT_API __attribute__((visibility("default")))
+/* The same for one initial state and parameters over n times: theta[i], omega[i] at t[i].
+ * Returns 0, or n when the inputs are refused (all outputs NaN then); a non-finite t[i]
+ * gives NaN at i and counts one. */
+PENDULUM_EXACT_API size_t pendulum_exact_times(double theta0, double omega0, double L, double g, size_t n,
+                                               const double *t, double *theta, double *omega);
+
+#endif
+
+/* Version of this interface; a caller checks it before trusting the signature below. */
+#define PENDULUM_EXACT_ABI 1
+PENDULUM_EXACT_API int pendulum_exact_abi(void);
+
+/* For each i < n: theta[i], omega[i] of the pendulum released at t = 0 from (theta0[i],
+ * omega0[i]) with length L[i] and gravity g[i], at time t[i]. The solution's constants are
+ * set up again only when an initial state or parameter differs from element i - 1's, so a
+ * scalar problem over many times costs one set-up. Returns the number of elements whose
+ * inputs were refused (not finite, L or g not > 0, g/L not finite and > 0); their outputs
+ * are NaN. Every pointer may alias nothing else; n == 0 does nothing. */
+PENDULUM_EXACT_API size_t pendulum_exact_many(size_t n, const double *theta0, const double *omega0,
+                                              const double *L, const double *g, const double *t,
+                                              double *theta, double *omega);
+
+/* The same for one initial state and parameters over n times: theta[i], omega[i] at t[i].
+ * Returns 0, or n when the inputs are refused (all outputs NaN then); a non-finite t[i]
+ * gives NaN at i and counts one. */
+PENDULUM_EXACT_API size_t pendulum_exact_times(double theta0, double omega0, double L, double g, size_t n,
+                                               const double *t, double *theta, double *omega);
+
+#endif

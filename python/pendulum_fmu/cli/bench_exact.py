@@ -1,0 +1,76 @@
+"""``pendulum-fmu bench exact``: the command line of :mod:`pendulum_fmu.bench.exact`."""
+
+from __future__ import annotations
+
+import argparse
+import math
+import os
+from pathlib import Path
+
+from pendulum_fmu.cli.arguments import integer
+
+NAME = "exact"
+HELP = "the exact solution per point: C, from Python (pendulum_fmu.exact) and scipy's ellipj"
+DESCRIPTION = """\
+Time one exact evaluation (theta and omega at a new time) three ways over the same number of
+random times, best of three each: in C (the benchmark program tests/c/bench_exact of a CMake
+build; a pip-installed package has none and leaves that column out), from Python through
+pendulum_fmu.exact (one call into the C library pendulum_exact, the FMU's own code), and with
+scipy.special.ellipj plus arctan2, vectorised. Prints ns per point and the ratios.
+"""
+EPILOG = """\
+examples:
+  pendulum-fmu bench exact                          # 10^6 points at 10, 90, 170, 179.9999 deg
+  pendulum-fmu bench exact -n 100000 --amplitudes 80 170
+  pendulum-fmu bench exact --exe build/tests/c/bench_exact
+"""
+
+
+def executable(text: str) -> Path:
+    """A type for an existing executable file."""
+    path = Path(text)
+    if not path.is_file() or not os.access(path, os.X_OK):
+        raise argparse.ArgumentTypeError(f"no executable file {text!r}")
+    return path
+
+
+def amplitude(text: str) -> float:
+    """A release angle in (0, 180) deg."""
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a number") from None
+    if not (math.isfinite(value) and 0.0 < value < 180.0):
+        raise argparse.ArgumentTypeError(f"must be an angle in (0, 180) deg, got {text!r}")
+    return value
+
+
+def configure(parser: argparse.ArgumentParser) -> None:
+    """Add the options of ``bench exact``."""
+    parser.add_argument("--exe", type=executable, default=None, metavar="PATH",
+                        help="the C benchmark program (default: tests/c/bench_exact of the repository's build/, "
+                             "if there is one)")
+    parser.add_argument("-n", "--points", type=integer(1, 100_000_000), default=1_000_000, metavar="N",
+                        help="points per amplitude, 1-10^8 (default 1000000)")
+    parser.add_argument("--amplitudes", type=amplitude, nargs="+", default=[10.0, 90.0, 170.0, 179.9999],
+                        metavar="DEG", help="release angles in (0, 180) deg (default 10 90 170 179.9999)")
+
+
+def run(args: argparse.Namespace) -> int:
+    """Run the benchmark and print the table."""
+    from pendulum_fmu.bench.exact import find_bench_executable
+    from pendulum_fmu.bench.exact import run as run_benchmark
+
+    program = args.exe if args.exe is not None else find_bench_executable()
+    if program is None:
+        print("bench exact: the C benchmark (tests/c/bench_exact) is not installed with the package: "
+              "timing Python and scipy only")
+    results = run_benchmark(program, args.points, tuple(args.amplitudes))
+    print(f"{'amplitude':>14} {'C ns/pt':>9} {'Python ns/pt':>13} {'scipy ns/pt':>12} {'Python/C':>9} {'C/scipy':>8}")
+    for r in results:
+        print(f"{r.amplitude_deg:>10.10g} deg {r.c_ns:>9.1f} {r.python_ns:>13.1f} {r.scipy_ns:>12.1f} "
+              f"{r.python_ns / r.c_ns:>9.2f} {r.ratio:>8.3f}")
+    for r in results:
+        print(f"bench_exact amplitude_deg={r.amplitude_deg:.10g} n={r.n} c_ns_per_point={r.c_ns:.3f} "
+              f"python_ns_per_point={r.python_ns:.3f} scipy_ns_per_point={r.scipy_ns:.3f}")
+    return 0

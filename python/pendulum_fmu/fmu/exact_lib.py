@@ -1,0 +1,146 @@
+"""``pendulum_fmu.exact``: the exact solution over numpy arrays, from the FMU's own C code.
+
+The C library ``pendulum_exact`` (``exact_lib/`` of the repository, built by CMake beside
+the FMU from the same ``exact.c`` and ``elliptic.c``) is called once per array through
+ctypes: no FMU instance, no round trip per point. Its theta equals the FMU's
+``theta_exact`` bit for bit (same code, same w0 = sqrt(g/L), initial state at t = 0).
+
+Where the library is looked for: ``$PENDULUM_EXACT_LIB``, then the package's
+``lib/<platform>/`` (a wheel carries the host's, and the cross-built ones when present),
+then the repository's ``build/`` in a source checkout.
+"""
+
+from __future__ import annotations
+
+import ctypes
+import os
+import platform
+import sys
+from functools import lru_cache
+from pathlib import Path
+
+import numpy as np
+from numpy.typing import ArrayLike
+
+from pendulum_fmu.errors import BuildError
+from pendulum_fmu.fmu.build import DEFAULT_BUILD_DIR
+
+ABI = 1
+"""The interface version this module speaks (``PENDULUM_EXACT_ABI`` in the C header)."""
+PACKAGE_LIB_DIR = Path(__file__).resolve().parents[1] / "lib"
+
+
+def platform_folder() -> tuple[str, str]:
+    """The FMI-style platform folder and the library file name of this machine.
+
+    Returns
+    -------
+    tuple of str
+        (``linux64``, ``libpendulum_exact.so``), (``win64``, ``pendulum_exact.dll``) or
+        (``darwin64``, ``libpendulum_exact.dylib``); other machines get a descriptive folder
+        name, for which no library is shipped.
+    """
+    machine = platform.machine().lower()
+    bits64 = machine in ("x86_64", "amd64", "arm64", "aarch64")
+    if sys.platform.startswith("win"):
+        return ("win64" if bits64 else f"win-{machine}"), "pendulum_exact.dll"
+    if sys.platform == "darwin":
+        return "darwin64", "libpendulum_exact.dylib"
+    folder = "linux64" if machine in ("x86_64", "amd64") else f"linux-{machine}"
+    return folder, "libpendulum_exact.so"
+
+
+def library_path() -> Path:
+    """The ``pendulum_exact`` library for this platform.
+
+    Raises
+    ------
+    BuildError
+        With one line, when no library for this platform is installed or built.
+    """
+    override = os.environ.get("PENDULUM_EXACT_LIB")
+    if override:
+        if not Path(override).is_file():
+            raise BuildError(f"$PENDULUM_EXACT_LIB names no file: {override!r}")
+        return Path(override)
+    folder, name = platform_folder()
+    for candidate in (PACKAGE_LIB_DIR / folder / name, DEFAULT_BUILD_DIR / name):
+        if candidate.is_file():
+            return candidate
+    raise BuildError(f"no pendulum_exact library for this platform ({folder}): this installation ships none; "
+                     f"build it with cmake (target pendulum_exact) and set PENDULUM_EXACT_LIB")
+
+
+@lru_cache(maxsize=1)
+def _library() -> ctypes.CDLL:
+    """Load the library once and declare the signature of ``pendulum_exact_many``."""
+    path = library_path()
+    try:
+        library = ctypes.CDLL(str(path))
+    except OSError as error:
+        raise BuildError(f"cannot load {path}: {error}") from None
+    library.pendulum_exact_abi.restype = ctypes.c_int
+    if library.pendulum_exact_abi() != ABI:
+        raise BuildError(f"{path} speaks interface {library.pendulum_exact_abi()}, this package {ABI}: rebuild it")
+    pointer = np.ctypeslib.ndpointer(dtype=np.float64, flags="C_CONTIGUOUS")
+    library.pendulum_exact_many.restype = ctypes.c_size_t
+    library.pendulum_exact_many.argtypes = [ctypes.c_size_t] + [pointer] * 7
+    library.pendulum_exact_times.restype = ctypes.c_size_t
+    library.pendulum_exact_times.argtypes = [ctypes.c_double] * 4 + [ctypes.c_size_t] + [pointer] * 3
+    return library
+
+
+def exact(theta0: ArrayLike, omega0: ArrayLike, L: ArrayLike, g: ArrayLike,  # noqa: N803 (physics names)
+          t: ArrayLike) -> tuple[np.ndarray, np.ndarray]:
+    """theta(t) and omega(t) of the pendulum theta'' + (g/L) sin(theta) = 0, exactly.
+
+    The inputs broadcast against each other like numpy arrays; the initial state
+    (theta0, omega0) is posed at t = 0. Every regime: libration, separatrix, rotation
+    (theta winds up continuously).
+
+    Parameters
+    ----------
+    theta0 : array_like
+        Initial angle from the downward vertical, rad.
+    omega0 : array_like
+        Initial angular velocity, rad/s.
+    L : array_like
+        Length, m (> 0).
+    g : array_like
+        Gravitational acceleration, m/s^2 (> 0).
+    t : array_like
+        Times, s.
+
+    Returns
+    -------
+    theta, omega : numpy.ndarray
+        Arrays of the broadcast shape, rad and rad/s; NaN where an input was refused
+        (not finite, L or g not > 0).
+
+    Raises
+    ------
+    BuildError
+        When no ``pendulum_exact`` library for this platform is available.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from pendulum_fmu import exact
+    >>> theta, omega = exact(np.radians(80.0), 0.0, 1.0, 9.81, np.linspace(0.0, 10.0, 1001))
+    """
+    library = _library()
+    state = [np.asarray(x, dtype=np.float64) for x in (theta0, omega0, L, g)]
+    if all(x.ndim == 0 for x in state):  # one problem over many times: no copies of the state
+        shape = np.shape(t)
+        times = np.ascontiguousarray(t, dtype=np.float64).reshape(-1)
+        theta = np.empty(times.size)
+        omega = np.empty(times.size)
+        library.pendulum_exact_times(*(float(x) for x in state), times.size, times, theta, omega)
+        return theta.reshape(shape), omega.reshape(shape)
+    arrays = np.broadcast_arrays(*(np.asarray(x, dtype=np.float64) for x in (theta0, omega0, L, g, t)))
+    shape = arrays[0].shape
+    flat = [np.ascontiguousarray(a).reshape(-1) for a in arrays]
+    theta = np.empty(flat[0].size)
+    omega = np.empty(flat[0].size)
+    library.pendulum_exact_many(theta.size, *flat, theta, omega)
+    return theta.reshape(shape), omega.reshape(shape)

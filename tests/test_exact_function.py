@@ -1,0 +1,65 @@
+"""``pendulum_fmu.exact``: the C library pendulum_exact over numpy arrays, the FMU's theta_exact bit for bit."""
+
+from __future__ import annotations
+
+import math
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+from scipy.special import ellipj, ellipk
+
+from pendulum_fmu import exact
+from pendulum_fmu.fmu.exact_port import ExactPort
+
+CASES = [  # theta0 (rad), omega0 (rad/s), L (m), g (m/s^2): every regime
+    (math.radians(80.0), 0.0, 1.0, 9.81),
+    (math.radians(179.9999), 0.0, 2.0, 9.81),
+    (math.pi, 0.0, 1.0, 9.81),
+    (0.3, 2.0, 0.5, 3.7),
+    (0.0, 2.0 * math.sqrt(9.81), 1.0, 9.81),      # separatrix
+    (-1.0, -9.0, 1.0, 9.81),                       # rotation, backwards
+]
+
+
+@pytest.mark.parametrize("case", CASES)
+def test_equals_the_fmus_theta_exact_bit_for_bit(fmu_path: Path, case: tuple[float, float, float, float]) -> None:
+    times = np.linspace(0.0, 37.0, 211)
+    theta, omega = exact(*case, times)
+    with ExactPort(fmu_path) as port:
+        port.initialize(*case)
+        fmu_theta, fmu_omega = port.evaluate(times)
+    assert np.array_equal(theta, fmu_theta) and np.array_equal(omega, fmu_omega)
+
+
+def test_agrees_with_scipy_ellipj_in_libration() -> None:
+    theta0, w0 = math.radians(75.0), math.sqrt(9.81)
+    m = math.sin(theta0 / 2.0) ** 2
+    times = np.linspace(0.0, 20.0, 1001)
+    sn, _, dn, _ = ellipj(w0 * times + ellipk(m), m)        # released from rest: u = w0 t + K
+    reference = 2.0 * np.arctan2(math.sqrt(m) * sn, dn)
+    theta, _ = exact(theta0, 0.0, 1.0, 9.81, times)
+    assert np.max(np.abs(theta - reference)) < 1e-12
+
+
+def test_inputs_broadcast_and_bad_ones_give_nan() -> None:
+    theta, omega = exact(np.array([[0.5], [1.0]]), 0.0, [1.0, -1.0, 2.0], 9.81, 0.7)
+    assert theta.shape == (2, 3)
+    assert np.isnan(theta[:, 1]).all() and np.isfinite(theta[:, [0, 2]]).all()
+    single, _ = exact(1.0, 0.0, 2.0, 9.81, 0.7)
+    assert single.shape == () and single == theta[1, 2]
+    nan_time, _ = exact(1.0, 0.0, 1.0, 9.81, [0.1, math.nan])
+    assert math.isfinite(nan_time[0]) and math.isnan(nan_time[1])
+
+
+def test_a_missing_library_is_one_line_naming_the_platform(tmp_path: Path) -> None:
+    code = ("import os; os.environ['PENDULUM_EXACT_LIB'] = '/nonexistent/libpendulum_exact.so'\n"
+            "from pendulum_fmu.cli.main import main\n"
+            "import pendulum_fmu\n"
+            "try:\n    pendulum_fmu.exact(1.0, 0.0, 1.0, 9.81, 0.5)\n"
+            "except pendulum_fmu.BuildError as error:\n    print(error)\n")
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=tmp_path, timeout=60)
+    assert done.stdout.strip() == "$PENDULUM_EXACT_LIB names no file: '/nonexistent/libpendulum_exact.so'"
+    assert done.stderr == ""
