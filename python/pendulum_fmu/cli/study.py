@@ -43,8 +43,11 @@ def run(args: argparse.Namespace) -> int:
 
     fmu = locate_fmu(args.fmu)
     make_output_folder(args.out)
-    table = write_study(fmu, args.out, args.periods)
-    print(table)
+    outcome = write_study(fmu, args.out, args.periods)
+    print(outcome.table)
+    if outcome.warnings:
+        print(f"warning: the FMU warned during the study (column fmu_warning of runs.csv): "
+              f"{'; '.join(outcome.warnings)}", file=sys.stderr)
     print(f"\nwritten to {args.out} (open report.html)")
     return 0
 

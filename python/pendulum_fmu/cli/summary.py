@@ -35,4 +35,9 @@ def summary_lines(trajectory: Trajectory) -> list[str]:
          f"({stop / reference_period(period, p):.6g} periods); {cost}"),
         (f"error     max |theta - theta_exact| = {t.max_error:.3e} rad, "
          f"max |omega - omega_exact| = {t.max_omega_error:.3e} rad/s"),
-    ]
+    ] + warning_lines(t.warnings)
+
+
+def warning_lines(warnings: tuple[str, ...]) -> list[str]:
+    """One line for what the FMU warned about during a run (nothing when it did not)."""
+    return [f"warning   the FMU: {'; '.join(warnings)}"] if warnings else []

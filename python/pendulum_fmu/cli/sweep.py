@@ -126,5 +126,9 @@ def run(args: argparse.Namespace) -> int:
         print(f"all {runs_text(outcome.skipped)} already done")
     if failed:
         print(f"{runs_text(failed)} failed: see the status column", file=sys.stderr)
+    warned = [row["fmu_warning"] for row in outcome.rows if row.get("fmu_warning")]
+    if warned:
+        print(f"warning: the FMU warned in {runs_text(len(warned))} (column fmu_warning), e.g. {warned[0]}",
+              file=sys.stderr)
     print(f"written   {outcome.table}" + ("" if args.no_plots else f" and the plots sweep_*.png in {args.out}"))
     return 1 if failed else 0

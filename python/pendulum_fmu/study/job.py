@@ -2,14 +2,24 @@
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from pathlib import Path
 
-from pendulum_fmu.study.figures import plot_period_ratio, plot_theta_against_w0t
+from pendulum_fmu.fmu.runner import FmuRunner
+from pendulum_fmu.study.figures import plot_comparison_grid, plot_period_ratio, plot_solutions
 from pendulum_fmu.study.report import write_html, write_report
-from pendulum_fmu.study.seed import format_table, period_ratio_curve, run_study, table_rows, write_csv
+from pendulum_fmu.study.seed import SEED_AMPLITUDES_DEG, format_table, period_curve, run_study, table_rows, write_csv
 
 
-def write_study(fmu: Path, out: Path, periods: float = 10.0) -> str:
+@dataclass(frozen=True)
+class StudyOutcome:
+    """What the study found: the Markdown error table and the FMU's warnings, if any."""
+
+    table: str
+    warnings: tuple[str, ...]
+
+
+def write_study(fmu: Path, out: Path, periods: float = 10.0) -> StudyOutcome:
     """Run the seed's study on ``fmu`` and write every output into the existing folder ``out``.
 
     Parameters
@@ -17,27 +27,30 @@ def write_study(fmu: Path, out: Path, periods: float = 10.0) -> str:
     fmu : Path
         ``Pendulum.fmu``.
     out : Path
-        An existing folder.
+        An existing, writable folder.
     periods : float
         Exact periods to simulate.
 
     Returns
     -------
-    str
-        The error table in Markdown.
+    StudyOutcome
+        The error table and the distinct warnings the FMU logged during the runs.
     """
-    runs = run_study(fmu, periods)
-    cs_runs = [r for r in runs if r.interface == "CS"]
-    plot_theta_against_w0t(cs_runs, "numeric", "Figure 3: numerical solution (FMU, Co-Simulation)",
-                           out / "fig3_numeric.png")
-    plot_theta_against_w0t(cs_runs, "exact", "Figure 4: exact solution (Jacobi elliptic functions)",
-                           out / "fig4_exact.png")
-    plot_theta_against_w0t(cs_runs, "overlay", "Figure 5: numerical (lines) and exact (dots) overlaid",
-                           out / "fig5_overlay.png")
-    plot_period_ratio(*period_ratio_curve(fmu), out / "period_ratio.png")
+    with FmuRunner(fmu) as runner:
+        runs = run_study(runner, periods)
+        curve = period_curve(runner)
+    cs_runs = [r for r in runs if r.method.interface == "CS"]
+    me_runs = [r for r in runs if r.method.interface == "ME"]
+    plot_solutions(cs_runs, "theta", "Figure 3: the numerical solution (FMU, Co-Simulation, rkn)",
+                   out / "fig3_numeric.png")
+    plot_solutions(cs_runs, "theta_exact", "Figure 4: the exact solution (Jacobi elliptic functions, in the FMU)",
+                   out / "fig4_exact.png")
+    plot_comparison_grid(cs_runs, me_runs, out / "fig5_overlay.png")
+    plot_period_ratio(curve, SEED_AMPLITUDES_DEG, out / "period_ratio.png")
     write_csv(runs, out / "runs.csv")
     rows = table_rows(runs)
     table = format_table(rows)
     write_report(out, table, periods)
     write_html(out, rows, periods)
-    return table
+    warnings = tuple(dict.fromkeys(w for run in runs for w in run.warnings))
+    return StudyOutcome(table, warnings)

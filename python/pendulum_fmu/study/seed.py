@@ -1,65 +1,79 @@
 """The seed's study: amplitudes 75-90 deg, Co-Simulation and Model Exchange, numeric vs exact.
 
 The seed is Arwin Tsalas, "Simulasi model matematika gerak pendulum sederhana" (Universitas
-Negeri Surabaya): its Figures 3-5 show theta against w0 t at 75, 80, 85 and 90 deg.
+Negeri Surabaya): its Figures 3-5 show theta against w0 t at 75, 80, 85 and 90 deg. Every run
+goes through :class:`~pendulum_fmu.fmu.runner.FmuRunner` (the FMU extracted and loaded once).
 """
 
 from __future__ import annotations
 
 import csv
 import math
-import shutil
+from dataclasses import dataclass
 from pathlib import Path
-from typing import TYPE_CHECKING
 
 import numpy as np
 
-if TYPE_CHECKING:
-    from pendulum_fmu.fmu.simulate import Interface, Run
+from pendulum_fmu.fmu.period import measured_period
+from pendulum_fmu.fmu.runner import FmuRunner, Trajectory
+from pendulum_fmu.spec import Method, Pendulum, TimeGrid
 
 SEED_AMPLITUDES_DEG = (75.0, 80.0, 85.0, 90.0)
 ME_TOLERANCE = 1e-10
+POINTS_PER_PERIOD = 50
 TABLE_HEADER = ("amplitude (deg)", "interface", "exact period (s)", "measured period (s)",
                 "T/T0", "max abs(theta - theta_exact) (rad)")
+MARKER_AMPLITUDES_DEG = (10.0, 30.0, 50.0, 75.0, 80.0, 85.0, 90.0, 110.0, 130.0, 150.0, 170.0, 175.0, 179.0,
+                         179.9, 179.99)
+"""Amplitudes whose period is also measured from a simulation (markers of the period figure)."""
 
 
-def run_study(fmu: Path, periods: float = 10.0) -> list[Run]:
-    """Simulate every seed amplitude in CS (default tolerance) and ME (rtol 1e-10).
+@dataclass(frozen=True)
+class PeriodCurve:
+    """T / T0 against amplitude: the FMU's ``period`` output and measured numerical periods.
+
+    Attributes
+    ----------
+    amplitudes_deg, ratios : numpy.ndarray
+        The curve from the FMU's exact ``period`` (dense, 0.5 to 179.999999 deg).
+    marker_amplitudes_deg, measured_ratios : numpy.ndarray
+        Periods measured from the zero crossings of Co-Simulation runs (rkn, tol 1e-10).
+    """
+
+    amplitudes_deg: np.ndarray
+    ratios: np.ndarray
+    marker_amplitudes_deg: np.ndarray
+    measured_ratios: np.ndarray
+
+
+def run_study(runner: FmuRunner, periods: float = 10.0) -> list[Trajectory]:
+    """Simulate every seed amplitude in CS (the FMU's default method) and ME (CVODE, rtol 1e-10).
 
     Parameters
     ----------
-    fmu : Path
-        The FMU.
+    runner : FmuRunner
+        The loaded FMU.
     periods : float
         Exact periods to simulate.
 
     Returns
     -------
-    list of Run
+    list of Trajectory
         CS runs first, then ME runs, each in the order of the amplitudes.
     """
-    from pendulum_fmu.fmu.simulate import Scenario, simulate
-
-    runs = []
-    settings: tuple[tuple[Interface, float | None], ...] = (("CS", None), ("ME", ME_TOLERANCE))
-    for interface, tolerance in settings:
-        for amplitude in SEED_AMPLITUDES_DEG:
-            scenario = Scenario(amplitude_deg=amplitude, periods=periods)
-            runs.append(simulate(fmu, scenario, interface, tolerance))
-    return runs
+    grid = TimeGrid(periods, "periods", POINTS_PER_PERIOD)
+    methods = (Method(), Method("cvode", ME_TOLERANCE))
+    return [runner.run(Pendulum.from_degrees(a), method, grid) for method in methods for a in SEED_AMPLITUDES_DEG]
 
 
-def table_rows(runs: list[Run]) -> list[tuple[str, ...]]:
+def table_rows(runs: list[Trajectory]) -> list[tuple[str, ...]]:
     """One row of TABLE_HEADER per run."""
-    from pendulum_fmu.fmu.period import exact_period, measured_period
-
     rows: list[tuple[str, ...]] = []
     for run in runs:
-        s = run.scenario
-        period = exact_period(math.radians(s.amplitude_deg), s.w0)
+        p = run.pendulum
         measured = measured_period(run.result["time"], run.result["theta"])
-        rows.append((f"{s.amplitude_deg:g}", run.interface, f"{period:.9f}", f"{measured:.9f}",
-                     f"{period * s.w0 / (2 * math.pi):.6f}", f"{run.max_error:.2e}"))
+        rows.append((f"{p.amplitude_deg:g}", run.method.interface, f"{run.period:.9f}", f"{measured:.9f}",
+                     f"{run.period / p.small_angle_period:.6f}", f"{run.max_error:.2e}"))
     return rows
 
 
@@ -70,43 +84,37 @@ def format_table(rows: list[tuple[str, ...]]) -> str:
     return "\n".join(lines)
 
 
-def write_csv(runs: list[Run], path: Path) -> None:
-    """All runs in one long CSV: one line per run and time point."""
+def write_csv(runs: list[Trajectory], path: Path) -> None:
+    """All runs in one long CSV: one line per run and time point, and the FMU's warnings of the run."""
     with path.open("w", newline="") as file:
         writer = csv.writer(file)
         writer.writerow(["interface", "amplitude_deg", "time_s", "w0t", "theta_rad", "theta_exact_rad",
-                         "omega_rad_s", "omega_exact_rad_s"])
+                         "omega_rad_s", "omega_exact_rad_s", "fmu_warning"])
         for run in runs:
-            r = run.result
+            r, p = run.result, run.pendulum
+            warning = "; ".join(run.warnings)
             for i in range(r.size):
-                writer.writerow([run.interface, run.scenario.amplitude_deg, repr(float(r["time"][i])),
-                                 repr(float(run.scenario.w0 * r["time"][i])), repr(float(r["theta"][i])),
+                writer.writerow([run.method.interface, f"{p.amplitude_deg:g}", repr(float(r["time"][i])),
+                                 repr(float(p.w0 * r["time"][i])), repr(float(r["theta"][i])),
                                  repr(float(r["theta_exact"][i])), repr(float(r["omega"][i])),
-                                 repr(float(r["omega_exact"][i]))])
+                                 repr(float(r["omega_exact"][i])), warning])
 
 
-def period_ratio_curve(fmu: Path) -> tuple[np.ndarray, np.ndarray]:
-    """T / T0 from the FMU's ``period`` output, amplitudes from 1 deg to 179.999999 deg.
+def period_curve(runner: FmuRunner) -> PeriodCurve:
+    """T / T0 from the FMU's ``period`` output, and measured at MARKER_AMPLITUDES_DEG.
 
-    One Model Exchange instance is reset and re-initialized for each amplitude (L = 1,
-    g = 9.81), and ``period`` is read right after initialization.
+    The curve is dense on a linear axis (0.5 .. 179.5 deg) and, toward the top, in
+    180 deg - theta0 from 10 down to 1e-6 deg; the markers are Co-Simulation runs of 10
+    exact periods, rkn at tol 1e-10, 50 points a period (L = 1, g = 9.81).
     """
-    from fmpy import extract, instantiate_fmu, read_model_description
-
-    amplitudes = 180.0 - np.logspace(np.log10(179.0), -6, 120)
-    md = read_model_description(str(fmu))
-    vr = {v.name: v.valueReference for v in md.modelVariables}
-    w0 = math.sqrt(9.81)
-    unzipped = extract(str(fmu))
-    instance = instantiate_fmu(unzipped, md, fmi_type="ModelExchange")
-    ratios = []
-    for amplitude in amplitudes:
-        instance.reset()
-        instance.setupExperiment(startTime=0.0)
-        instance.enterInitializationMode()
-        instance.setReal([vr["theta"]], [math.radians(amplitude)])
-        instance.exitInitializationMode()
-        ratios.append(instance.getReal([vr["period"]])[0] * w0 / (2 * math.pi))
-    instance.freeInstance()
-    shutil.rmtree(unzipped, ignore_errors=True)
-    return amplitudes, np.array(ratios)
+    linear = np.linspace(0.5, 179.5, 359)
+    top = 180.0 - np.logspace(1.0, -6.0, 120)
+    amplitudes = np.unique(np.concatenate([linear, top]))
+    ratios = np.array([runner.period(Pendulum.from_degrees(float(a))) for a in amplitudes])
+    ratios = ratios * math.sqrt(9.81) / (2.0 * math.pi)
+    grid = TimeGrid(10, "periods", POINTS_PER_PERIOD)
+    measured = []
+    for amplitude in MARKER_AMPLITUDES_DEG:
+        run = runner.run(Pendulum.from_degrees(amplitude), Method("rkn", 1e-10), grid)
+        measured.append(measured_period(run.result["time"], run.result["theta"]) / run.pendulum.small_angle_period)
+    return PeriodCurve(amplitudes, ratios, np.array(MARKER_AMPLITUDES_DEG), np.array(measured))

@@ -87,11 +87,12 @@ OUTPUT_COLUMNS: tuple[str, ...] = (
     "rhs_evaluations",
     "wall_time_s",         # seconds for the run on its worker: the cost
     "status",              # "ok", or why the run failed
+    "fmu_warning",         # what the FMU logged with status fmi2Warning during the run ("; "-joined), or empty
 )
 
 COLUMNS: tuple[str, ...] = tuple(INPUT_COLUMNS) + OUTPUT_COLUMNS
 COLUMN_KINDS: dict[str, str] = {column: "float" for column in COLUMNS} | {
-    "solver": "str", "interface": "str", "status": "str",
+    "solver": "str", "interface": "str", "status": "str", "fmu_warning": "str",
     "points_per_period": "int", "steps": "int", "rejected_steps": "int", "rhs_evaluations": "int"}
 """The value type of every column: ``float``, ``int`` (may be empty) or ``str``."""
 TIMING_COLUMNS: tuple[str, ...] = ("wall_time_s",)

@@ -108,6 +108,7 @@ def row_of(point: SweepPoint, trajectory: Trajectory) -> dict[str, Any]:
         rhs_evaluations=trajectory.rhs_evaluations,
         wall_time_s=trajectory.wall_time,
         status="ok",
+        fmu_warning="; ".join(trajectory.warnings),
     )
     return row
 
@@ -117,7 +118,7 @@ def failed_row(point: SweepPoint, error: Exception) -> dict[str, Any]:
     row: dict[str, Any] = {column: getattr(point, name) for column, name in INPUT_COLUMNS.items()}
     row.update({column: math.nan for column in OUTPUT_COLUMNS})
     row.update(interface=point.method().interface, steps=None, rejected_steps=None, rhs_evaluations=None,
-               status=f"failed: {error}".replace("\n", " "))
+               status=f"failed: {error}".replace("\n", " "), fmu_warning="")
     return row
 
 
