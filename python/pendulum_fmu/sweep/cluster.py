@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import logging
 import math
+import signal
 import sys
 import time
 from collections.abc import Callable, Iterator, Sequence
@@ -45,14 +46,23 @@ def dask_client(scheduler: str | None = None, workers: int = 2) -> Iterator[Clie
     from distributed import Client, LocalCluster
 
     if scheduler is None:
-        cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None,
-                               silence_logs=logging.ERROR)
+        # Ctrl-C at a terminal goes to the whole process group: the worker processes start with
+        # SIGINT ignored (inherited through exec), so only this process sees it and shuts them down.
+        previous = signal.signal(signal.SIGINT, signal.SIG_IGN)
+        try:
+            cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None,
+                                   silence_logs=logging.ERROR)
+        finally:
+            signal.signal(signal.SIGINT, previous)
         client = Client(cluster)
         try:
             yield client
+        except KeyboardInterrupt:
+            quiet_shutdown()
+            raise
         finally:
-            client.close()
-            cluster.close()
+            client.close(timeout=5)
+            cluster.close(timeout=5)
         return
     try:
         client = Client(scheduler, timeout="10s")
@@ -66,6 +76,12 @@ def dask_client(scheduler: str | None = None, workers: int = 2) -> Iterator[Clie
         yield client
     finally:
         client.close()
+
+
+def quiet_shutdown() -> None:
+    """Silence Dask's loggers: after an interrupt, closing the cluster logs only noise."""
+    for name in ("distributed", "tornado", "asyncio"):
+        logging.getLogger(name).setLevel(logging.CRITICAL + 1)
 
 
 def worker_threads(client: Client) -> int:

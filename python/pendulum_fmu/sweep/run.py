@@ -93,7 +93,6 @@ def run_sweep(fmu: Path, sweep: SweepGrid, out: Path, table_format: str = "csv",
     ``if __name__ == "__main__":``.
     """
     from pendulum_fmu.sweep.journal import Journal, read_journal
-    from pendulum_fmu.output.tables import write_table
 
     points = sweep.points()
     journal_path, stamp = out / JOURNAL, out / JOURNAL_FMU
@@ -119,17 +118,29 @@ def run_sweep(fmu: Path, sweep: SweepGrid, out: Path, table_format: str = "csv",
                 if skipped and progress:
                     print(f"resuming: {skipped} of {len(points)} runs already in {journal_path}", file=sys.stderr)
                 seconds = execute(client, fmu, pending, record, progress)
+        except KeyboardInterrupt:
+            journal.close()
+            _write_rows([done[p.key] for p in points if p.key in done], out, table_format, fmu)  # what finished
+            raise
         finally:
             journal.close()
     rows = [done[point.key] for point in points]
-    table = out / f"sweep.{table_format}"
-    write_table({column: [row[column] for row in rows] for column in COLUMNS}, table,
-                {"fmu": str(fmu), "runs": str(len(rows))}, COLUMN_KINDS)
+    table = _write_rows(rows, out, table_format, fmu)
     if plots:
         from pendulum_fmu.sweep.plots import plot_sweep
 
         plot_sweep(rows, out)
     return SweepOutcome(rows, len(pending), skipped, seconds, threads, table)
+
+
+def _write_rows(rows: list[dict[str, Any]], out: Path, table_format: str, fmu: Path) -> Path:
+    """The sweep's table ``out/sweep.<format>`` of these rows."""
+    from pendulum_fmu.output.tables import write_table
+
+    table = out / f"sweep.{table_format}"
+    write_table({column: [row[column] for row in rows] for column in COLUMNS}, table,
+                {"fmu": str(fmu), "runs": str(len(rows))}, COLUMN_KINDS)
+    return table
 
 
 def read_sweep_table(path: Path) -> pa.Table:
