@@ -67,7 +67,7 @@ def test_bad_argument_exits_2_naming_the_argument_and_its_range(argv: list[str],
     assert stop.value.code == 2
     err = capsys.readouterr().err
     assert message in err, err
-    assert err.startswith("usage: pendulum-fmu")
+    assert err.startswith("pendulum-fmu") and len(err.splitlines()) == 1, err
     assert "Traceback" not in err
 
 

@@ -12,6 +12,7 @@ from __future__ import annotations
 import argparse
 import sys
 from types import ModuleType
+from typing import NoReturn
 
 from pendulum_fmu import __version__
 from pendulum_fmu.cli import animate, bench, compare, simulate, study, sweep
@@ -45,10 +46,17 @@ class _Formatter(argparse.RawDescriptionHelpFormatter):
         super().__init__(prog, max_help_position=34)
 
 
+class OneLineParser(argparse.ArgumentParser):
+    """An argument parser whose errors are one line: what is wrong, and where the help is."""
+
+    def error(self, message: str) -> NoReturn:
+        """Print ``PROG: error: MESSAGE (see PROG --help)`` to stderr and exit with 2."""
+        self.exit(2, f"{self.prog}: error: {message} (see '{self.prog} --help')\n")
+
+
 def build_parser() -> argparse.ArgumentParser:
     """The full parser, every subcommand configured."""
-    parser = argparse.ArgumentParser(prog="pendulum-fmu", description=DESCRIPTION, epilog=EPILOG,
-                                     formatter_class=_Formatter)
+    parser = OneLineParser(prog="pendulum-fmu", description=DESCRIPTION, epilog=EPILOG, formatter_class=_Formatter)
     parser.add_argument("--version", action="version", version=f"%(prog)s {__version__}")
     commands = parser.add_subparsers(dest="command", metavar="COMMAND", title="commands", required=True)
     for module in COMMANDS:
@@ -85,7 +93,7 @@ def main(argv: list[str] | None = None) -> int:
     try:
         return int(args.handler(args))
     except UsageError as error:
-        subparser.error(str(error))  # usage line, "error: argument ...", exit 2
+        subparser.error(str(error))  # one line: "error: argument ...", exit 2
     except (BuildError, SimulationError) as error:
         print(f"{subparser.prog}: error: {error}", file=sys.stderr)
         return 1
