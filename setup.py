@@ -9,7 +9,8 @@ editable install plus ``cmake --build build`` (run by scripts/test.sh and by
 import-hook-driven build of the same tree. So:
 
 - a regular install (``pip install .``, a wheel) runs CMake and puts ``Pendulum.fmu`` into
-  the package, where ``pendulum_fmu.locate.locate_fmu`` finds it first;
+  the package, where ``pendulum_fmu.fmu.locate.locate_fmu`` finds it first, and the C library
+  ``pendulum_exact`` of ``pendulum_fmu.exact`` into ``pendulum_fmu/lib/<platform>/``;
 - an editable install (``pip install -e .``) runs CMake into ``build/`` of the checkout,
   where ``locate_fmu`` finds it and rebuilds it whenever a source is newer;
 - if CMake is missing or fails, the install goes on with a warning, and the package falls
@@ -22,6 +23,7 @@ chooses the CMake build folder (default ``build/`` beside this file).
 from __future__ import annotations
 
 import os
+import platform
 import shutil
 import subprocess
 import sys
@@ -34,7 +36,7 @@ ROOT = Path(__file__).resolve().parent
 
 
 def build_fmu() -> Path | None:
-    """Configure and build the ``fmu`` target; the packed FMU, or None (with a warning)."""
+    """Configure and build the ``fmu`` and ``pendulum_exact`` targets; the build folder, or None (with a warning)."""
     if os.environ.get("PENDULUM_FMU_SKIP_BUILD"):
         return None
     build_dir = Path(os.environ.get("PENDULUM_FMU_BUILD_DIR") or ROOT / "build")
@@ -44,15 +46,25 @@ def build_fmu() -> Path | None:
               "it is looked for at run time", file=sys.stderr)
         return None
     commands = [[cmake, "-S", str(ROOT), "-B", str(build_dir), "-DCMAKE_BUILD_TYPE=Release"],
-                [cmake, "--build", str(build_dir), "--target", "fmu", "--parallel", str(os.cpu_count() or 1)]]
+                [cmake, "--build", str(build_dir), "--target", "fmu", "pendulum_exact", "--parallel",
+                 str(os.cpu_count() or 1)]]
     for command in commands:
         done = subprocess.run(command, capture_output=True, text=True, check=False)
         if done.returncode != 0:
             print(f"warning: pendulum-fmu: {' '.join(command)} failed; Pendulum.fmu is looked for at run time\n"
                   f"{done.stdout[-2000:]}{done.stderr[-2000:]}", file=sys.stderr)
             return None
-    fmu = build_dir / "Pendulum.fmu"
-    return fmu if fmu.is_file() else None
+    return build_dir if (build_dir / "Pendulum.fmu").is_file() else None
+
+
+def host_library_folder() -> str:
+    """The platform folder of the host's ``pendulum_exact`` library (pendulum_fmu.fmu.exact_lib's naming)."""
+    machine = platform.machine().lower()
+    if sys.platform.startswith("win"):
+        return "win64"
+    if sys.platform == "darwin":
+        return "darwin64"
+    return "linux64" if machine in ("x86_64", "amd64") else f"linux-{machine}"
 
 
 class BuildPyWithFmu(build_py):
@@ -60,11 +72,21 @@ class BuildPyWithFmu(build_py):
 
     def run(self) -> None:
         super().run()
-        fmu = build_fmu()
-        if fmu is not None and not self.editable_mode:
-            target = Path(self.build_lib) / "pendulum_fmu" / "Pendulum.fmu"
+        build_dir = build_fmu()
+        if build_dir is None or self.editable_mode:
+            return
+        package = Path(self.build_lib) / "pendulum_fmu"
+        package.mkdir(parents=True, exist_ok=True)
+        shutil.copyfile(build_dir / "Pendulum.fmu", package / "Pendulum.fmu")
+        # The exact solution's C library, for pendulum_fmu.exact: the host's, and any cross-built
+        # ones left in build_dir/exact_lib/<platform>/ (platform names as the FMU's binaries/).
+        libraries = [(host_library_folder(), path) for path in build_dir.glob("*pendulum_exact.*")
+                     if path.suffix in (".so", ".dll", ".dylib")]
+        libraries += [(path.parent.name, path) for path in build_dir.glob("exact_lib/*/*pendulum_exact.*")]
+        for folder, path in libraries:
+            target = package / "lib" / folder / path.name
             target.parent.mkdir(parents=True, exist_ok=True)
-            shutil.copyfile(fmu, target)
+            shutil.copyfile(path, target)
 
 
 setup(cmdclass={"build_py": BuildPyWithFmu})

@@ -37,7 +37,9 @@ from typing import Callable
 
 from fmpy import extract, read_model_description
 
-from pendulum_fmu.fmu.build import REPO_ROOT, find_fmu
+from pendulum_fmu.errors import BuildError, UsageError
+from pendulum_fmu.fmu.locate import locate_fmu
+from pendulum_fmu.output.paths import OutputError, check_output_folder
 from pendulum_fmu.bench.workprecision.analysis import Point, aggregate, best_method, curve, log_slope
 from pendulum_fmu.bench.workprecision.cdriver import Floor, find_driver, run_driver, shared_library
 from pendulum_fmu.bench.workprecision.problems import Grid, cases, make_grid
@@ -64,23 +66,38 @@ TITLES = {"P1": "P1: 75, 80, 85, 90 deg from rest, 10 periods each, 50 points a 
 
 
 def build_parser() -> argparse.ArgumentParser:
-    """The command's options."""
-    parser = argparse.ArgumentParser(description="The speed-against-error study of the FMU's Co-Simulation solvers and their "
-                                                 "peers: work-precision diagrams, tables and the targets.",
-                                     formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--fmu", type=Path, default=None, help="the FMU (default: as the other commands find it)")
-    parser.add_argument("--driver", type=Path, default=None,
-                        help="the C driver tests/c/bench_solvers (default: next to the FMU's build)")
-    parser.add_argument("--out", type=Path, default=REPO_ROOT / "out" / "bench", help="output folder")
+    """The command's options (``pendulum-fmu bench solvers --help``)."""
+    parser = argparse.ArgumentParser(
+        prog="pendulum-fmu bench solvers",
+        description=(__doc__ or "").split("Usage::")[0].replace("``", ""),
+        epilog="examples:\n  pendulum-fmu bench solvers --quick                # about 10 s\n"
+               "  pendulum-fmu bench solvers --out out/bench       # the full study, about 6 min on 2 cores\n"
+               "  pendulum-fmu bench solvers --problems P1 --no-peers\n",
+        formatter_class=_HelpFormatter)
+    parser.add_argument("--fmu", type=Path, default=None, metavar="PATH",
+                        help="the FMU (default: $PENDULUM_FMU, the installed one, or the repository's build/)")
+    parser.add_argument("--driver", type=Path, default=None, metavar="PATH",
+                        help="the C driver tests/c/bench_solvers (default: in the FMU's CMake build)")
+    parser.add_argument("--out", type=Path, default=Path("out") / "bench", metavar="DIR",
+                        help="output folder, created with its missing parents")
     parser.add_argument("--problems", default="P1,P2,P3", help="comma-separated subset of P1,P2,P3")
     parser.add_argument("--budget", type=float, default=30.0,
-                        help="skip a Python run predicted to take longer (seconds; default 30)")
-    parser.add_argument("--p3-periods", type=float, default=10_000.0, help="length of P3 (default 10000)")
-    parser.add_argument("--points", type=int, default=50, help="output points a period (default 50)")
+                        help="skip a Python run predicted to take longer, seconds")
+    parser.add_argument("--p3-periods", type=float, default=10_000.0, help="length of P3 in periods")
+    parser.add_argument("--points", type=int, default=50, help="output points a period")
     parser.add_argument("--no-peers", action="store_true", help="only the FMU's solvers")
     parser.add_argument("--quick", action="store_true",
                         help="a smoke run: tolerances 1e-4 and 1e-8, P3 100 periods, no targets 2 and 4")
     return parser
+
+
+class _HelpFormatter(argparse.RawDescriptionHelpFormatter, argparse.ArgumentDefaultsHelpFormatter):
+    """Keep the description's lines and show every default that is not None or False."""
+
+    def _get_help_string(self, action: argparse.Action) -> str | None:
+        if action.default is None or action.default is False:
+            return action.help
+        return super()._get_help_string(action)
 
 
 class Budget:
@@ -213,11 +230,16 @@ def main(argv: list[str] | None = None) -> int:
     if not problems or any(p not in ("P1", "P2", "P3") for p in problems):
         print(f"bench solvers: --problems must name P1, P2 and/or P3, got {args.problems!r}", file=sys.stderr)
         return 2
-    fmu = args.fmu or find_fmu()
+    try:
+        fmu = locate_fmu(args.fmu)
+        check_output_folder(args.out)
+    except (UsageError, BuildError, OutputError) as error:
+        print(f"pendulum-fmu bench solvers: error: {error}", file=sys.stderr)
+        return 2
     driver = args.driver or find_driver(fmu)
     if driver is None or not driver.is_file():
-        print("bench solvers: the C driver tests/c/bench_solvers is not built (cmake --build BUILD); "
-              "or give --driver", file=sys.stderr)
+        print("pendulum-fmu bench solvers: error: the C driver tests/c/bench_solvers is not installed with the "
+              "package: run it from a source checkout after cmake --build build, or give --driver", file=sys.stderr)
         return 2
     fmu_tols, peer_tols, p3_tols, euler = FMU_TOLS, PEER_TOLS, P3_TOLS, EULER_STEPS
     p3_periods = args.p3_periods

@@ -19,7 +19,7 @@ import numpy as np
 from fmpy import simulate_fmu
 
 from pendulum_fmu import __version__
-from pendulum_fmu.fmu.build import REPO_ROOT, find_fmu
+from pendulum_fmu.fmu.build import find_fmu
 
 TOOL_NAME = "PendulumFMU"
 START_TIME, STOP_TIME, STEP_SIZE, REL_TOL = 0.0, 10.0, 0.01, 1e-8
@@ -78,7 +78,7 @@ def export(fmu: Path, root: Path) -> list[Path]:
 def main(argv: list[str] | None = None) -> int:
     """Write the cross-check layout into ``--out`` (default ``out/cross-check``)."""
     parser = argparse.ArgumentParser(description=__doc__)
-    parser.add_argument("--out", type=Path, default=REPO_ROOT / "out" / "cross-check", help="output folder")
+    parser.add_argument("--out", type=Path, default=Path("out") / "cross-check", help="output folder")
     args = parser.parse_args(argv)
     for folder in export(find_fmu(), args.out):
         print(folder)

@@ -1,0 +1,96 @@
+"""The wheel, installed into a fresh virtual environment, runs every subcommand from an empty folder.
+
+The wheel is built with ``pip wheel . --no-deps`` (CMake builds the FMU and the exact
+solution's library into the repository's ``build/``, incrementally); the environment gets the
+pinned dependencies of ``python/requirements.lock`` once (kept in ``build/wheel-venv`` while
+the lock is unchanged, so a second run only reinstalls the wheel) and the wheel itself. Every
+command then runs in an empty temporary folder with no ``PENDULUM_FMU``: it must use the FMU
+and library inside the installed package and write under that folder.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import os
+import shutil
+import subprocess
+import sys
+import zipfile
+from pathlib import Path
+
+import pytest
+
+REPO = Path(__file__).resolve().parents[1]
+LOCK = REPO / "python" / "requirements.lock"
+VENV = REPO / "build" / "wheel-venv"
+
+
+def _run(command: list[str], cwd: Path, env: dict[str, str] | None = None,
+         timeout: float = 600) -> subprocess.CompletedProcess[str]:
+    return subprocess.run(command, cwd=cwd, env=env, capture_output=True, text=True, timeout=timeout, check=False)
+
+
+@pytest.fixture(scope="module")
+def installed(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """The ``pendulum-fmu`` program of a fresh environment with the wheel installed."""
+    wheels = tmp_path_factory.mktemp("wheels")
+    for scratch in [REPO / "build" / "lib", *(REPO / "build").glob("bdist.*")]:  # setuptools' staging: no stale files
+        shutil.rmtree(scratch, ignore_errors=True)
+    env = dict(os.environ, PENDULUM_FMU_BUILD_DIR=str(REPO / "build"))
+    env.pop("PENDULUM_FMU", None)
+    built = _run([sys.executable, "-m", "pip", "wheel", ".", "--no-deps", "-q",
+                  "-w", str(wheels)], REPO, env)
+    assert built.returncode == 0, built.stderr[-3000:]
+    wheel, = wheels.glob("pendulum_fmu-*.whl")
+    assert wheel.name.endswith("-py3-none-any.whl")
+    names = zipfile.ZipFile(wheel).namelist()
+    assert "pendulum_fmu/Pendulum.fmu" in names and "pendulum_fmu/lib/linux64/libpendulum_exact.so" in names
+    stamp = hashlib.sha256(LOCK.read_bytes()).hexdigest()
+    python = VENV / "bin" / "python"
+    stamp_file = VENV / ".lock"
+    if not python.is_file() or not stamp_file.is_file() or stamp_file.read_text() != stamp:
+        created = _run([sys.executable, "-m", "venv", "--clear", str(VENV)], REPO)
+        assert created.returncode == 0, created.stderr
+        deps = _run([str(python), "-m", "pip", "install", "-q", "-r", str(LOCK)], REPO)
+        assert deps.returncode == 0, deps.stderr[-3000:]
+        stamp_file.write_text(stamp)
+    done = _run([str(python), "-m", "pip", "install", "-q", "--no-deps", "--force-reinstall", str(wheel)], REPO)
+    assert done.returncode == 0, done.stderr[-3000:]
+    return VENV / "bin" / "pendulum-fmu"
+
+
+COMMANDS: list[tuple[list[str], list[str]]] = [  # arguments, files it must write under the folder
+    (["simulate", "-a", "85", "-p", "2", "-o", "run.csv"], ["run.csv"]),
+    (["compare", "-a", "170", "-p", "2"], ["compare.png"]),
+    (["study", "--periods", "2"], ["out/study/report.html", "out/study/fig5_overlay.png", "out/study/runs.csv"]),
+    (["animate", "-a", "120", "-p", "0.5", "--fps", "10"], ["pendulum.gif"]),
+    (["sweep", "-a", "10:170:4", "-p", "2", "-j", "1", "-q"], ["out/sweep/sweep.csv", "out/sweep/sweep_cost.png"]),
+    (["bench", "exact", "-n", "20000", "--amplitudes", "80"], []),
+    (["bench", "speed", "--repeat", "1"], []),
+    (["bench", "sweep", "--runs", "8", "--periods", "1", "--workers", "1", "--repeat", "1"], []),
+]
+
+
+@pytest.mark.parametrize(("argv", "files"), COMMANDS, ids=[" ".join(a[:2]) for a, _ in COMMANDS])
+def test_every_subcommand_runs_from_an_empty_folder(installed: Path, argv: list[str], files: list[str],
+                                                    tmp_path: Path) -> None:
+    env = {key: value for key, value in os.environ.items() if not key.startswith("PENDULUM_")}
+    done = _run([str(installed), *argv], tmp_path, env, timeout=300)
+    assert done.returncode == 0, done.stderr[-3000:]
+    assert "Traceback" not in done.stderr
+    for name in files:
+        assert (tmp_path / name).is_file(), f"{name} missing; folder holds {sorted(tmp_path.rglob('*'))}"
+    site = installed.parent.parent / "lib"
+    assert not any(site.rglob("out")), "a command wrote into the installed package"
+
+
+def test_what_is_not_installed_says_so_in_one_line(installed: Path, tmp_path: Path) -> None:
+    env = {key: value for key, value in os.environ.items() if not key.startswith("PENDULUM_")}
+    done = _run([str(installed), "bench", "solvers", "--quick"], tmp_path, env)
+    assert done.returncode == 2
+    assert done.stderr.splitlines() == [
+        "pendulum-fmu bench solvers: error: the C driver tests/c/bench_solvers is not installed with the package: "
+        "run it from a source checkout after cmake --build build, or give --driver"]
+    exact = _run([str(installed), "bench", "exact", "-n", "1000", "--amplitudes", "80"], tmp_path, env)
+    assert exact.returncode == 0 and "the C benchmark (tests/c/bench_exact) is not installed" in exact.stdout
+    assert list(tmp_path.iterdir()) == []
