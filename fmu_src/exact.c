@@ -1,5 +1,5 @@
 /* exact.c: the exact solution of theta'' + w0^2 sin(theta) = 0 (see exact.h and
- * /work/shared/reference/pendulum-math.md for the formulas).
+ * documentation/math.html for the formulas).
  *
  * Initial state: theta0 = 2 pi j + th with th in (-pi, pi], s = sin(th/2), c = cos(th/2) >= 0,
  * q = omega0 / (2 w0). All of s, c, q and the complementary parameter are formed in
@@ -7,7 +7,7 @@
  * inputs: over 1e6 periods the phase needs K to better than 1e-18, which a double m1 (two
  * roundings of cos) does not give.
  *
- * Libration, m = s^2 + q^2 < 1, m1 = (c - q)(c + q) > 0 (A&S 16 / pendulum-math.md):
+ * Libration, m = s^2 + q^2 < 1, m1 = (c - q)(c + q) > 0 (A&S 16 / documentation/math.html):
  *   sin(theta/2) = k sn u,  cos(theta/2) = dn u,  omega = 2 k w0 cn u,  u = w0 (t - t0) + u0,
  *   theta = 2 atan2(k sn u, dn u). With u = n K + r, |r| <= K/2 (A&S 16.8):
  *     n = 0 mod 4: theta = 2 atan2( k sn r, dn r),   omega =  2 k w0 cn r

@@ -1,6 +1,6 @@
 /* exact.h: the analytic solution of theta'' + w0^2 sin(theta) = 0 for any initial state.
  *
- * Regimes (pendulum-math.md): libration (m < 1), separatrix (m1 == 0), rotation (m > 1),
+ * Regimes (documentation/math.html): libration (m < 1), separatrix (m1 == 0), rotation (m > 1),
  * with m = sin^2(theta0/2) + (omega0/(2 w0))^2 and m1 = cos^2(theta0/2) - (omega0/(2 w0))^2.
  * All constants are computed once by pendulum_exact_init; an evaluation is one argument
  * reduction and one sn/cn/dn call. The struct is plain data (no pointers), so an FMU can
