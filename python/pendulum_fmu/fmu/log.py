@@ -2,11 +2,18 @@
 
 An FMU reports through the ``fmi2CallbackLogger`` it was given at ``fmi2Instantiate``
 (FMI 2.0.x, section 2.1.5): status, category and message. fmpy formats the variadic message
-and hands it to a Python function; :class:`FmuLog` is that function's home.
+in a small C proxy and hands it to a Python function. That proxy keeps one Python logger for
+the whole process (the last one registered), so a logger per instance would be replaced by
+the next one and, once collected, leave the proxy calling freed memory. Hence one logger for
+the process, :func:`shared_callbacks`, kept alive for good, which routes each message by its
+component to the :class:`FmuLog` registered for it (:func:`register`) and prints the others
+as fmpy does.
 """
 
 from __future__ import annotations
 
+import threading
+from ctypes import byref, c_void_p, cast
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -56,3 +63,59 @@ def _text(value: bytes | str | None) -> str:
     if value is None:
         return ""
     return value.decode("utf-8", "replace") if isinstance(value, bytes) else str(value)
+
+
+_routes: dict[int, FmuLog] = {}
+_lock = threading.Lock()
+_callbacks: Any = None
+
+
+def _address(component: Any) -> int:
+    """The component pointer as an int (0 for NULL)."""
+    if component is None:
+        return 0
+    if isinstance(component, int):
+        return component
+    return int(cast(component, c_void_p).value or 0)
+
+
+def _dispatch(component: Any, instance_name: bytes, status: int, category: bytes, message: bytes) -> None:
+    """The process's one logger: to the component's FmuLog, else printed like fmpy's default."""
+    with _lock:
+        log = _routes.get(_address(component))
+    if log is not None:
+        log.callback(component, instance_name, status, category, message)
+        return
+    label = ("OK", "WARNING", "DISCARD", "ERROR", "FATAL", "PENDING")
+    print(f"[{label[status] if 0 <= status < len(label) else status}] {_text(message)}")
+
+
+def shared_callbacks() -> Any:
+    """The ``fmi2CallbackFunctions`` every instance of this package is given (made once)."""
+    global _callbacks
+    with _lock:
+        if _callbacks is None:
+            from fmpy import calloc, free
+            from fmpy.fmi2 import (fmi2CallbackAllocateMemoryTYPE, fmi2CallbackFreeMemoryTYPE, fmi2CallbackFunctions,
+                                   fmi2CallbackLoggerTYPE)
+            from fmpy.logging import addLoggerProxy
+
+            callbacks = fmi2CallbackFunctions()
+            callbacks.logger = fmi2CallbackLoggerTYPE(_dispatch)
+            callbacks.allocateMemory = fmi2CallbackAllocateMemoryTYPE(calloc)
+            callbacks.freeMemory = fmi2CallbackFreeMemoryTYPE(free)
+            addLoggerProxy(byref(callbacks))
+            _callbacks = callbacks
+        return _callbacks
+
+
+def register(component: Any, log: FmuLog) -> None:
+    """Route the messages of ``component`` (an instantiated FMU's pointer) to ``log``."""
+    with _lock:
+        _routes[_address(component)] = log
+
+
+def unregister(component: Any) -> None:
+    """Stop routing ``component``'s messages (before ``fmi2FreeInstance``)."""
+    with _lock:
+        _routes.pop(_address(component), None)

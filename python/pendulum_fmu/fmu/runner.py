@@ -26,12 +26,12 @@ from types import TracebackType
 from typing import Self
 
 import numpy as np
-from fmpy import extract, instantiate_fmu, read_model_description, simulate_fmu
+from fmpy import extract, read_model_description, simulate_fmu
 from fmpy.fmi2 import FMU2Model, FMU2Slave
 
 from pendulum_fmu.errors import SimulationError
 from pendulum_fmu.fmu.fast_cs import FastStepper
-from pendulum_fmu.fmu.log import FmuLog
+from pendulum_fmu.fmu.log import FmuLog, register, shared_callbacks, unregister
 from pendulum_fmu.spec import CS_SOLVERS, Method, Pendulum, TimeGrid
 
 RECORDED: tuple[str, ...] = ("theta", "omega", "theta_exact", "omega_exact", "x", "y")
@@ -134,6 +134,7 @@ class FmuRunner:
         """Free the FMU instances and delete the extracted files."""
         for instance in (self._slave, self._model):
             if instance is not None:
+                unregister(instance.component)
                 instance.freeInstance()
         self._slave = self._model = None
         shutil.rmtree(self._tempdir, ignore_errors=True)
@@ -141,8 +142,11 @@ class FmuRunner:
     # -- instances ---------------------------------------------------------------------------
     def _fresh_slave(self) -> FMU2Slave:
         if self._slave is None:
-            self._slave = instantiate_fmu(self._unzipdir, self.model_description, fmi_type="CoSimulation",
-                                          logger=self._log.callback)
+            md = self.model_description
+            self._slave = FMU2Slave(guid=md.guid, unzipDirectory=self._unzipdir,
+                                    modelIdentifier=md.coSimulation.modelIdentifier, instanceName="pendulum_cs")
+            self._slave.instantiate(callbacks=shared_callbacks())
+            register(self._slave.component, self._log)
         elif self._slave_used:
             self._slave.reset()
         self._slave_used = True
@@ -150,8 +154,11 @@ class FmuRunner:
 
     def _fresh_model(self) -> FMU2Model:
         if self._model is None:
-            self._model = instantiate_fmu(self._unzipdir, self.model_description, fmi_type="ModelExchange",
-                                          logger=self._log.callback)
+            md = self.model_description
+            self._model = FMU2Model(guid=md.guid, unzipDirectory=self._unzipdir,
+                                    modelIdentifier=md.modelExchange.modelIdentifier, instanceName="pendulum_me")
+            self._model.instantiate(callbacks=shared_callbacks())
+            register(self._model.component, self._log)
         elif self._model_used:
             self._model.reset()
         self._model_used = True

@@ -1,0 +1,46 @@
+"""The FMU's log: warnings kept per run, routed by component, through one logger for the process."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import numpy as np
+
+from pendulum_fmu.cli.summary import summary_lines
+from pendulum_fmu.fmu import log as fmu_log
+from pendulum_fmu.fmu.runner import FmuRunner, Trajectory
+from pendulum_fmu.spec import Method, Pendulum, TimeGrid
+from pendulum_fmu.sweep.grid import SweepPoint
+from pendulum_fmu.sweep.worker import row_of
+
+
+def test_warnings_are_routed_to_their_instance_and_kept_once_in_order() -> None:
+    mine, other = fmu_log.FmuLog(), fmu_log.FmuLog()
+    fmu_log.register(0x1234, mine)
+    fmu_log.register(0x5678, other)
+    try:
+        for message in (b"hard case: theta0 within 1e-9 of pi", b"hard case: theta0 within 1e-9 of pi", b"second"):
+            fmu_log._dispatch(0x1234, b"pendulum_cs", 1, b"logStatusWarning", message)
+        fmu_log._dispatch(0x1234, b"pendulum_cs", 0, b"logCalls", b"fmi2DoStep")
+        fmu_log._dispatch(0x1234, b"pendulum_cs", 3, b"logStatusError", b"fmi2DoStep: step <= 0")
+    finally:
+        fmu_log.unregister(0x1234)
+        fmu_log.unregister(0x5678)
+    assert mine.warnings() == ("hard case: theta0 within 1e-9 of pi", "second")
+    assert mine.last_error() == "fmi2DoStep: step <= 0"
+    assert other.entries == []
+
+
+def test_a_run_without_warnings_has_none_and_a_warned_run_says_so(fmu_path: Path) -> None:
+    with FmuRunner(fmu_path) as runner:
+        run = runner.run(Pendulum.from_degrees(80.0), Method(), TimeGrid(1, "periods"))
+    assert run.warnings == ()
+    assert not any(line.startswith("warning") for line in summary_lines(run))
+    warned = Trajectory(run.pendulum, run.method, run.grid, run.period, run.result, run.steps, run.rejected_steps,
+                        run.rhs_evaluations, run.wall_time, ("hard case: near the top",))
+    assert summary_lines(warned)[-1] == "warning   the FMU: hard case: near the top"
+    point = SweepPoint(80.0, 0.0, 1.0, 9.81, "rkn", 1e-8, 1.0, 50)
+    assert row_of(point, warned)["fmu_warning"] == "hard case: near the top"
+    assert row_of(point, run)["fmu_warning"] == ""
+    assert math.isfinite(run.max_error) and np.all(np.isfinite(run.result["theta"]))
