@@ -55,14 +55,18 @@ def dask_client(scheduler: str | None = None, workers: int = 2) -> Iterator[Clie
         finally:
             signal.signal(signal.SIGINT, previous)
         client = Client(cluster)
+        interrupted = False
         try:
             yield client
         except KeyboardInterrupt:
+            interrupted = True
             quiet_shutdown()
             raise
         finally:
-            client.close(timeout=5)
-            cluster.close(timeout=5)
+            client.close(timeout=2 if interrupted else 10)
+            cluster.close(timeout=3 if interrupted else 30)
+            if interrupted:
+                stop_worker_processes()
         return
     try:
         client = Client(scheduler, timeout="10s")
@@ -82,6 +86,24 @@ def quiet_shutdown() -> None:
     """Silence Dask's loggers: after an interrupt, closing the cluster logs only noise."""
     for name in ("distributed", "tornado", "asyncio"):
         logging.getLogger(name).setLevel(logging.CRITICAL + 1)
+
+
+def stop_worker_processes(grace: float = 1.0) -> None:
+    """Terminate (then kill) any child process the local cluster left behind after an interrupt."""
+    import psutil
+
+    children = psutil.Process().children(recursive=True)
+    for child in children:
+        try:
+            child.terminate()
+        except psutil.NoSuchProcess:
+            pass
+    _, alive = psutil.wait_procs(children, timeout=grace)
+    for child in alive:
+        try:
+            child.kill()
+        except psutil.NoSuchProcess:
+            pass
 
 
 def worker_threads(client: Client) -> int:
