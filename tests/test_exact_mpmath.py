@@ -28,6 +28,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from pendulum_fmu.fmu.exact_port import ExactPort
+from reference_cache import cached
 
 DIGITS = 50
 """Working precision of every reference, in decimal digits."""
@@ -147,12 +148,18 @@ def ode_reference(theta0: float, omega0: float, w0: float,
     -------
     theta, omega : list of mpmath.mpf
     """
+    def compute() -> list[list[str]]:
+        with mp.workdps(DIGITS):
+            w0_squared = mp.mpf(w0) ** 2
+            solution = mp.odefun(lambda _t, y: [y[1], -w0_squared * mp.sin(y[0])],
+                                 0, [mp.mpf(theta0), mp.mpf(omega0)])
+            values = [solution(mp.mpf(t)) for t in times]
+            return [[str(v[0]) for v in values], [str(v[1]) for v in values]]
+
+    # odefun costs seconds per case: computed once, then read from build/test-cache/.
+    theta, omega = cached("odefun", (theta0, omega0, w0, tuple(times), DIGITS), compute)
     with mp.workdps(DIGITS):
-        w0_squared = mp.mpf(w0) ** 2
-        solution = mp.odefun(lambda _t, y: [y[1], -w0_squared * mp.sin(y[0])],
-                             0, [mp.mpf(theta0), mp.mpf(omega0)])
-        values = [solution(mp.mpf(t)) for t in times]
-    return [v[0] for v in values], [v[1] for v in values]
+        return [mp.mpf(v) for v in theta], [mp.mpf(v) for v in omega]
 
 
 def max_abs_diff(values: np.ndarray, reference: Sequence[mp.mpf]) -> float:
