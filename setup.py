@@ -35,12 +35,29 @@ from setuptools.command.build_py import build_py
 ROOT = Path(__file__).resolve().parent
 
 
+def working_cmake() -> str | None:
+    """The first cmake on PATH that runs here.
+
+    pip's isolated build environment hides the ``cmake`` Python package from the ``cmake``
+    script a virtual environment may put first on PATH; that script then fails, and a system
+    cmake further down PATH is taken instead.
+    """
+    for folder in os.environ.get("PATH", "").split(os.pathsep):
+        candidate = shutil.which("cmake", path=folder) if folder else None
+        if candidate is None:
+            continue
+        probe = subprocess.run([candidate, "--version"], capture_output=True, text=True, check=False)
+        if probe.returncode == 0:
+            return candidate
+    return None
+
+
 def build_fmu() -> Path | None:
     """Configure and build the ``fmu`` and ``pendulum_exact`` targets; the build folder, or None (with a warning)."""
     if os.environ.get("PENDULUM_FMU_SKIP_BUILD"):
         return None
     build_dir = Path(os.environ.get("PENDULUM_FMU_BUILD_DIR") or ROOT / "build")
-    cmake = shutil.which("cmake")
+    cmake = working_cmake()
     if cmake is None or not (ROOT / "CMakeLists.txt").is_file():
         print("warning: pendulum-fmu: no cmake (or no CMakeLists.txt): Pendulum.fmu not built; "
               "it is looked for at run time", file=sys.stderr)

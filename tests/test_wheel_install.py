@@ -1,7 +1,7 @@
 """The wheel, installed into a fresh virtual environment, runs every subcommand from an empty folder.
 
 The wheel is built with ``pip wheel . --no-deps`` (CMake builds the FMU and the exact
-solution's library into the repository's ``build/``, incrementally); the environment gets the
+solution's library into ``build/wheel-cmake/``, incrementally); the environment gets the
 pinned dependencies of ``python/requirements.lock`` once (kept in ``build/wheel-venv`` while
 the lock is unchanged, so a second run only reinstalls the wheel) and the wheel itself. Every
 command then runs in an empty temporary folder with no ``PENDULUM_FMU``: it must use the FMU
@@ -36,7 +36,9 @@ def installed(tmp_path_factory: pytest.TempPathFactory) -> Path:
     wheels = tmp_path_factory.mktemp("wheels")
     for scratch in [REPO / "build" / "lib", *(REPO / "build").glob("bdist.*")]:  # setuptools' staging: no stale files
         shutil.rmtree(scratch, ignore_errors=True)
-    env = dict(os.environ, PENDULUM_FMU_BUILD_DIR=str(REPO / "build"))
+    # A CMake build folder of its own: the cmake on PATH (pip's, in .venv) may differ from the one
+    # that configured build/, and CMake refuses a build folder another version configured.
+    env = dict(os.environ, PENDULUM_FMU_BUILD_DIR=str(REPO / "build" / "wheel-cmake"))
     env.pop("PENDULUM_FMU", None)
     built = _run([sys.executable, "-m", "pip", "wheel", ".", "--no-deps", "-q",
                   "-w", str(wheels)], REPO, env)

@@ -104,9 +104,9 @@ def plot_comparison_grid(cs_runs: list[Trajectory], me_runs: list[Trajectory], p
             top.set_title(rf"$\theta_0$ = {cs.pendulum.amplitude_deg:g}$^\circ$, last 2 periods")
             top.grid(alpha=0.3)
             bottom.semilogy(w0t, _positive(np.abs(cs.theta_error)), color=NUMERIC_COLOR, lw=1.2,
-                            label="CS, rkn, tol 1e-8")
+                            label="error, CS (rkn, tol 1e-8)")
             bottom.semilogy(_w0t(me), _positive(np.abs(me.theta_error)), color=ME_COLOR, lw=1.2,
-                            label=f"ME, CVODE, rtol {me.method.effective_tolerance:g}")
+                            label=f"error, ME (CVODE, rtol {me.method.effective_tolerance:g})")
             bottom.set_xlabel(W0T_LABEL)
             bottom.grid(alpha=0.3, which="major")
             bottom.set_ylim(1e-17, 1e-4)
