@@ -11,7 +11,7 @@ from pendulum_fmu.cli import bench
 from pendulum_fmu.cli.main import main
 
 
-@pytest.mark.parametrize("name", ["exact", "speed", "sweep"])
+@pytest.mark.parametrize("name", ["accuracy", "exact", "speed", "sweep"])
 def test_bench_help_has_defaults_and_examples_and_no_rst(name: str, capsys: pytest.CaptureFixture[str]) -> None:
     with pytest.raises(SystemExit) as stop:
         main(["bench", name, "--help"])
@@ -46,3 +46,13 @@ def test_bench_sweep_prints_runs_per_second(fmu_path: Path, capsys: pytest.Captu
     match = re.search(r"^bench_sweep workers=1 runs=24 rate=([0-9.]+) ", out, re.MULTILINE)
     assert match is not None, out
     assert float(match.group(1)) > 0
+
+
+def test_bench_accuracy_prints_every_regime_within_5e_14(fmu_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["bench", "accuracy", "--points", "21", "--fmu", str(fmu_path)]) == 0
+    rows = [line.split("|")[1:-1] for line in capsys.readouterr().out.splitlines() if line.startswith("| ")]
+    header, *cases = rows
+    assert len(cases) == 12 and "separatrix, backward" in [c[0].strip() for c in cases]
+    for case, theta_error, omega_error, naive in cases:
+        assert float(theta_error) <= 5e-14 and float(omega_error) <= 5e-14, case
+    assert float(cases[-1][3]) > 1e-12  # the naive scipy evaluation after 1e6 periods is far worse

@@ -67,6 +67,7 @@ COMMANDS: list[tuple[list[str], list[str]]] = [  # arguments, files it must writ
     (["study", "--periods", "2"], ["out/study/report.html", "out/study/fig5_overlay.png", "out/study/runs.csv"]),
     (["animate", "-a", "120", "-p", "0.5", "--fps", "10"], ["pendulum.gif"]),
     (["sweep", "-a", "10:170:4", "-p", "2", "-j", "1", "-q"], ["out/sweep/sweep.csv", "out/sweep/sweep_cost.png"]),
+    (["bench", "accuracy", "--points", "11"], []),
     (["bench", "exact", "-n", "20000", "--amplitudes", "80"], []),
     (["bench", "speed", "--repeat", "1"], []),
     (["bench", "sweep", "--runs", "8", "--periods", "1", "--workers", "1", "--repeat", "1"], []),

@@ -15,7 +15,7 @@ import sys
 
 from types import ModuleType
 
-from pendulum_fmu.cli import bench_exact, bench_speed, bench_sweep
+from pendulum_fmu.cli import bench_accuracy, bench_exact, bench_speed, bench_sweep
 
 NAME = "bench"
 HELP = "benchmarks: exact evaluation, work-precision of the solvers, sweep throughput"
@@ -23,6 +23,7 @@ DESCRIPTION = "Benchmarks of the FMU and of this tool. 'pendulum-fmu bench BENCH
 EPILOG = """\
 examples:
   pendulum-fmu bench speed
+  pendulum-fmu bench accuracy
   pendulum-fmu bench exact -n 100000
   pendulum-fmu bench sweep --runs 1000 --workers 1 2
 """
@@ -32,7 +33,7 @@ FORWARDED: dict[str, tuple[str, str]] = {
 }
 """Benchmark name -> (module with ``main(argv) -> int``, one-line help)."""
 
-PARSED: tuple[ModuleType, ...] = (bench_exact, bench_speed, bench_sweep)
+PARSED: tuple[ModuleType, ...] = (bench_accuracy, bench_exact, bench_speed, bench_sweep)
 """Benchmarks with ``NAME``, ``HELP``, ``DESCRIPTION``, ``EPILOG``, ``configure`` and ``run``."""
 
 
