@@ -98,6 +98,8 @@ int integrator_advance(Integrator *it, double t_out, double y_out[2])
     /* Internal steps are never shortened to land on t_out: the step sequence is the same
      * for every output grid. A bounded number of steps per call: no call can hang. */
     long budget = INTEGRATOR_MAX_STEPS_PER_ADVANCE;
+    if (integrator_min_steps(it, t_out) > (double)budget)
+        return -2;   /* out of reach of the budget: refused before any work */
     while (it->t < t_out) {
         if (budget-- == 0)
             return -2;
@@ -115,6 +117,79 @@ int integrator_advance(Integrator *it, double t_out, double y_out[2])
         return -1;   /* before the last step: the contract forbids going back */
     }
     return (isfinite(y_out[0]) && isfinite(y_out[1])) ? 0 : -1;
+}
+
+static int is_fixed_step(SolverKind kind)
+{
+    return kind == SOLVER_RK4 || kind == SOLVER_SYMPLECTIC;
+}
+
+double integrator_min_steps(const Integrator *it, double t_out)
+{
+    if (!(t_out > it->t))
+        return 0.0;
+    const double largest = is_fixed_step(it->kind) ? it->h : fmax(it->h, it->hmax);
+    return (t_out - it->t) / largest;
+}
+
+static double ulp_of(double x)
+{
+    x = fabs(x);
+    return nextafter(x, INFINITY) - x;
+}
+
+StepEnd integrator_step_end(double time, double point, double step, double *t_end)
+{
+    if (!(isfinite(step) && step > 0.0))
+        return STEP_END_BAD_SIZE;
+    if (!isfinite(point) ||
+        !(fabs(point - time) <= INTEGRATOR_POINT_ULPS * ulp_of(fmax(fabs(time), fabs(point)))))
+        return STEP_END_BAD_POINT;
+    const double end = point + step;
+    if (!isfinite(end))
+        return STEP_END_NOT_FINITE;
+    if (end < time)
+        return STEP_END_BACKWARDS;
+    *t_end = end;
+    return STEP_END_OK;
+}
+
+static int all_finite(const double *values, int n)
+{
+    for (int i = 0; i < n; i++)
+        if (!isfinite(values[i]))
+            return 0;
+    return 1;
+}
+
+const char *integrator_check(const Integrator *it, const Integrator *fresh)
+{
+    if (it->kind != fresh->kind || !(it->w0sq == fresh->w0sq) || !(it->rtol == fresh->rtol) ||
+        !(it->atol == fresh->atol) || !(it->hmax == fresh->hmax) ||
+        !(it->energy0 == fresh->energy0) || it->project_energy != fresh->project_energy)
+        return "solver settings differ from those of the state's own start values";
+    if (is_fixed_step(it->kind) ? !(it->h == fresh->h) : !(it->h > 0.0 && it->h <= it->hmax))
+        return "solver step size out of range";
+    const double times[] = {it->t, it->t_lo, it->t_prev, it->t_prev_lo, it->h_last, it->err_prev};
+    if (!all_finite(times, 6) || !all_finite(it->y, 2) || !all_finite(it->f, 2) ||
+        !all_finite(it->y_prev, 2) || !all_finite(it->f_prev, 2) ||
+        !all_finite(&it->dense[0][0], 2 * INTEGRATOR_MAX_STAGES))
+        return "solver state holds a value that is not finite";
+    if (!(fabs(it->t_lo) <= ulp_of(it->t)) || !(fabs(it->t_prev_lo) <= ulp_of(it->t_prev)))
+        return "solver time out of range (low part)";
+    if (!(it->t_prev >= fresh->t) || !(it->t >= it->t_prev) || !(it->h_last >= 0.0))
+        return "solver times out of order";
+    if (it->h_last == 0.0 ? (it->t != fresh->t || it->stats.steps != 0)
+                          : !(fabs((it->t - it->t_prev) + (it->t_lo - it->t_prev_lo) - it->h_last)
+                              <= 4.0 * ulp_of(it->t)))
+        return "solver times and last step do not match";
+    if (!(it->err_prev >= 1e-4 && it->err_prev <= 1.0) || (it->last_rejected != 0 && it->last_rejected != 1))
+        return "solver step-size controller state out of range";
+    if (it->f[0] != it->y[1] || it->f_prev[0] != it->y_prev[1])
+        return "solver slopes do not match its states";
+    if (it->stats.steps < 0 || it->stats.rejected < 0 || it->stats.rhs_evals < 0)
+        return "solver statistics out of range";
+    return NULL;
 }
 
 /* ---- shared helpers ------------------------------------------------------------------ */
