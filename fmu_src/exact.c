@@ -450,6 +450,30 @@ void pendulum_exact_eval(const PendulumExact *ex, double t, double *theta, doubl
     *omega = om;
 }
 
+const char *pendulum_exact_qualitative_miss(const PendulumExact *ex, double theta, double omega)
+{
+    /* the libration (and the separatrix motion) is centred on the bottom 2 pi j nearest theta0 */
+    const EllipticDD centre = elliptic_two_prod(2.0 * ex->theta_turns, PI_HI);
+    const double offset = (theta - centre.hi) - (centre.lo + 2.0 * ex->theta_turns * PI_LO);
+    /* past the top by more than half a radian: fallen down the other side, not a rounding-level
+     * excursion of a state released at the top itself (pi as a double lies 1.2e-16 below it) */
+    const double over = PI_HI + 0.5;
+    switch (ex->regime) {
+    case PENDULUM_LIBRATION:
+        return fabs(offset) > over ? "carried the libration over the top" : NULL;
+    case PENDULUM_ROTATION:
+        return ex->direction * omega < 0.0 ? "reversed the rotation" : NULL;
+    default:
+        if (ex->direction == 0.0) {
+            return NULL;   /* at rest on the top: any motion is a rounding-level departure */
+        }
+        if (ex->direction * offset > over) {
+            return "went over the top past the separatrix";
+        }
+        return ex->direction * omega < 0.0 ? "fell back from the separatrix" : NULL;
+    }
+}
+
 double pendulum_exact_period(const PendulumExact *ex)
 {
     return ex->period;   /* computed in init: 4K/w0, 2K/(sqrt(m) w0), or +inf */

@@ -77,6 +77,13 @@ int pendulum_exact_resolvable(const PendulumExact *ex, double t);
  * At t == t0 exactly (theta0, omega0) as given. NaN where pendulum_exact_resolvable is 0. */
 void pendulum_exact_eval(const PendulumExact *ex, double t, double *theta, double *omega);
 
+/* Compares a numerical state (theta, omega) at some time with the exact motion, qualitatively:
+ * NULL if it is the same kind of motion, else what went wrong, as a phrase:
+ * "carried the libration over the top" (exact libration, |theta - its centre| > pi + 0.5),
+ * "reversed the rotation" (exact rotation, omega of the other sign),
+ * "went over the top past the separatrix" / "fell back from the separatrix" (on it). */
+const char *pendulum_exact_qualitative_miss(const PendulumExact *ex, double theta, double omega);
+
 /* Period of the motion in seconds: 4 K(m) / w0 for libration, the time of one revolution
  * 2 K(1/m) / (sqrt(m) w0) for rotation, and +INFINITY on the separatrix. */
 double pendulum_exact_period(const PendulumExact *ex);

@@ -5,6 +5,35 @@
 
 #include "fmi2_instance.h"
 
+static const char *const SOLVER_NAMES[] = {"?", "dopri5", "rk4", "rkn", "symplectic"};
+
+/* The hard case never passes silently: when the numerical solution has gone qualitatively
+ * wrong against the exact one (a libration carried over the top, a rotation reversed), the
+ * step returns fmi2Warning and logs it once per run (category logStatusWarning, message
+ * starting with "hard case:"), with what happened and what to do. */
+static fmi2Status hard_case_check(Instance *inst) {
+    ModelData *data = &inst->data;
+    const char *miss;
+    double theta_exact, omega_exact;
+    if (data->hard_case_reported || !pendulum_exact_resolvable(&data->exact, data->time)) {
+        return fmi2OK;
+    }
+    miss = pendulum_exact_qualitative_miss(&data->exact, data->theta, data->omega);
+    if (miss == NULL) {
+        return fmi2OK;
+    }
+    pendulum_exact_eval(&data->exact, data->time, &theta_exact, &omega_exact);
+    data->hard_case_reported = 1;
+    instance_log(inst, fmi2Warning, LOG_STATUS_WARNING,
+                 "hard case: by t = %.9g the numerical solution (solver %s, tolerance %g) %s: theta = %.9g rad, "
+                 "omega = %.9g rad/s, the exact solution theta_exact = %.9g rad, omega_exact = %.9g rad/s. "
+                 "Use a tighter tolerance or another solver, "
+                 "or read theta_exact.",
+                 data->time, SOLVER_NAMES[data->solver], data->tolerance, miss, data->theta, data->omega,
+                 theta_exact, omega_exact);
+    return fmi2Warning;
+}
+
 fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationPoint,
                       fmi2Real communicationStepSize, fmi2Boolean noSetFMUStatePriorToCurrentPoint) {
     Instance *inst = c;
@@ -46,7 +75,7 @@ fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationPoint,
     data->theta = y[0];
     data->omega = y[1];
     data->time = t_end;
-    return fmi2OK;
+    return hard_case_check(inst);
 }
 
 fmi2Status fmi2SetRealInputDerivatives(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,

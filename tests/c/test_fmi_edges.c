@@ -293,8 +293,78 @@ static void test_forged_states(fmi2Type type)
     fmi2FreeInstance(c);
 }
 
+/* Logger that keeps every warning's category and message. */
+typedef struct {
+    int warnings;
+    char category[64], message[600];
+} WarningLog;
+
+static void warning_logger(fmi2ComponentEnvironment env, fmi2String name, fmi2Status status, fmi2String category,
+                           fmi2String message, ...)
+{
+    WarningLog *log = env;
+    va_list args;
+    (void)name;
+    if (status != fmi2Warning) {
+        return;
+    }
+    log->warnings++;
+    snprintf(log->category, sizeof log->category, "%s", category);
+    va_start(args, message);
+    vsnprintf(log->message, sizeof log->message, message, args);
+    va_end(args);
+}
+
+/* Runs a Co-Simulation of theta0 at rest (L = 1, g = 9.81) with `solver` at `tol` by steps of
+ * 0.1 s up to `t_end`; returns the number of fmi2Warning steps, fills the log. */
+static int run_for_warnings(double theta0, double omega0, int solver, double tol, double t_end, WarningLog *log)
+{
+    fmi2CallbackFunctions callbacks = {warning_logger, calloc, free, NULL, NULL};
+    const fmi2ValueReference vrs[2] = {VR_THETA, VR_OMEGA}, vr_solver = VR_SOLVER;
+    const double values[2] = {theta0, omega0};
+    int warning_steps = 0;
+    callbacks.componentEnvironment = log;
+    fmi2Component c = fmi2Instantiate("hard", fmi2CoSimulation, PENDULUM_GUID, NULL, &callbacks, fmi2False, fmi2False);
+    fmi2SetupExperiment(c, fmi2True, tol, 0.0, fmi2False, 0.0);
+    fmi2EnterInitializationMode(c);
+    fmi2SetReal(c, vrs, 2, values);
+    fmi2SetInteger(c, &vr_solver, 1, &solver);
+    fmi2ExitInitializationMode(c);
+    for (int i = 0; i < (int)(t_end / 0.1 + 0.5); ++i) {
+        fmi2Status status = fmi2DoStep(c, i * 0.1, 0.1, fmi2True);
+        check(status == fmi2OK || status == fmi2Warning, "step %d: status %d", i, (int)status);
+        warning_steps += status == fmi2Warning;
+    }
+    fmi2FreeInstance(c);
+    return warning_steps;
+}
+
+/* The hard case: released at rest at pi (the double), rkn at 1e-8 goes over the top while the
+ * exact solution librates; fmi2DoStep returns fmi2Warning once and logs it once. */
+static void test_hard_case_warns_once(void)
+{
+    WarningLog log = {0, "", ""};
+    const int steps = run_for_warnings(PI, 0.0, 3, 1e-8, 100.0, &log);
+    check(steps == 1, "hard case: %d steps returned fmi2Warning (want exactly one)", steps);
+    check(log.warnings == 1, "hard case: %d warnings logged (want one)", log.warnings);
+    check(strcmp(log.category, "logStatusWarning") == 0, "category \"%s\"", log.category);
+    check(strncmp(log.message, "hard case:", 10) == 0 && strstr(log.message, "over the top") != NULL &&
+              strstr(log.message, "tighter tolerance") != NULL, "message \"%s\"", log.message);
+    printf("hard case message: %s\n", log.message);
+    /* an ordinary run (75 deg, the default) warns never */
+    WarningLog quiet = {0, "", ""};
+    check(run_for_warnings(1.3089969389957472, 0.0, 3, 1e-8, 30.0, &quiet) == 0 && quiet.warnings == 0,
+          "an ordinary run warned: %s", quiet.message);
+    /* a rotation reversed by a coarse solver: rk4 at 1e-4 just above the separatrix */
+    WarningLog reversed = {0, "", ""};
+    run_for_warnings(0.0, 2.0 * sqrt(9.81) * (1.0 + 1e-9), 2, 1e-4, 30.0, &reversed);
+    printf("just above the separatrix, rk4 at 1e-4: %d warnings%s%s\n", reversed.warnings,
+           reversed.warnings ? ": " : "", reversed.message);
+}
+
 int main(void)
 {
+    test_hard_case_warns_once();
     test_interface_type();
     test_time_never_goes_backwards();
     test_unreachable_step_refused_at_once();
