@@ -152,9 +152,8 @@ const char *model_check_state(const ModelData *data, fmi2Type type) {
     if (data->hard_case_reported != 0 && data->hard_case_reported != 1) {
         return "the hard-case flag is out of range";
     }
-    if (!(isfinite(data->L) && data->L > 0.0 && isfinite(data->g) && data->g > 0.0) ||
-        check_parameters(data) != NULL) {
-        return "L or g out of range (finite, greater than 0, g / L finite and greater than 0)";
+    if (!(isfinite(data->L) && data->L > 0.0 && isfinite(data->g) && data->g > 0.0)) {
+        return "L or g out of range (finite, greater than 0)";
     }
     if (data->solver < SOLVER_DOPRI5 || data->solver > SOLVER_SYMPLECTIC) {
         return "the solver is not an item of the enumeration Solver";
@@ -182,6 +181,9 @@ const char *model_check_state(const ModelData *data, fmi2Type type) {
             return "the exact solution does not match its own start values";
         }
         return NULL;
+    }
+    if (check_parameters(data) != NULL) {
+        return "g / L is not a finite number greater than 0 after initialization";
     }
     if (!pendulum_exact_same(&data->exact) || !(data->exact.g == data->g) || !(data->exact.L == data->L) ||
         !(data->exact.t0 == data->start_time)) {

@@ -75,8 +75,11 @@ typedef struct {
 int integrator_init(Integrator *it, SolverKind kind, double w0sq, double tol,
                     double t0, double theta0, double omega0);
 
-/* Most internal steps (accepted or rejected) one integrator_advance may take. */
+/* Most internal steps (accepted or rejected) one integrator_advance may take (a fuzzing
+ * build may set a smaller one on the command line, so that each of its runs stays short). */
+#ifndef INTEGRATOR_MAX_STEPS_PER_ADVANCE
 #define INTEGRATOR_MAX_STEPS_PER_ADVANCE 10000000L
+#endif
 
 /* Communication points (FMI's currentCommunicationPoint, FMI 3's the same): a master's point
  * may differ from the current time by its own rounding, at most this many ulps of the time. */
