@@ -49,6 +49,12 @@ typedef struct {
     double f[2];                 /* y' = (omega, -w0sq sin theta) at (t, y), already counted:
                                     first stage of the next step (FSAL) and end-point slope
                                     for interpolation */
+    double rate;                 /* the motion's own angular rate: w0 in libration, sqrt(m) w0
+                                    (half the largest speed) in rotation; sets the time scale
+                                    of the fixed steps */
+    double closeness;            /* distance from the separatrix, |m1| / max(1, m) (at least
+                                    INTEG_MIN_CLOSENESS): the period's sensitivity to energy
+                                    errors grows like 1/closeness there */
     double h;                    /* next step size to try (fixed-step methods: the step) */
     double hmax;                 /* largest step the adaptive methods may take */
     double t_prev, y_prev[2];    /* start of the last accepted step (for dense output) */

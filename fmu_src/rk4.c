@@ -20,10 +20,13 @@
 #include "integrator.h"
 #include "integrator_methods.h"
 
+/* tol per unit of rate t, scaled for the global error over ten periods */
+#define RK4_TOL_FACTOR 0.25
+
 void integ_rk4_start(Integrator *it)
 {
-    double w0 = sqrt(it->w0sq);
-    it->h = fmin(pow(120.0 * it->rtol, 0.25), 0.5) / w0;
+    /* rate and closeness: integrator.c (the motion's time scale, the separatrix's sensitivity) */
+    it->h = fmin(pow(120.0 * it->rtol * it->closeness * RK4_TOL_FACTOR, 0.25), 0.5) / it->rate;
 }
 
 int integ_rk4_step(Integrator *it)
@@ -44,8 +47,10 @@ int integ_rk4_step(Integrator *it)
     for (int i = 0; i < 2; i++)
         ys[i] = y[i] + h * k3[i];
     integ_rhs(it, ys, k4);
+    /* compensated: dense[0] (unused by the quintic Hermite output) carries the rounding */
     for (int i = 0; i < 2; i++)
-        ynew[i] = y[i] + h / 6.0 * (k1[i] + 2.0 * (k2[i] + k3[i]) + k4[i]);
+        ynew[i] = integ_add_compensated(y[i], h / 6.0 * (k1[i] + 2.0 * (k2[i] + k3[i]) + k4[i]),
+                                        &it->dense[0][i]);
     if (!isfinite(ynew[0]) || !isfinite(ynew[1]))
         return -1;
     integ_rhs(it, ynew, fnew);   /* next step's k1 and the interpolation's end slope */
