@@ -57,7 +57,7 @@ def exact_frequency(length: float, gravity: float) -> mp.mpf:
 
 
 def closed_form(theta0: float, omega0: float, w0: float | mp.mpf, times: Sequence[float],
-                t0: float = 0.0) -> tuple[list[mp.mpf], list[mp.mpf], mp.mpf]:
+                t0: float = 0.0, digits: int = DIGITS) -> tuple[list[mp.mpf], list[mp.mpf], mp.mpf]:
     """Exact solution by mpmath's elliptic functions, at ``DIGITS`` digits.
 
     Parameters
@@ -70,6 +70,8 @@ def closed_form(theta0: float, omega0: float, w0: float | mp.mpf, times: Sequenc
         Evaluation times.
     t0 : float
         Time at which the initial state is posed.
+    digits : int
+        Working precision in decimal digits.
 
     Returns
     -------
@@ -88,7 +90,7 @@ def closed_form(theta0: float, omega0: float, w0: float | mp.mpf, times: Sequenc
     omega = 2 d w0 sech u, u = w0 (t - t0) + asinh(d tan(th/2)). Arguments are reduced by
     the real period in mpmath before calling ellipfun.
     """
-    with mp.workdps(DIGITS):
+    with mp.workdps(digits):
         th0, om0, w, start = mp.mpf(theta0), mp.mpf(omega0), mp.mpf(w0), mp.mpf(t0)
         turns = mp.nint(th0 / (2 * mp.pi))
         th = th0 - 2 * mp.pi * turns
