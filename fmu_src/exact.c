@@ -137,6 +137,151 @@ static EllipticDD reduce_large_angle(double theta, double *turns)
     return angle;
 }
 
+
+/* ---------------------------------------------------------------------------------------
+ * Triple-double, only for m1 next to the separatrix. There m1 = c^2 - q^2 (c = cos(th/2),
+ * q = |omega0| / (2 w0)) cancels: with c and q in double-double (absolute error ~1e-32) a
+ * state within 1e-13 of the separatrix kept only ~18 digits of m1, and the period, hence the
+ * phase after 1e6 periods, inherited the rest (1.9e-12 rad). A value is an expansion
+ * x[0] + x[1] + x[2] (relative error ~2^-150), formed by error-free transformations and
+ * renormalised by repeated vector sums (Ogita, Rump & Oishi, SIAM J. Sci. Comput. 26 (2005)
+ * 1955-1988, Algorithm 4.8, SumK with K = 3), which run only once per initial state.
+ * --------------------------------------------------------------------------------------- */
+typedef struct {
+    double x[3];
+} TripleDouble;
+
+/* Takes an accurate double out of the sum of v[0..n-1] and leaves the rest in v (exactly). */
+static double take_leading(double *v, int n)
+{
+    for (int pass = 0; pass < 3; ++pass) {
+        for (int i = 1; i < n; ++i) {
+            const EllipticDD t = elliptic_two_sum(v[i], v[i - 1]);
+            v[i] = t.hi;
+            v[i - 1] = t.lo;
+        }
+    }
+    const double leading = v[n - 1];
+    v[n - 1] = 0.0;
+    return leading;
+}
+
+static TripleDouble td_from_terms(double *v, int n)
+{
+    TripleDouble r;
+    for (int i = 0; i < 3; ++i) {
+        r.x[i] = take_leading(v, n);
+    }
+    return r;
+}
+
+static TripleDouble td_add(TripleDouble a, TripleDouble b)
+{
+    double v[6] = {a.x[2], b.x[2], a.x[1], b.x[1], a.x[0], b.x[0]};
+    return td_from_terms(v, 6);
+}
+
+static TripleDouble td_neg(TripleDouble a)
+{
+    for (int i = 0; i < 3; ++i) {
+        a.x[i] = -a.x[i];
+    }
+    return a;
+}
+
+static TripleDouble td_mul(TripleDouble a, TripleDouble b)
+{
+    /* products of order <= 2 exactly (two-products), of order 3 rounded (~2^-159) */
+    double v[14];
+    int n = 0;
+    v[n++] = a.x[1] * b.x[2];
+    v[n++] = a.x[2] * b.x[1];
+    for (int order = 2; order >= 0; --order) {
+        for (int i = 0; i <= order; ++i) {
+            const EllipticDD p = elliptic_two_prod(a.x[i], b.x[order - i]);
+            v[n++] = p.lo;
+            v[n++] = p.hi;
+        }
+    }
+    return td_from_terms(v, n);
+}
+
+static TripleDouble td_of(double x)
+{
+    TripleDouble r = {{x, 0.0, 0.0}};
+    return r;
+}
+
+/* a / b by long division: three quotient digits, each from the remainder so far */
+static TripleDouble td_div(TripleDouble a, TripleDouble b)
+{
+    double q[3];
+    TripleDouble r = a;
+    for (int i = 0; i < 3; ++i) {
+        q[i] = r.x[0] / b.x[0];
+        r = td_add(r, td_neg(td_mul(b, td_of(q[i]))));
+    }
+    double v[3] = {q[2], q[1], q[0]};
+    return td_from_terms(v, 3);
+}
+
+/* sin y (odd = 1) or cos y (odd = 0) for |y| <= pi/4 + small, Maclaurin series (A&S 4.3.65-66) */
+static TripleDouble td_sin_cos_series(TripleDouble y, int odd)
+{
+    const TripleDouble y2 = td_mul(y, y);
+    TripleDouble term = odd ? y : td_of(1.0), sum = term;
+    for (int k = odd; k < 60; k += 2) {
+        term = td_div(td_mul(term, y2), td_of(-(double)(k + 1) * (double)(k + 2)));
+        sum = td_add(sum, term);
+        if (fabs(term.x[0]) < 1e-52 * fabs(sum.x[0])) {
+            break;
+        }
+    }
+    return sum;
+}
+
+/* m1 = cos^2(th/2) - q^2 to ~1e-45 absolute, th = theta0 - 2 pi turns (|theta0| < 2^50,
+ * th in about (-pi, pi]), q^2 = (|omega0|/2)^2 / w0sq with w0sq = numerator / denominator
+ * given exactly (g / L, or w0^2 as a double-double from w0). Returns 0, or -1 when the
+ * squares leave the range where every product is exact. */
+static int m1_near_separatrix(double theta0, double turns, double half_speed, EllipticDD w0sq_num,
+                              double w0sq_den, EllipticDD *m1)
+{
+    if (!(half_speed > 0x1p-400 && half_speed < 0x1p400) || !(fabs(theta0) < 0x1p50)) {
+        return -1;
+    }
+    /* th/2 = theta0/2 - pi turns, pi in three parts, products exact (j < 2^49) */
+    const EllipticDD p_hi = elliptic_two_prod(turns, PI_HI), p_lo = elliptic_two_prod(turns, PI_LO);
+    double v[6] = {-turns * PI_LOLO, -p_lo.lo, -p_lo.hi, -p_hi.lo, -p_hi.hi, 0.5 * theta0};
+    TripleDouble x = td_from_terms(v, 6);
+    if (x.x[0] < 0.0) {
+        x = td_neg(x);                                    /* cos is even */
+    }
+    TripleDouble c;
+    if (x.x[0] <= ELLIPTIC_QUARTER_PI_HI) {
+        c = td_sin_cos_series(x, 0);                      /* |x| <= pi/4 */
+    } else {
+        /* cos x = sin(pi/2 - x) */
+        double w[6] = {-x.x[2], -x.x[1], -x.x[0], 0.5 * PI_LOLO, 0.5 * PI_LO, 0.5 * PI_HI};
+        c = td_sin_cos_series(td_from_terms(w, 6), 1);
+    }
+    /* q^2 = hs^2 den / num: hs^2 exact as a two-product */
+    const EllipticDD hs2 = elliptic_two_prod(half_speed, half_speed);
+    const EllipticDD a = elliptic_two_prod(hs2.hi, w0sq_den), b = elliptic_two_prod(hs2.lo, w0sq_den);
+    if (!(fabs(a.hi) > 0x1p-800 && fabs(a.hi) < 0x1p800) || !(w0sq_num.hi > 0x1p-800 && w0sq_num.hi < 0x1p800)) {
+        return -1;                                        /* a product could lose bits */
+    }
+    double u[4] = {b.lo, b.hi, a.lo, a.hi};
+    TripleDouble num = {{w0sq_num.hi, w0sq_num.lo, 0.0}};
+    const TripleDouble q2 = td_div(td_from_terms(u, 4), num);
+    const TripleDouble diff = td_add(td_mul(c, c), td_neg(q2));
+    if (!isfinite(diff.x[0]) || !isfinite(diff.x[1])) {
+        return -1;
+    }
+    *m1 = elliptic_two_sum(diff.x[0], diff.x[1] + diff.x[2]);
+    return 0;
+}
+
 /* The solution for w0 in double-double (w0.hi > 0 finite); see pendulum_exact_init. */
 static int exact_init_dd(PendulumExact *ex, double theta0, double omega0, EllipticDD w0, double t0,
                          double g, double L)
@@ -192,11 +337,20 @@ static int exact_init_dd(PendulumExact *ex, double theta0, double omega0, Ellipt
     const EllipticDD c_w = elliptic_dd_mul(c, w_n);
     const EllipticDD gap = dd_sub(c_w, elliptic_dd(hs_n));         /* = w_n (c - |q|) */
     EllipticDD rate_n;                                     /* rate of u, scaled by 2^-exponent */
+    /* Within 2^-30 of the separatrix speed, m1 itself in triple-double (above): its sign
+     * decides the regime and its digits the period. */
+    EllipticDD m1_fine = elliptic_dd(0.0);
+    int fine = 0;
+    if (fabs(gap.hi) < 0x1p-30 * hs_n) {
+        const EllipticDD num = g > 0.0 ? elliptic_dd(g) : elliptic_two_prod(w0.hi, w0.hi);
+        fine = m1_near_separatrix(theta0, turns, half_speed, num, g > 0.0 ? L : 1.0, &m1_fine) == 0;
+    }
+    const double side = fine ? m1_fine.hi : gap.hi;        /* the sign of m1 */
 
-    if (gap.hi > 0.0) {
+    if (side > 0.0) {
         /* Libration: w_n >= 1/2 here, q = |omega0| / (2 w0) <= c <= 1. */
         EllipticDD q = elliptic_dd_div(elliptic_dd(hs_n), w_n);
-        EllipticDD m1 = elliptic_dd_mul(elliptic_dd_div(gap, w_n), elliptic_dd_add(c, q));
+        EllipticDD m1 = fine ? m1_fine : elliptic_dd_mul(elliptic_dd_div(gap, w_n), elliptic_dd_add(c, q));
         if (m1.hi > 0.0) {
             e.regime = PENDULUM_LIBRATION;
             double k = hypot(s.hi, q.hi);        /* sqrt(m) = sqrt(s^2 + q^2), no underflow */
@@ -228,7 +382,7 @@ static int exact_init_dd(PendulumExact *ex, double theta0, double omega0, Ellipt
         } else {
             init_separatrix(&e, s, c, omega0, w0);   /* m1 underflowed: treat as m1 == 0 */
         }
-    } else if (gap.hi < 0.0) {
+    } else if (side < 0.0) {
         /* Rotation (omega0 != 0 here). Ratios to |omega0|/2: rho = s/|q|, gamma = c/|q| < 1
          * (hs_n > c w_n, and c >= ~1e-33, so hs_n is not tiny). */
         e.regime = PENDULUM_ROTATION;
@@ -241,6 +395,12 @@ static int exact_init_dd(PendulumExact *ex, double theta0, double omega0, Ellipt
         /* mu1 = -m1/m = (q^2 - c^2)/(q^2 + s^2) = (1 - gamma)(1 + gamma)/(1 + rho^2). */
         EllipticDD mu1 = elliptic_dd_div(
             elliptic_dd_mul(one_minus_gamma, elliptic_dd_add(elliptic_dd(1.0), gamma)), one_plus_rho2);
+        if (fine) {
+            /* mu1 = -m1 mu, mu = (w_n / hs)^2 / (1 + rho^2) */
+            const EllipticDD w_hs_dd = elliptic_dd_div(w_n, hs);
+            mu1 = elliptic_dd_mul(elliptic_dd_neg(m1_fine),
+                                  elliptic_dd_div(elliptic_dd_mul(w_hs_dd, w_hs_dd), one_plus_rho2));
+        }
         /* mu = 1/m = 1/(q^2 (1 + rho^2)). */
         double w_hs = w_n.hi / hs_n;
         double mu = fmin(w_hs * w_hs / one_plus_rho2.hi, 1.0);

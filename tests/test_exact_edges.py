@@ -17,6 +17,7 @@ from fmpy.fmi1 import FMICallException
 
 from pendulum_fmu.exact_port import ExactPort
 from test_exact_mpmath import closed_form, max_abs_diff
+from test_exact_properties import errors
 
 THETA_TOL = 5e-14
 """theta (rad), relative to max(1, |theta|)."""
@@ -118,3 +119,30 @@ def test_initial_state_bit_for_bit(port: ExactPort, theta0: float, omega0: float
     theta, omega = port.evaluate([t0])
     assert theta[0] == theta0 and omega[0] == omega0
     assert math.copysign(1.0, omega[0]) == math.copysign(1.0, omega0)
+
+
+def separatrix_neighbours(state: tuple[float, float, float, float, float],
+                          ulps: tuple[int, ...]) -> list[tuple[float, float, float, float, float]]:
+    """The state with omega0 moved to the separatrix speed (rounded) and `ulps` ulps beside it."""
+    theta0, omega0, length, gravity, t0 = state
+    with mp.workdps(50):
+        speed = float(2 * mp.sqrt(mp.mpf(gravity) / mp.mpf(length)) * abs(mp.cos(mp.mpf(theta0) / 2)))
+    neighbours = []
+    for count in ulps:
+        omega = speed
+        for _ in range(abs(count)):
+            omega = math.nextafter(omega, math.inf if count > 0 else 0.0)
+        neighbours.append((theta0, math.copysign(omega, omega0), length, gravity, t0))
+    return neighbours
+
+
+DEFECT_3 = (-8.590185225219782, -0.00015596141618645683, 101418.16746011787, 0.003754548068946949, 1000.0)
+
+
+@pytest.mark.parametrize("state", [DEFECT_3, *separatrix_neighbours(DEFECT_3, (-3, -1, 0, 1, 3))],
+                         ids=["issue", "-3 ulps", "-1 ulp", "rounded", "+1 ulp", "+3 ulps"])
+def test_next_to_the_separatrix_after_a_million_periods(
+        port: ExactPort, state: tuple[float, float, float, float, float]) -> None:
+    """Defect 3: 5e-14 after 1e6 periods next to the separatrix (was 1.6e-10, 3.1e-9 beside it)."""
+    theta_error, _ = errors(port, state, (1e6 + 0.37,))
+    assert theta_error <= 5e-14
