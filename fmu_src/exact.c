@@ -510,6 +510,26 @@ int pendulum_exact_resolvable(const PendulumExact *ex, double t)
 static double phase_quarters(const PendulumExact *ex, double t, EllipticDD *N)
 {
     EllipticDD tau = elliptic_two_sum(t, -ex->t0);
+    const double x_hi = ex->rho_hi * tau.hi;
+    if (fabs(x_hi) < 0x1p50) {
+        /* Up to 2^50 quarter periods the cross terms rho_hi tau.lo, rho_lo tau.hi stay below
+         * 1/8 and need no integer split: the exact product rho_hi tau.hi = x_hi + x_lo, with
+         * rho_hi split once in init (Dekker) or by the fma, is all the work. */
+#ifdef FP_FAST_FMA
+        const double x_lo = fma(ex->rho_hi, tau.hi, -x_hi);
+#else
+        const double tau_split = 134217729.0 * tau.hi;          /* Veltkamp split of tau.hi */
+        const double tau_head = tau_split - (tau_split - tau.hi), tau_tail = tau.hi - tau_head;
+        const double x_lo = ((ex->rho_head * tau_head - x_hi) + ex->rho_head * tau_tail
+                             + ex->rho_tail * tau_head) + ex->rho_tail * tau_tail;
+#endif
+        const double quarters = elliptic_nearest_integer(x_hi + ex->x0_hi);
+        *N = elliptic_dd(quarters);
+        /* x_hi - quarters is exact once quarters exceeds a few (Sterbenz); below, all is small */
+        const double fraction = ((x_hi - quarters) + ex->x0_hi)
+                                + (x_lo + (ex->rho_hi * tau.lo + ex->rho_lo * tau.hi) + ex->x0_lo);
+        return fraction;
+    }
     double rho_hi = ex->rho_hi, rho_lo = ex->rho_lo;
     if (fabs(tau.hi) > 0x1p900) {
         /* keep Dekker's split (|x| < 2^995) in range; rho is then tiny, so this is exact */

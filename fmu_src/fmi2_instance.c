@@ -265,6 +265,10 @@ const char *model_get_real(const ModelData *data, fmi2ValueReference vr, double 
             *value = pendulum_exact_period(&exact); /* +inf on the separatrix */
         } else {
             double theta, omega;
+            if (!pendulum_exact_resolvable(&exact, data->time)) {
+                return "the exact solution is not representable in double precision at this time: more than "
+                       "2^60 quarter periods from the start time, the phase is not resolved (rate held to 104 bits)";
+            }
             pendulum_exact_eval(&exact, data->time, &theta, &omega);
             *value = vr == VR_THETA_EXACT ? theta : omega;
         }

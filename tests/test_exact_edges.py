@@ -68,6 +68,9 @@ def test_beyond_the_resolved_phase_is_refused(port: ExactPort) -> None:
     port.initialize(1.0, 0.0, 1.0, 1.0)
     with pytest.raises(FMICallException):
         port.evaluate([1e300])
+    port.initialize(1.0, 0.0, 1.0, 1.0)
+    with pytest.raises(FMICallException):
+        port.evaluate([2.0**62])           # just beyond 2^60 quarter periods (w0 = 1)
 
 
 # defect 2: states within rounding of the separatrix, regime decided by the doubles L, g
