@@ -7,7 +7,11 @@
  * be tol per unit of w0 t (local error per unit time ~ tol, so the global error grows
  * like tol * w0 t) gives
  *     h = (120 tol)^(1/4) / w0,   capped at 0.5 / w0.
- * At tol = 1e-8 this is h w0 = 0.033 (about 190 steps per small-amplitude period).
+ * The motion's own scales refine it (integrator.c): w0 becomes the rate r (sqrt(m) w0 in
+ * rotation), tol is scaled by the closeness c to the separatrix and by RK4_TOL_FACTOR, the
+ * measured margin for the global error over ten periods (tests/c/test_solver_tolerance.c):
+ *     h = min((30 tol c)^(1/4), 0.5) / r.
+ * At tol = 1e-8 and small amplitudes this is h w0 = 0.023 (about 270 steps a period).
  *
  * Output: the internal steps never land on the output times; values in between come
  * from quintic Hermite interpolation of theta using theta, theta' = omega and

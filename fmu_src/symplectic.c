@@ -19,6 +19,10 @@
  * a safety factor 0.8 covers the larger error of big amplitudes (whose motion has
  * higher harmonics: at 80 deg the error is ~6x the harmonic estimate, and 0.8^8 = 0.17):
  *     h = 0.8 (tol / C)^(1/8) / w0,   capped at 1 / w0 (tol > ~2e-6).
+ * The motion's own scales refine it (integrator.c): w0 becomes the rate r (sqrt(m) w0 in
+ * rotation), tol is scaled by the closeness c to the separatrix and by SYMP_TOL_FACTOR, the
+ * measured margin for the global error over ten periods (the interpolant's included):
+ *     h = min(0.8 (1e-3 tol c / C)^(1/8), 1) / r.
  *
  * Output: Hermite interpolation of degree 7 for theta from theta, theta' = omega,
  * theta'' = -w0^2 sin(theta) and theta''' = -w0^2 cos(theta) omega at both ends of the
