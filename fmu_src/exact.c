@@ -65,7 +65,7 @@ static EllipticDD dd_ldexp(EllipticDD x, int exponent)
     return x;
 }
 
-static void init_separatrix(PendulumExact *e, EllipticDD s, EllipticDD c, double omega0, double w0)
+static void init_separatrix(PendulumExact *e, EllipticDD s, EllipticDD c, double omega0, EllipticDD w0)
 {
     e->regime = PENDULUM_SEPARATRIX;
     e->m = 1.0;
@@ -74,9 +74,9 @@ static void init_separatrix(PendulumExact *e, EllipticDD s, EllipticDD c, double
     e->kc = 0.0;
     e->K_hi = INFINITY;
     e->K_lo = 0.0;
-    e->scale = w0;
-    e->scale_lo = 0.0;
-    e->omega_half = w0;
+    e->scale = w0.hi;
+    e->scale_lo = w0.lo;
+    e->omega_half = w0.hi;
     e->period = INFINITY;
     (void)elliptic_param_init(&e->ell, 1.0, 0.0, 0.0);   /* K = +inf; cannot fail */
     if (omega0 == 0.0) {
@@ -89,28 +89,221 @@ static void init_separatrix(PendulumExact *e, EllipticDD s, EllipticDD c, double
     }
 }
 
-int pendulum_exact_init(PendulumExact *ex, double theta0, double omega0, double w0, double t0)
+/* 1/(2 pi) in 24-bit chunks: 1/(2 pi) = sum_i INV_2PI_BITS[i] 2^(-24 (i + 1)), 1248 bits
+ * (generated with mpmath at 1400 bits), enough for every finite double (Payne & Hanek,
+ * "Radian reduction for trigonometric functions", SIGNUM Newsletter 18 (1983) 19-24). */
+static const double INV_2PI_BITS[] = {
+    0x28BE60, 0xDB9391, 0x054A7F, 0x09D5F4, 0x7D4D37, 0x7036D8, 0xA5664F, 0x10E410, 0x7F9458,
+    0xEAF7AE, 0xF1586D, 0xC91B8E, 0x909374, 0xB80192, 0x4BBA82, 0x746487, 0x3F877A, 0xC72C4A,
+    0x69CFBA, 0x208D7D, 0x4BAED1, 0x213A67, 0x1C09AD, 0x17DF90, 0x4E6475, 0x8E60D4, 0xCE7D27,
+    0x2117E2, 0xEF7E4A, 0x0EC7FE, 0x25FFF7, 0x816603, 0xFBCBC4, 0x62D682, 0x9B47DB, 0x4D9FB3,
+    0xC9F2C2, 0x6DD3D1, 0x8FD9A7, 0x97FA8B, 0x5D49EE, 0xB1FAF9, 0x7C5ECF, 0x41CE7D, 0xE294A4,
+    0xBA9AFE, 0xD7EC47, 0xE35742, 0x1580CC, 0x11BF1E, 0xDAEAFC, 0x33EF08};
+#define INV_2PI_CHUNKS ((int)(sizeof INV_2PI_BITS / sizeof INV_2PI_BITS[0]))
+
+/* theta mod 2 pi for a large |theta| (any finite double), as a double-double in about
+ * [-pi, pi], and the number of whole turns (rounded; only its size matters to the caller).
+ * theta = M 2^E with M < 2^53 split into three 24-bit digits M_j; theta / (2 pi) is the sum of
+ * the exact products M_j INV_2PI_BITS[i] 2^(E + 24 j - 24 (i + 1)): the terms that are whole
+ * numbers are whole turns and dropped, of the others only the fraction is kept (exact), down
+ * to 2^-170; the sum of fractions times 2 pi is the angle, to ~1e-31 rad. */
+static EllipticDD reduce_large_angle(double theta, double *turns)
 {
-    if (ex == NULL || !isfinite(theta0) || !isfinite(omega0) || !isfinite(w0) || !isfinite(t0)
-        || !(w0 > 0.0)) {
+    int exponent;
+    const double mantissa = ldexp(frexp(fabs(theta), &exponent), 53);   /* an integer < 2^53 */
+    const int E = exponent - 53;
+    double digit[3];
+    digit[0] = fmod(mantissa, 0x1p24);
+    digit[1] = fmod((mantissa - digit[0]) * 0x1p-24, 0x1p24);
+    digit[2] = (mantissa - digit[0] - digit[1] * 0x1p24) * 0x1p-48;
+    EllipticDD fraction = elliptic_dd(0.0);
+    for (int i = 0; i < INV_2PI_CHUNKS; ++i) {
+        for (int j = 2; j >= 0; --j) {
+            const int power = E + 24 * j - 24 * (i + 1);
+            if (power >= 0 || power < -170) {
+                continue;   /* a whole number of turns, or below 2^-122 in all */
+            }
+            const double term = ldexp(digit[j] * INV_2PI_BITS[i], power);   /* exact: < 2^48 bits */
+            fraction = elliptic_dd_add(fraction, elliptic_dd(term - nearbyint(term)));
+        }
+    }
+    fraction = elliptic_dd_add(fraction, elliptic_dd(-nearbyint(fraction.hi)));   /* |f| <= 1/2 */
+    EllipticDD two_pi = elliptic_two_sum(2.0 * PI_HI, 2.0 * PI_LO);
+    EllipticDD angle = elliptic_dd_mul(fraction, two_pi);
+    if (theta < 0.0) {
+        angle = elliptic_dd_neg(angle);
+    }
+    *turns = nearbyint((theta - angle.hi) / (2.0 * PI_HI));
+    return angle;
+}
+
+
+/* ---------------------------------------------------------------------------------------
+ * Triple-double, only for m1 next to the separatrix. There m1 = c^2 - q^2 (c = cos(th/2),
+ * q = |omega0| / (2 w0)) cancels: with c and q in double-double (absolute error ~1e-32) a
+ * state within 1e-13 of the separatrix kept only ~18 digits of m1, and the period, hence the
+ * phase after 1e6 periods, inherited the rest (1.9e-12 rad). A value is an expansion
+ * x[0] + x[1] + x[2] (relative error ~2^-150), formed by error-free transformations and
+ * renormalised by repeated vector sums (Ogita, Rump & Oishi, SIAM J. Sci. Comput. 26 (2005)
+ * 1955-1988, Algorithm 4.8, SumK with K = 3), which run only once per initial state.
+ * --------------------------------------------------------------------------------------- */
+typedef struct {
+    double x[3];
+} TripleDouble;
+
+/* Takes an accurate double out of the sum of v[0..n-1] and leaves the rest in v (exactly). */
+static double take_leading(double *v, int n)
+{
+    for (int pass = 0; pass < 3; ++pass) {
+        for (int i = 1; i < n; ++i) {
+            const EllipticDD t = elliptic_two_sum(v[i], v[i - 1]);
+            v[i] = t.hi;
+            v[i - 1] = t.lo;
+        }
+    }
+    const double leading = v[n - 1];
+    v[n - 1] = 0.0;
+    return leading;
+}
+
+static TripleDouble td_from_terms(double *v, int n)
+{
+    TripleDouble r;
+    for (int i = 0; i < 3; ++i) {
+        r.x[i] = take_leading(v, n);
+    }
+    return r;
+}
+
+static TripleDouble td_add(TripleDouble a, TripleDouble b)
+{
+    double v[6] = {a.x[2], b.x[2], a.x[1], b.x[1], a.x[0], b.x[0]};
+    return td_from_terms(v, 6);
+}
+
+static TripleDouble td_neg(TripleDouble a)
+{
+    for (int i = 0; i < 3; ++i) {
+        a.x[i] = -a.x[i];
+    }
+    return a;
+}
+
+static TripleDouble td_mul(TripleDouble a, TripleDouble b)
+{
+    /* products of order <= 2 exactly (two-products), of order 3 rounded (~2^-159) */
+    double v[14];
+    int n = 0;
+    v[n++] = a.x[1] * b.x[2];
+    v[n++] = a.x[2] * b.x[1];
+    for (int order = 2; order >= 0; --order) {
+        for (int i = 0; i <= order; ++i) {
+            const EllipticDD p = elliptic_two_prod(a.x[i], b.x[order - i]);
+            v[n++] = p.lo;
+            v[n++] = p.hi;
+        }
+    }
+    return td_from_terms(v, n);
+}
+
+static TripleDouble td_of(double x)
+{
+    TripleDouble r = {{x, 0.0, 0.0}};
+    return r;
+}
+
+/* a / b by long division: three quotient digits, each from the remainder so far */
+static TripleDouble td_div(TripleDouble a, TripleDouble b)
+{
+    double q[3];
+    TripleDouble r = a;
+    for (int i = 0; i < 3; ++i) {
+        q[i] = r.x[0] / b.x[0];
+        r = td_add(r, td_neg(td_mul(b, td_of(q[i]))));
+    }
+    double v[3] = {q[2], q[1], q[0]};
+    return td_from_terms(v, 3);
+}
+
+/* sin y (odd = 1) or cos y (odd = 0) for |y| <= pi/4 + small, Maclaurin series (A&S 4.3.65-66) */
+static TripleDouble td_sin_cos_series(TripleDouble y, int odd)
+{
+    const TripleDouble y2 = td_mul(y, y);
+    TripleDouble term = odd ? y : td_of(1.0), sum = term;
+    for (int k = odd; k < 60; k += 2) {
+        term = td_div(td_mul(term, y2), td_of(-(double)(k + 1) * (double)(k + 2)));
+        sum = td_add(sum, term);
+        if (fabs(term.x[0]) < 1e-52 * fabs(sum.x[0])) {
+            break;
+        }
+    }
+    return sum;
+}
+
+/* m1 = cos^2(th/2) - q^2 to ~1e-45 absolute, th = theta0 - 2 pi turns (|theta0| < 2^50,
+ * th in about (-pi, pi]), q^2 = (|omega0|/2)^2 / w0sq with w0sq = numerator / denominator
+ * given exactly (g / L, or w0^2 as a double-double from w0). Returns 0, or -1 when the
+ * squares leave the range where every product is exact. */
+static int m1_near_separatrix(double theta0, double turns, double half_speed, EllipticDD w0sq_num,
+                              double w0sq_den, EllipticDD *m1)
+{
+    if (!(half_speed > 0x1p-400 && half_speed < 0x1p400) || !(fabs(theta0) < 0x1p50)) {
         return -1;
     }
+    /* th/2 = theta0/2 - pi turns, pi in three parts, products exact (j < 2^49) */
+    const EllipticDD p_hi = elliptic_two_prod(turns, PI_HI), p_lo = elliptic_two_prod(turns, PI_LO);
+    double v[6] = {-turns * PI_LOLO, -p_lo.lo, -p_lo.hi, -p_hi.lo, -p_hi.hi, 0.5 * theta0};
+    TripleDouble x = td_from_terms(v, 6);
+    if (x.x[0] < 0.0) {
+        x = td_neg(x);                                    /* cos is even */
+    }
+    TripleDouble c;
+    if (x.x[0] <= ELLIPTIC_QUARTER_PI_HI) {
+        c = td_sin_cos_series(x, 0);                      /* |x| <= pi/4 */
+    } else {
+        /* cos x = sin(pi/2 - x) */
+        double w[6] = {-x.x[2], -x.x[1], -x.x[0], 0.5 * PI_LOLO, 0.5 * PI_LO, 0.5 * PI_HI};
+        c = td_sin_cos_series(td_from_terms(w, 6), 1);
+    }
+    /* q^2 = hs^2 den / num: hs^2 exact as a two-product */
+    const EllipticDD hs2 = elliptic_two_prod(half_speed, half_speed);
+    const EllipticDD a = elliptic_two_prod(hs2.hi, w0sq_den), b = elliptic_two_prod(hs2.lo, w0sq_den);
+    if (!(fabs(a.hi) > 0x1p-800 && fabs(a.hi) < 0x1p800) || !(w0sq_num.hi > 0x1p-800 && w0sq_num.hi < 0x1p800)) {
+        return -1;                                        /* a product could lose bits */
+    }
+    double u[4] = {b.lo, b.hi, a.lo, a.hi};
+    TripleDouble num = {{w0sq_num.hi, w0sq_num.lo, 0.0}};
+    const TripleDouble q2 = td_div(td_from_terms(u, 4), num);
+    const TripleDouble diff = td_add(td_mul(c, c), td_neg(q2));
+    if (!isfinite(diff.x[0]) || !isfinite(diff.x[1])) {
+        return -1;
+    }
+    *m1 = elliptic_two_sum(diff.x[0], diff.x[1] + diff.x[2]);
+    return 0;
+}
+
+/* The solution for w0 in double-double (w0.hi > 0 finite); see pendulum_exact_init. */
+static int exact_init_dd(PendulumExact *ex, double theta0, double omega0, EllipticDD w0, double t0,
+                         double g, double L)
+{
     PendulumExact e;
     memset(&e, 0, sizeof e);
-    e.w0 = w0;
+    e.w0 = w0.hi;
+    e.w0_lo = w0.lo;
+    e.g = g;
+    e.L = L;
     e.t0 = t0;
     e.theta0 = theta0;
+    e.omega0 = omega0;
     e.direction = 1.0;
 
     /* theta0 = 2 pi j + th, th in (-pi, pi] (double-double). One subtraction of whole turns
-     * does it for |theta0| < 2^52; up to 2^60 j = nearest(theta0 / 2 pi) is itself rounded and
-     * a second round finishes. From 2^60 on theta0 no longer resolves an angle (its ulp is
-     * 256 rad): the exact remainder modulo the double 2 pi keeps everything finite there. */
+     * does it for |theta0| < 2^50 (j < 2^48, j 2 pi exact in three parts); beyond, the
+     * reduction with 1/(2 pi) to 1248 bits (Payne-Hanek, above) for every finite double. */
     double turns = 0.0;
     EllipticDD th = elliptic_dd(theta0);
-    if (fabs(theta0) >= 0x1p60) {
-        th = elliptic_dd(fmod(theta0, 2.0 * PI_HI));
-        turns = nearbyint((theta0 - th.hi) / (2.0 * PI_HI));
+    if (fabs(theta0) >= 0x1p50) {
+        th = reduce_large_angle(theta0, &turns);
     }
     for (int round = 0; round < 8 && !(fabs(th.hi) <= 3.2); ++round) {
         const double j = nearbyint(th.hi / (2.0 * PI_HI));
@@ -137,17 +330,27 @@ int pendulum_exact_init(PendulumExact *ex, double theta0, double omega0, double 
      * Rates come back to seconds by the inverse power of two. */
     const double half_speed = 0.5 * fabs(omega0);          /* |omega0| / 2, exact */
     int exponent;
-    (void)frexp(fmax(w0, half_speed), &exponent);
-    const double w_n = ldexp(w0, -exponent), hs_n = ldexp(half_speed, -exponent);
+    (void)frexp(fmax(w0.hi, half_speed), &exponent);
+    const EllipticDD w_n = dd_ldexp(w0, -exponent);
+    const double hs_n = ldexp(half_speed, -exponent);
     /* Sign of m1 = cos^2(th/2) - q^2 is that of w0 c - |omega0|/2, formed exactly enough. */
-    const EllipticDD c_w = elliptic_dd_mul(c, elliptic_dd(w_n));
+    const EllipticDD c_w = elliptic_dd_mul(c, w_n);
     const EllipticDD gap = dd_sub(c_w, elliptic_dd(hs_n));         /* = w_n (c - |q|) */
     EllipticDD rate_n;                                     /* rate of u, scaled by 2^-exponent */
+    /* Within 2^-30 of the separatrix speed, m1 itself in triple-double (above): its sign
+     * decides the regime and its digits the period. */
+    EllipticDD m1_fine = elliptic_dd(0.0);
+    int fine = 0;
+    if (fabs(gap.hi) < 0x1p-30 * hs_n) {
+        const EllipticDD num = g > 0.0 ? elliptic_dd(g) : elliptic_two_prod(w0.hi, w0.hi);
+        fine = m1_near_separatrix(theta0, turns, half_speed, num, g > 0.0 ? L : 1.0, &m1_fine) == 0;
+    }
+    const double side = fine ? m1_fine.hi : gap.hi;        /* the sign of m1 */
 
-    if (gap.hi > 0.0) {
+    if (side > 0.0) {
         /* Libration: w_n >= 1/2 here, q = |omega0| / (2 w0) <= c <= 1. */
-        EllipticDD q = elliptic_dd_div(elliptic_dd(hs_n), elliptic_dd(w_n));
-        EllipticDD m1 = elliptic_dd_mul(elliptic_dd_div(gap, elliptic_dd(w_n)), elliptic_dd_add(c, q));
+        EllipticDD q = elliptic_dd_div(elliptic_dd(hs_n), w_n);
+        EllipticDD m1 = fine ? m1_fine : elliptic_dd_mul(elliptic_dd_div(gap, w_n), elliptic_dd_add(c, q));
         if (m1.hi > 0.0) {
             e.regime = PENDULUM_LIBRATION;
             double k = hypot(s.hi, q.hi);        /* sqrt(m) = sqrt(s^2 + q^2), no underflow */
@@ -161,10 +364,10 @@ int pendulum_exact_init(PendulumExact *ex, double theta0, double omega0, double 
             e.kc = e.ell.kc;
             e.K_hi = e.ell.K_hi;
             e.K_lo = e.ell.K_lo;
-            e.scale = w0;
-            e.scale_lo = 0.0;
-            rate_n = elliptic_dd(w_n);
-            e.omega_half = k * w0;
+            e.scale = w0.hi;
+            e.scale_lo = w0.lo;
+            rate_n = w_n;
+            e.omega_half = k * w0.hi;
             e.sqrt_k1 = k / (1.0 + e.ell.kc);   /* sqrt(k_1) = k / (1 + k'), no underflow of k^2 */
             if (k == 0.0) {
                 e.u0 = 0.0;                          /* at rest at the bottom: theta = 0 */
@@ -179,21 +382,27 @@ int pendulum_exact_init(PendulumExact *ex, double theta0, double omega0, double 
         } else {
             init_separatrix(&e, s, c, omega0, w0);   /* m1 underflowed: treat as m1 == 0 */
         }
-    } else if (gap.hi < 0.0) {
+    } else if (side < 0.0) {
         /* Rotation (omega0 != 0 here). Ratios to |omega0|/2: rho = s/|q|, gamma = c/|q| < 1
          * (hs_n > c w_n, and c >= ~1e-33, so hs_n is not tiny). */
         e.regime = PENDULUM_ROTATION;
         e.direction = omega0 > 0.0 ? 1.0 : -1.0;
         const EllipticDD hs = elliptic_dd(hs_n);
-        EllipticDD rho = elliptic_dd_div(elliptic_dd_mul(s, elliptic_dd(w_n)), hs);
+        EllipticDD rho = elliptic_dd_div(elliptic_dd_mul(s, w_n), hs);
         EllipticDD one_plus_rho2 = elliptic_dd_add(elliptic_dd(1.0), elliptic_dd_mul(rho, rho));
         EllipticDD one_minus_gamma = elliptic_dd_div(elliptic_dd_neg(gap), hs);  /* (|q| - c)/|q| */
         EllipticDD gamma = elliptic_dd_div(c_w, hs);
         /* mu1 = -m1/m = (q^2 - c^2)/(q^2 + s^2) = (1 - gamma)(1 + gamma)/(1 + rho^2). */
         EllipticDD mu1 = elliptic_dd_div(
             elliptic_dd_mul(one_minus_gamma, elliptic_dd_add(elliptic_dd(1.0), gamma)), one_plus_rho2);
+        if (fine) {
+            /* mu1 = -m1 mu, mu = (w_n / hs)^2 / (1 + rho^2) */
+            const EllipticDD w_hs_dd = elliptic_dd_div(w_n, hs);
+            mu1 = elliptic_dd_mul(elliptic_dd_neg(m1_fine),
+                                  elliptic_dd_div(elliptic_dd_mul(w_hs_dd, w_hs_dd), one_plus_rho2));
+        }
         /* mu = 1/m = 1/(q^2 (1 + rho^2)). */
-        double w_hs = w_n / hs_n;
+        double w_hs = w_n.hi / hs_n;
         double mu = fmin(w_hs * w_hs / one_plus_rho2.hi, 1.0);
         if (elliptic_param_init(&e.ell, mu, mu1.hi, mu1.lo) != 0) {
             return -1;
@@ -237,49 +446,145 @@ int pendulum_exact_init(PendulumExact *ex, double theta0, double omega0, double 
     return 0;
 }
 
-/* Phase in quarter periods: x = (scale (t - t0) + u0) / K = rho (t - t0) + x0, split as
- * x = n + f with n the nearest integer and |f| <= 1/2; returns f, sets *n. rho tau.hi is
- * exact (Dekker's product, rho split once in init) and rho, x0 are double-double, so f keeps
- * its absolute accuracy for n in the millions. Then u = n K + f K (A&S 16.8 needs n mod 4).
- * Without a hardware fma the split tau = tau_head + tau_tail is Veltkamp's (no fma, so no
- * contraction can touch it). */
-static double phase_quarters(const PendulumExact *ex, double t, double *n)
+int pendulum_exact_init(PendulumExact *ex, double theta0, double omega0, double w0, double t0)
 {
-    const EllipticDD tau = elliptic_two_sum(t, -ex->t0);
-    const double x_hi = ex->rho_hi * tau.hi;
-    if (!(fabs(tau.hi) < 0x1p995 && fabs(x_hi) < 0x1p52)) {
-        /* More than 2^52 quarter periods (or a non-finite t): doubles cannot resolve the
-         * phase there; stay finite for a finite t, NaN for a NaN or infinite one. */
-        *n = 0.0;
-        return tau.hi - tau.hi;
+    if (ex == NULL || !isfinite(theta0) || !isfinite(omega0) || !isfinite(w0) || !isfinite(t0)
+        || !(w0 > 0.0)) {
+        return -1;
     }
+    return exact_init_dd(ex, theta0, omega0, elliptic_dd(w0), t0, 0.0, 0.0);
+}
+
+int pendulum_exact_init_gl(PendulumExact *ex, double theta0, double omega0, double g, double L, double t0)
+{
+    if (ex == NULL || !isfinite(theta0) || !isfinite(omega0) || !isfinite(t0) || !isfinite(g)
+        || !isfinite(L) || !(g > 0.0) || !(L > 0.0)) {
+        return -1;
+    }
+    /* w0 = sqrt(g / L) in double-double from the doubles g and L as given: the regime is then
+     * the one of those doubles, not of fl(sqrt(fl(g / L))) (whose two roundings moved states
+     * within ~1e-16 of the separatrix to the other side). Scaled by powers of two so that
+     * neither the quotient nor Dekker's split overflows or underflows. */
+    int eg, eL;
+    const double gm = frexp(g, &eg), Lm = frexp(L, &eL);
+    int shift = eg - eL;                               /* g / L = (gm / Lm) 2^shift */
+    if (shift & 1) {
+        shift -= 1;                                    /* even, so that the root halves it */
+    }
+    const EllipticDD ratio = elliptic_dd_div(elliptic_dd(ldexp(gm, eg - eL - shift)), elliptic_dd(Lm));
+    EllipticDD w0 = dd_ldexp(elliptic_dd_sqrt(ratio), shift / 2);
+    if (!(w0.hi > 0.0) || !isfinite(w0.hi)) {
+        return -1;                                     /* g / L overflows or underflows */
+    }
+    return exact_init_dd(ex, theta0, omega0, w0, t0, g, L);
+}
+
+int pendulum_exact_same(const PendulumExact *ex)
+{
+    PendulumExact fresh;
+    int status = ex->g != 0.0 || ex->L != 0.0
+                     ? pendulum_exact_init_gl(&fresh, ex->theta0, ex->omega0, ex->g, ex->L, ex->t0)
+                     : pendulum_exact_init(&fresh, ex->theta0, ex->omega0, ex->w0, ex->t0);
+    return status == 0 && memcmp(&fresh, ex, sizeof fresh) == 0;
+}
+
+int pendulum_exact_resolvable(const PendulumExact *ex, double t)
+{
+    const double tau = t - ex->t0;
+    if (!isfinite(tau)) {
+        return 0;
+    }
+    if (ex->regime == PENDULUM_SEPARATRIX) {
+        return 1;
+    }
+    return fabs(ex->rho_hi * tau) <= PENDULUM_EXACT_MAX_QUARTERS;
+}
+
+/* Phase in quarter periods: x = (scale (t - t0) + u0) / K = rho (t - t0) + x0 with rho, x0 in
+ * double-double and t - t0 = tau exact as a double-double (TwoSum), split as x = N + f with N
+ * an integer (returned as a double-double of two integer-valued doubles, so that it stays
+ * exact beyond 2^53) and |f| <= 1/2 (about); returns f. Every product of the rate and the time
+ * is exact (two-products), and each is split into its nearest integer and a fraction (both
+ * exact), so f keeps its absolute accuracy (~1e-16) up to PENDULUM_EXACT_MAX_QUARTERS, where
+ * the rate's own precision (~2^-102 relative) becomes the limit. */
+static double phase_quarters(const PendulumExact *ex, double t, EllipticDD *N)
+{
+    EllipticDD tau = elliptic_two_sum(t, -ex->t0);
+    const double x_hi = ex->rho_hi * tau.hi;
+    if (fabs(x_hi) < 0x1p50) {
+        /* Up to 2^50 quarter periods the cross terms rho_hi tau.lo, rho_lo tau.hi stay below
+         * 1/8 and need no integer split: the exact product rho_hi tau.hi = x_hi + x_lo, with
+         * rho_hi split once in init (Dekker) or by the fma, is all the work. */
 #ifdef FP_FAST_FMA
-    const double x_lo = fma(ex->rho_hi, tau.hi, -x_hi);
+        const double x_lo = fma(ex->rho_hi, tau.hi, -x_hi);
 #else
-    const double tau_split = 134217729.0 * tau.hi;          /* Veltkamp split of tau.hi */
-    const double tau_head = tau_split - (tau_split - tau.hi), tau_tail = tau.hi - tau_head;
-    const double x_lo = ((ex->rho_head * tau_head - x_hi) + ex->rho_head * tau_tail
-                         + ex->rho_tail * tau_head) + ex->rho_tail * tau_tail;
+        const double tau_split = 134217729.0 * tau.hi;          /* Veltkamp split of tau.hi */
+        const double tau_head = tau_split - (tau_split - tau.hi), tau_tail = tau.hi - tau_head;
+        const double x_lo = ((ex->rho_head * tau_head - x_hi) + ex->rho_head * tau_tail
+                             + ex->rho_tail * tau_head) + ex->rho_tail * tau_tail;
 #endif
-    const double quarters = elliptic_nearest_integer(x_hi + ex->x0_hi);
-    *n = quarters;
-    /* x_hi - quarters is exact once quarters exceeds a few (Sterbenz); below, all is small. */
-    return ((x_hi - quarters) + ex->x0_hi)
-           + (x_lo + (ex->rho_hi * tau.lo + ex->rho_lo * tau.hi) + ex->x0_lo);
+        const double quarters = elliptic_nearest_integer(x_hi + ex->x0_hi);
+        *N = elliptic_dd(quarters);
+        /* x_hi - quarters is exact once quarters exceeds a few (Sterbenz); below, all is small */
+        const double fraction = ((x_hi - quarters) + ex->x0_hi)
+                                + (x_lo + (ex->rho_hi * tau.lo + ex->rho_lo * tau.hi) + ex->x0_lo);
+        return fraction;
+    }
+    double rho_hi = ex->rho_hi, rho_lo = ex->rho_lo;
+    if (fabs(tau.hi) > 0x1p900) {
+        /* keep Dekker's split (|x| < 2^995) in range; rho is then tiny, so this is exact */
+        tau = dd_ldexp(tau, -200);
+        rho_hi = ldexp(rho_hi, 200);
+        rho_lo = ldexp(rho_lo, 200);
+    }
+    const EllipticDD a = elliptic_two_prod(rho_hi, tau.hi);   /* the leading product */
+    const EllipticDD b = elliptic_two_prod(rho_lo, tau.hi);   /* ~2^-53 of it */
+    const EllipticDD c = elliptic_two_prod(rho_hi, tau.lo);   /* ~2^-53 of it */
+    const double n_a = elliptic_nearest_integer(a.hi), n_al = elliptic_nearest_integer(a.lo);
+    const double n_b = elliptic_nearest_integer(b.hi), n_c = elliptic_nearest_integer(c.hi);
+    const double n_x = elliptic_nearest_integer(ex->x0_hi);
+    const double small = ((b.lo + c.lo) + rho_lo * tau.lo) + ex->x0_lo;
+    const double fraction = ((a.hi - n_a) + (ex->x0_hi - n_x))
+                            + (((small + (a.lo - n_al)) + (b.hi - n_b)) + (c.hi - n_c));
+    const double n_f = elliptic_nearest_integer(fraction);
+    /* the small integers sum exactly (each well below 2^50 while |x| <= 2^60) */
+    *N = elliptic_two_sum(n_a, (((n_al + n_b) + n_c) + n_x) + n_f);
+    return fraction - n_f;
+}
+
+/* half_turns pi + angle, for an integer-valued double-double half_turns (|half_turns| < 2^64):
+ * half_turns.hi pi_hi exact (two-product), the remaining products below its rounding. */
+static double add_half_turns(EllipticDD half_turns, double angle)
+{
+    if (half_turns.hi == 0.0 && half_turns.lo == 0.0) {
+        return angle;
+    }
+    const EllipticDD turn = elliptic_two_prod(half_turns.hi, PI_HI);
+    return turn.hi + (turn.lo + (half_turns.hi * PI_LO + (half_turns.lo * PI_HI + angle)));
 }
 
 void pendulum_exact_eval(const PendulumExact *ex, double t, double *theta, double *omega)
 {
-    double angle, om, half_turns = 2.0 * ex->theta_turns;   /* theta = half_turns pi + angle */
+    double angle, om;
+    EllipticDD winding = elliptic_dd(0.0);   /* half turns of a rotation since t0: direction N */
 
+    if (t == ex->t0) {
+        *theta = ex->theta0;   /* the initial state as given, bit for bit */
+        *omega = ex->omega0;
+        return;
+    }
+    if (!pendulum_exact_resolvable(ex, t)) {
+        *theta = *omega = NAN;   /* beyond the resolved phase, or t not finite */
+        return;
+    }
     if (ex->regime == PENDULUM_LIBRATION) {
-        double n;
+        EllipticDD n;
         const double f = phase_quarters(ex, t, &n);
         EllipticHomogeneous h0, h1;                 /* sn r = h0.S / h0.D, ... at levels 0, 1 */
         elliptic_sncndn_homogeneous_pair(&ex->ell, f * ex->K_hi, &h0, &h1);
         /* The quarter n mod 4 picks the formulas of the header comment through exact 0/1
          * weights (x * 0 + y * 1 == y exactly): no data-dependent branch. */
-        const int quarter = elliptic_quarter_of(n);
+        const int quarter = (elliptic_quarter_of(n.hi) + elliptic_quarter_of(n.lo)) & 3;
         const double odd = (double)(quarter & 1), even = 1.0 - odd;
         const double sign = 1.0 - (double)(quarter & 2);          /* -1 for n = 2, 3 mod 4 */
         /* theta/2 = atan2(k sn u, dn u) = 2 atan(sqrt(k_1) sn(u_1 | m_1)) (elliptic.h), and at
@@ -290,22 +595,23 @@ void pendulum_exact_eval(const PendulumExact *ex, double t, double *theta, doubl
         const double cn_num = even * h0.C - odd * (ex->kc * h0.S), den = even * h0.D + odd * h0.E;
         om = 2.0 * (sign * ex->omega_half * (cn_num / den));     /* 2 k w0 cn u */
     } else if (ex->regime == PENDULUM_ROTATION) {
-        double n, S, C, E, D;
+        EllipticDD n;
+        double S, C, E, D;
         const double f = phase_quarters(ex, t, &n);
         elliptic_sncndn_homogeneous(&ex->ell, f * ex->K_hi, &S, &C, &E, &D); /* sn r = S/D, ... */
-        const int quarter = elliptic_quarter_of(n);
+        const int quarter = (elliptic_quarter_of(n.hi) + elliptic_quarter_of(n.lo)) & 3;
         const double odd = (double)(quarter & 1), even = 1.0 - odd;
         /* am(nK + r) - n pi/2 = atan(sn r / cn r) (n even), atan(k' sn r / cn r) (n odd); C > 0
          * for |r| < K, as elliptic_atan_ratio requires */
         const double delta = elliptic_atan_ratio((even + odd * ex->kc) * S, C);
         const double dn_num = even * E + odd * (ex->kc * D), den = even * D + odd * E;
         /* theta = 2 pi j + direction (n pi + 2 delta), omega = 2 sqrt(m) w0 dn(nK + r) */
-        half_turns += ex->direction * n;
+        winding = ex->direction < 0.0 ? elliptic_dd_neg(n) : n;
         angle = 2.0 * ex->direction * delta;
         om = 2.0 * (ex->direction * ex->omega_half * (dn_num / den));
     } else if (ex->direction != 0.0) {
         EllipticDD tau = elliptic_two_sum(t, -ex->t0);
-        double u = ex->scale * (tau.hi + tau.lo) + ex->u0;
+        double u = ex->scale * tau.hi + ((ex->scale * tau.lo + ex->scale_lo * tau.hi) + ex->u0);
         angle = 2.0 * ex->direction * atan(sinh(u));          /* gd(u) */
         om = 2.0 * (ex->direction * (ex->omega_half / cosh(u)));   /* 2 w0 sech u */
     } else {
@@ -313,20 +619,39 @@ void pendulum_exact_eval(const PendulumExact *ex, double t, double *theta, doubl
         om = 0.0;
     }
 
-    /* theta = half_turns * pi + angle, half_turns * pi_hi exact (two-product). */
-    if (half_turns != 0.0) {
-        if (fabs(ex->theta_turns) < 0x1p50 && fabs(half_turns) < 0x1p52) {
-            EllipticDD turn = elliptic_two_prod(half_turns, PI_HI);
-            angle = turn.hi + (turn.lo + (half_turns * PI_LO + angle));
-        } else {
-            /* theta0 or the winding beyond 2^50 rad, where no angle is resolved: theta0 plus
-             * the change since t0 (finite; no two-product of huge numbers). */
-            angle = ex->theta0 + ((half_turns - 2.0 * ex->theta_turns) * PI_HI
-                                  + (angle - ex->theta_reduced));
-        }
+    /* theta = 2 pi j + winding pi + angle, j = theta_turns. */
+    if (fabs(ex->theta_turns) < 0x1p50) {
+        *theta = add_half_turns(elliptic_dd_add(elliptic_dd(2.0 * ex->theta_turns), winding), angle);
+    } else {
+        /* theta0 beyond 2^52 rad, where no angle is resolved (its ulp is 1 rad or more):
+         * theta0 plus the change since t0. */
+        *theta = ex->theta0 + add_half_turns(winding, angle - ex->theta_reduced);
     }
-    *theta = angle;
     *omega = om;
+}
+
+const char *pendulum_exact_qualitative_miss(const PendulumExact *ex, double theta, double omega)
+{
+    /* the libration (and the separatrix motion) is centred on the bottom 2 pi j nearest theta0 */
+    const EllipticDD centre = elliptic_two_prod(2.0 * ex->theta_turns, PI_HI);
+    const double offset = (theta - centre.hi) - (centre.lo + 2.0 * ex->theta_turns * PI_LO);
+    /* past the top by more than half a radian: fallen down the other side, not a rounding-level
+     * excursion of a state released at the top itself (pi as a double lies 1.2e-16 below it) */
+    const double over = PI_HI + 0.5;
+    switch (ex->regime) {
+    case PENDULUM_LIBRATION:
+        return fabs(offset) > over ? "carried the libration over the top" : NULL;
+    case PENDULUM_ROTATION:
+        return ex->direction * omega < 0.0 ? "reversed the rotation" : NULL;
+    default:
+        if (ex->direction == 0.0) {
+            return NULL;   /* at rest on the top: any motion is a rounding-level departure */
+        }
+        if (ex->direction * offset > over) {
+            return "went over the top past the separatrix";
+        }
+        return ex->direction * omega < 0.0 ? "fell back from the separatrix" : NULL;
+    }
 }
 
 double pendulum_exact_period(const PendulumExact *ex)

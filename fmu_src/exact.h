@@ -18,9 +18,11 @@ typedef enum {
 
 typedef struct {
     PendulumRegime regime;
-    double w0;            /* sqrt(g / L), rad/s */
+    double w0, w0_lo;     /* sqrt(g / L), rad/s, in double-double */
+    double g, L;          /* the parameters it was set up from (0, 0: set up from w0) */
     double t0;            /* time at which the initial state is posed */
     double theta0;        /* the initial angle as given */
+    double omega0;        /* the initial angular velocity as given */
     double m, m1;         /* elliptic parameter of the motion and its complement (m1 from the
                              cosine form): m < 1 libration, m1 == 0 separatrix, m > 1 rotation */
     double k, kc;         /* modulus and complementary modulus of the parameter the Jacobi
@@ -51,8 +53,36 @@ typedef struct {
  * Returns 0 on success, -1 if an input is not finite or w0 <= 0 (ex is then untouched). */
 int pendulum_exact_init(PendulumExact *ex, double theta0, double omega0, double w0, double t0);
 
-/* theta(t) and omega(t) of the exact solution; theta is continuous (winds up in rotation). */
+/* The same for the parameters g > 0 and L > 0 as given: w0 = sqrt(g / L) is formed in
+ * double-double, so the solution is the one of theta'' = -(g/L) sin theta for these two
+ * doubles (no rounding of g/L or of its root moves the state across the separatrix).
+ * Returns -1 for a non-finite input, g or L <= 0, or g / L not a normal double's range. */
+int pendulum_exact_init_gl(PendulumExact *ex, double theta0, double omega0, double g, double L, double t0);
+
+/* 1 if *ex is exactly (bytewise) what its own recorded inputs (theta0, omega0, g and L or
+ * w0, t0) set up, 0 otherwise: the check of a solution read from untrusted bytes (an FMU
+ * state blob), which so can never carry a field out of its range. */
+int pendulum_exact_same(const PendulumExact *ex);
+
+/* Most quarter periods from t0 at which the phase is resolved: the rate is held in
+ * double-double (~2^-102 relative), so at 2^60 quarter periods the phase is still known to
+ * ~2^-42 of a quarter period (~1e-13 rad). */
+#define PENDULUM_EXACT_MAX_QUARTERS 0x1p60
+
+/* 1 if t is finite and within PENDULUM_EXACT_MAX_QUARTERS quarter periods of t0 (always on
+ * the separatrix and at rest), 0 otherwise; pendulum_exact_eval gives NaN where this is 0. */
+int pendulum_exact_resolvable(const PendulumExact *ex, double t);
+
+/* theta(t) and omega(t) of the exact solution; theta is continuous (winds up in rotation).
+ * At t == t0 exactly (theta0, omega0) as given. NaN where pendulum_exact_resolvable is 0. */
 void pendulum_exact_eval(const PendulumExact *ex, double t, double *theta, double *omega);
+
+/* Compares a numerical state (theta, omega) at some time with the exact motion, qualitatively:
+ * NULL if it is the same kind of motion, else what went wrong, as a phrase:
+ * "carried the libration over the top" (exact libration, |theta - its centre| > pi + 0.5),
+ * "reversed the rotation" (exact rotation, omega of the other sign),
+ * "went over the top past the separatrix" / "fell back from the separatrix" (on it). */
+const char *pendulum_exact_qualitative_miss(const PendulumExact *ex, double theta, double omega);
 
 /* Period of the motion in seconds: 4 K(m) / w0 for libration, the time of one revolution
  * 2 K(1/m) / (sqrt(m) w0) for rotation, and +INFINITY on the separatrix. */

@@ -69,7 +69,7 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
     inst->log_enabled[LOG_STATUS_ERROR] = 1;
     inst->log_enabled[LOG_STATUS_WARNING] = 1;
     inst->log_enabled[LOG_CALLS] = loggingOn ? 1 : 0;
-    model_reset(&inst->data);
+    model_reset(&inst->data, fmuType);
     return inst;
 }
 
@@ -170,7 +170,7 @@ fmi2Status fmi2Reset(fmi2Component c) {
     if (!instance_allowed(inst, "fmi2Reset", ANY_MODE)) {
         return fmi2Error;
     }
-    model_reset(&inst->data);
+    model_reset(&inst->data, inst->type);
     return fmi2OK;
 }
 

@@ -77,8 +77,21 @@ int instance_allowed(Instance *inst, const char *function, unsigned allowed_mode
     return 1;
 }
 
-void model_reset(ModelData *data) {
+int instance_allowed_for(Instance *inst, const char *function, fmi2Type type, unsigned allowed_modes) {
+    if (inst != NULL && inst->type != type) {
+        instance_fail(inst, function, "is a %s function; this instance was instantiated for %s",
+                      type == fmi2ModelExchange ? "Model Exchange" : "Co-Simulation",
+                      inst->type == fmi2ModelExchange ? "Model Exchange" : "Co-Simulation");
+        return 0;
+    }
+    return instance_allowed(inst, function, allowed_modes);
+}
+
+void model_reset(ModelData *data, fmi2Type type) {
+    memset(data, 0, sizeof *data);   /* padding too: states are compared and checksummed bytewise */
     data->mode = MODE_INSTANTIATED;
+    data->interface = (int)type;
+    data->hard_case_reported = 0;
     data->L = START_L;
     data->g = START_G;
     data->solver = START_SOLVER;
@@ -87,10 +100,15 @@ void model_reset(ModelData *data) {
     data->time = 0.0;
     data->theta = START_THETA;
     data->omega = START_OMEGA;
-    pendulum_exact_init(&data->exact, START_THETA, START_OMEGA, sqrt(START_G / START_L), 0.0);
+    pendulum_exact_init_gl(&data->exact, START_THETA, START_OMEGA, START_G, START_L, 0.0);
     integrator_init(&data->integrator, START_SOLVER, START_G / START_L, DEFAULT_TOLERANCE,
                     0.0, START_THETA, START_OMEGA);
 }
+
+/* Modes an instance of each interface can be in (FMI 2.0 3.2.3 and 4.2.4). */
+#define ME_MODES (MODE_INSTANTIATED | MODE_INITIALIZATION | MODE_EVENT | MODE_CONTINUOUS_TIME | \
+                  MODE_TERMINATED | MODE_ERROR)
+#define CS_MODES (MODE_INSTANTIATED | MODE_INITIALIZATION | MODE_STEP_COMPLETE | MODE_TERMINATED | MODE_ERROR)
 
 /* Parameters are checked when set; this re-checks the combination (g / L must stay finite). */
 static const char *check_parameters(const ModelData *data) {
@@ -107,7 +125,7 @@ const char *model_initialize(ModelData *data, fmi2Type type) {
     if (problem != NULL) {
         return problem;
     }
-    if (pendulum_exact_init(&data->exact, data->theta, data->omega, sqrt(w0sq), data->time) != 0 ||
+    if (pendulum_exact_init_gl(&data->exact, data->theta, data->omega, data->g, data->L, data->time) != 0 ||
         isnan(pendulum_exact_period(&data->exact))) {
         return "the exact solution cannot be set up for these start values";
     }
@@ -115,6 +133,83 @@ const char *model_initialize(ModelData *data, fmi2Type type) {
         integrator_init(&data->integrator, (SolverKind)data->solver, w0sq, data->tolerance,
                         data->time, data->theta, data->omega) != 0) {
         return "the solver cannot be set up for these start values";
+    }
+    return NULL;
+}
+
+const char *model_check_state(const ModelData *data, fmi2Type type) {
+    ModelData reset;
+    const unsigned modes = type == fmi2ModelExchange ? ME_MODES : CS_MODES;
+    const unsigned mode = (unsigned)data->mode;
+    if (data->interface != (int)type) {
+        return data->interface == fmi2ModelExchange || data->interface == fmi2CoSimulation
+                   ? "the state is of an instance of the other interface (Model Exchange / Co-Simulation)"
+                   : "the interface type is out of range";
+    }
+    if (mode == 0 || (mode & (mode - 1)) != 0 || (mode & modes) == 0) {
+        return "the mode is not one this interface can be in";
+    }
+    if (data->hard_case_reported != 0 && data->hard_case_reported != 1) {
+        return "the hard-case flag is out of range";
+    }
+    if (!(isfinite(data->L) && data->L > 0.0 && isfinite(data->g) && data->g > 0.0)) {
+        return "L or g out of range (finite, greater than 0)";
+    }
+    if (data->solver < SOLVER_DOPRI5 || data->solver > SOLVER_SYMPLECTIC) {
+        return "the solver is not an item of the enumeration Solver";
+    }
+    if (!(isfinite(data->tolerance) && data->tolerance > 0.0 && data->tolerance < 1.0)) {
+        return "the tolerance is out of range (0, 1)";
+    }
+    if (!isfinite(data->start_time) || !isfinite(data->time) || !isfinite(data->theta) || !isfinite(data->omega)) {
+        return "a time or a state is not finite";
+    }
+    model_reset(&reset, type);
+    if ((mode & (MODE_INSTANTIATED | MODE_INITIALIZATION)) != 0) {
+        /* before initialization the exact solution and the solver are the reset ones */
+        if (memcmp(&reset.exact, &data->exact, sizeof reset.exact) != 0 ||
+            memcmp(&reset.integrator, &data->integrator, sizeof reset.integrator) != 0) {
+            return "the exact solution or the solver is not the one of a state before initialization";
+        }
+        return NULL;
+    }
+    if (mode == MODE_ERROR) {
+        /* the error state may come from any mode, also half-way through an initialization or
+         * a failed step; of its contents only variables are read again (the solver only its
+         * counts), so the exact solution must be a consistent one, the reset one or another */
+        if (memcmp(&reset.exact, &data->exact, sizeof reset.exact) != 0 && !pendulum_exact_same(&data->exact)) {
+            return "the exact solution does not match its own start values";
+        }
+        return NULL;
+    }
+    if (check_parameters(data) != NULL) {
+        return "g / L is not a finite number greater than 0 after initialization";
+    }
+    if (!pendulum_exact_same(&data->exact) || !(data->exact.g == data->g) || !(data->exact.L == data->L) ||
+        !(data->exact.t0 == data->start_time)) {
+        return "the exact solution does not match its start values and parameters";
+    }
+    if (type == fmi2ModelExchange) {
+        if (memcmp(&reset.integrator, &data->integrator, sizeof reset.integrator) != 0) {
+            return "a Model Exchange state carries a solver state";
+        }
+        return NULL;
+    }
+    {
+        Integrator fresh;
+        const char *problem;
+        if (integrator_init(&fresh, (SolverKind)data->solver, data->g / data->L, data->tolerance, data->start_time,
+                            data->exact.theta0, data->exact.omega0) != 0) {
+            return "the solver cannot be set up for the state's start values";
+        }
+        problem = integrator_check(&data->integrator, &fresh);
+        if (problem != NULL) {
+            return problem;
+        }
+        if (!(data->time >= data->start_time) || !(data->time <= data->integrator.t) ||
+            (data->integrator.h_last > 0.0 && !(data->time >= data->integrator.t_prev))) {
+            return "the communication time does not lie in the solver's last step";
+        }
     }
     return NULL;
 }
@@ -140,7 +235,7 @@ static const char *current_exact(const ModelData *data, PendulumExact *exact) {
     if (problem != NULL) {
         return problem;
     }
-    if (pendulum_exact_init(exact, data->theta, data->omega, sqrt(data->g / data->L), data->time) != 0) {
+    if (pendulum_exact_init_gl(exact, data->theta, data->omega, data->g, data->L, data->time) != 0) {
         return "the exact solution cannot be set up for these start values";
     }
     return NULL;
@@ -170,6 +265,10 @@ const char *model_get_real(const ModelData *data, fmi2ValueReference vr, double 
             *value = pendulum_exact_period(&exact); /* +inf on the separatrix */
         } else {
             double theta, omega;
+            if (!pendulum_exact_resolvable(&exact, data->time)) {
+                return "the exact solution is not representable in double precision at this time: more than "
+                       "2^60 quarter periods from the start time, the phase is not resolved (rate held to 104 bits)";
+            }
             pendulum_exact_eval(&exact, data->time, &theta, &omega);
             *value = vr == VR_THETA_EXACT ? theta : omega;
         }

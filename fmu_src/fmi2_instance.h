@@ -37,6 +37,10 @@ typedef enum {
 
 typedef struct {
     Mode mode;
+    int interface;              /* fmi2ModelExchange or fmi2CoSimulation: a state of one
+                                   interface is refused by an instance of the other */
+    int hard_case_reported;     /* 1 once fmi2DoStep has warned that the numerical solution
+                                   went qualitatively wrong (fmi2_cosim.c) */
     double L, g;                /* parameters */
     int solver;                 /* SolverKind */
     double tolerance;           /* relative tolerance of the Co-Simulation solver */
@@ -69,6 +73,10 @@ void instance_log(const Instance *inst, fmi2Status status, LogCategory category,
  * "<function>: not allowed in <mode>" and, for a live instance, returns 0. */
 int instance_allowed(Instance *inst, const char *function, unsigned allowed_modes);
 
+/* The same for a function of one interface only (FMI 2.0 3.2 Model Exchange, 4.2
+ * Co-Simulation): an instance of the other interface refuses it with a logged reason. */
+int instance_allowed_for(Instance *inst, const char *function, fmi2Type type, unsigned allowed_modes);
+
 /* Puts the instance into MODE_ERROR after logging why; returns fmi2Error. */
 fmi2Status instance_fail(Instance *inst, const char *function, const char *format, ...)
 #if defined(__GNUC__)
@@ -76,8 +84,13 @@ fmi2Status instance_fail(Instance *inst, const char *function, const char *forma
 #endif
     ;
 
-/* Sets start values (the just-instantiated state). */
-void model_reset(ModelData *data);
+/* Sets start values (the just-instantiated state) for an instance of the given interface. */
+void model_reset(ModelData *data, fmi2Type type);
+
+/* Checks a ModelData read from untrusted bytes (fmi2SetFMUstate, fmi2DeSerializeFMUstate) for
+ * an instance of interface `type`: every field in the range it can have, the exact solution
+ * and the solver exactly what their recorded start values make. NULL, or the reason. */
+const char *model_check_state(const ModelData *data, fmi2Type type);
 
 /* Validates parameters and states, then sets up the exact solution and the solver.
  * Returns NULL on success, otherwise a message naming what is wrong. */

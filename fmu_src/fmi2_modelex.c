@@ -9,7 +9,7 @@
 
 fmi2Status fmi2EnterEventMode(fmi2Component c) {
     Instance *inst = c;
-    if (!instance_allowed(inst, "fmi2EnterEventMode", MODE_EVENT | MODE_CONTINUOUS_TIME)) {
+    if (!instance_allowed_for(inst, "fmi2EnterEventMode", fmi2ModelExchange, MODE_EVENT | MODE_CONTINUOUS_TIME)) {
         return fmi2Error;
     }
     inst->data.mode = MODE_EVENT;
@@ -18,7 +18,7 @@ fmi2Status fmi2EnterEventMode(fmi2Component c) {
 
 fmi2Status fmi2NewDiscreteStates(fmi2Component c, fmi2EventInfo *eventInfo) {
     Instance *inst = c;
-    if (!instance_allowed(inst, "fmi2NewDiscreteStates", MODE_EVENT)) {
+    if (!instance_allowed_for(inst, "fmi2NewDiscreteStates", fmi2ModelExchange, MODE_EVENT)) {
         return fmi2Error;
     }
     if (eventInfo == NULL) {
@@ -36,7 +36,7 @@ fmi2Status fmi2NewDiscreteStates(fmi2Component c, fmi2EventInfo *eventInfo) {
 
 fmi2Status fmi2EnterContinuousTimeMode(fmi2Component c) {
     Instance *inst = c;
-    if (!instance_allowed(inst, "fmi2EnterContinuousTimeMode", MODE_EVENT)) {
+    if (!instance_allowed_for(inst, "fmi2EnterContinuousTimeMode", fmi2ModelExchange, MODE_EVENT)) {
         return fmi2Error;
     }
     inst->data.mode = MODE_CONTINUOUS_TIME;
@@ -47,7 +47,7 @@ fmi2Status fmi2CompletedIntegratorStep(fmi2Component c, fmi2Boolean noSetFMUStat
                                        fmi2Boolean *enterEventMode, fmi2Boolean *terminateSimulation) {
     Instance *inst = c;
     (void)noSetFMUStatePriorToCurrentPoint;
-    if (!instance_allowed(inst, "fmi2CompletedIntegratorStep", MODE_CONTINUOUS_TIME)) {
+    if (!instance_allowed_for(inst, "fmi2CompletedIntegratorStep", fmi2ModelExchange, MODE_CONTINUOUS_TIME)) {
         return fmi2Error;
     }
     if (enterEventMode == NULL || terminateSimulation == NULL) {
@@ -60,7 +60,7 @@ fmi2Status fmi2CompletedIntegratorStep(fmi2Component c, fmi2Boolean noSetFMUStat
 
 fmi2Status fmi2SetTime(fmi2Component c, fmi2Real time) {
     Instance *inst = c;
-    if (!instance_allowed(inst, "fmi2SetTime", MODE_EVENT | MODE_CONTINUOUS_TIME)) {
+    if (!instance_allowed_for(inst, "fmi2SetTime", fmi2ModelExchange, MODE_EVENT | MODE_CONTINUOUS_TIME)) {
         return fmi2Error;
     }
     if (!isfinite(time)) {
@@ -73,7 +73,7 @@ fmi2Status fmi2SetTime(fmi2Component c, fmi2Real time) {
 /* Shared checks of the state-vector functions: mode, array and its length. */
 static int states_allowed(Instance *inst, const char *function, unsigned modes, const void *array, size_t n,
                           size_t expected) {
-    if (!instance_allowed(inst, function, modes)) {
+    if (!instance_allowed_for(inst, function, fmi2ModelExchange, modes)) {
         return 0;
     }
     if (n != expected) {

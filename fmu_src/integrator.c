@@ -16,6 +16,13 @@
  * limit. */
 #define INTEG_HMAX_W0 1.0
 
+/* Closeness to the separatrix below which no step rule tightens further (the tolerance is
+ * promised down to 1e-6, README): without a floor the steps would vanish on it. */
+#define INTEG_MIN_CLOSENESS 1e-7
+
+/* DOPRI5's local tolerance relative to the user's, scaled by the closeness too. */
+#define INTEG_DOPRI5_TOL_FACTOR 0.1
+
 int integrator_init(Integrator *it, SolverKind kind, double w0sq, double tol,
                     double t0, double theta0, double omega0)
 {
@@ -35,14 +42,32 @@ int integrator_init(Integrator *it, SolverKind kind, double w0sq, double tol,
      * drifts and turns into a secular phase error (DOPRI5 at tol 1e-8 was 4e-6 off after
      * 10 periods at 75..90 deg, as scipy's RK45 is), and near the separatrix it can carry
      * a libration over the top; with it, 3e-8 (see tests/c/test_integrators.c). */
+    /* The motion's scales (pendulum-math.md): m = s^2 + q^2, m1 = (|c| - |q|)(|c| + |q|) with
+     * s, c = sin, cos(theta0/2), q = omega0 / (2 w0). The time scale is 1/rate, and near the
+     * separatrix an energy error dH shifts the period by ~dH / (w0^2 closeness) (dK/dm ~
+     * 1/(2 m1)), so the global error over a period grows like 1/closeness: the step rules of
+     * the fixed-step methods and DOPRI5's local tolerance take both into account (without,
+     * symplectic at tol 1e-8 was 1.7e-3 off over three revolutions at omega0 = 30 w0, and
+     * 0.056 at tol 1e-6 next to the separatrix; tests/c/test_solver_tolerance.c). */
+    {
+        const double w0 = sqrt(w0sq), s = sin(0.5 * theta0), c = fabs(cos(0.5 * theta0));
+        const double q = fabs(omega0) / (2.0 * w0);
+        const double m = s * s + q * q, m1 = (c - q) * (c + q);
+        it->rate = isfinite(m) ? w0 * fmax(1.0, sqrt(m)) : INFINITY;
+        it->closeness = fmin(1.0, fmax(INTEG_MIN_CLOSENESS, fabs(m1) / fmax(1.0, m)));
+        if (!(it->rate > 0.0) || !isfinite(it->rate))
+            return -1;
+    }
     it->rtol = tol;
+    if (kind == SOLVER_DOPRI5)
+        it->rtol = tol * it->closeness * INTEG_DOPRI5_TOL_FACTOR;
     if (kind == SOLVER_DOPRI5 || kind == SOLVER_RKN)
         it->rtol = fmax(it->rtol, INTEG_MIN_TOL);
     it->atol = it->rtol;
     it->t = t0;
     it->y[0] = theta0;
     it->y[1] = omega0;
-    it->hmax = INTEG_HMAX_W0 / sqrt(w0sq);
+    it->hmax = INTEG_HMAX_W0 / it->rate;
     it->err_prev = 1e-4;
     it->project_energy = (kind == SOLVER_DOPRI5 || kind == SOLVER_RKN);
     it->t_prev = t0;
@@ -98,6 +123,8 @@ int integrator_advance(Integrator *it, double t_out, double y_out[2])
     /* Internal steps are never shortened to land on t_out: the step sequence is the same
      * for every output grid. A bounded number of steps per call: no call can hang. */
     long budget = INTEGRATOR_MAX_STEPS_PER_ADVANCE;
+    if (integrator_min_steps(it, t_out) > (double)budget)
+        return -2;   /* out of reach of the budget: refused before any work */
     while (it->t < t_out) {
         if (budget-- == 0)
             return -2;
@@ -115,6 +142,80 @@ int integrator_advance(Integrator *it, double t_out, double y_out[2])
         return -1;   /* before the last step: the contract forbids going back */
     }
     return (isfinite(y_out[0]) && isfinite(y_out[1])) ? 0 : -1;
+}
+
+static int is_fixed_step(SolverKind kind)
+{
+    return kind == SOLVER_RK4 || kind == SOLVER_SYMPLECTIC;
+}
+
+double integrator_min_steps(const Integrator *it, double t_out)
+{
+    if (!(t_out > it->t))
+        return 0.0;
+    const double largest = is_fixed_step(it->kind) ? it->h : fmax(it->h, it->hmax);
+    return (t_out - it->t) / largest;
+}
+
+static double ulp_of(double x)
+{
+    x = fabs(x);
+    return nextafter(x, INFINITY) - x;
+}
+
+StepEnd integrator_step_end(double time, double point, double step, double *t_end)
+{
+    if (!(isfinite(step) && step > 0.0))
+        return STEP_END_BAD_SIZE;
+    if (!isfinite(point) ||
+        !(fabs(point - time) <= INTEGRATOR_POINT_ULPS * ulp_of(fmax(fabs(time), fabs(point)))))
+        return STEP_END_BAD_POINT;
+    const double end = point + step;
+    if (!isfinite(end))
+        return STEP_END_NOT_FINITE;
+    if (end < time)
+        return STEP_END_BACKWARDS;
+    *t_end = end;
+    return STEP_END_OK;
+}
+
+static int all_finite(const double *values, int n)
+{
+    for (int i = 0; i < n; i++)
+        if (!isfinite(values[i]))
+            return 0;
+    return 1;
+}
+
+const char *integrator_check(const Integrator *it, const Integrator *fresh)
+{
+    if (it->kind != fresh->kind || !(it->w0sq == fresh->w0sq) || !(it->rtol == fresh->rtol) ||
+        !(it->rate == fresh->rate) || !(it->closeness == fresh->closeness) ||
+        !(it->atol == fresh->atol) || !(it->hmax == fresh->hmax) ||
+        !(it->energy0 == fresh->energy0) || it->project_energy != fresh->project_energy)
+        return "solver settings differ from those of the state's own start values";
+    if (is_fixed_step(it->kind) ? !(it->h == fresh->h) : !(it->h > 0.0 && it->h <= it->hmax))
+        return "solver step size out of range";
+    const double times[] = {it->t, it->t_lo, it->t_prev, it->t_prev_lo, it->h_last, it->err_prev};
+    if (!all_finite(times, 6) || !all_finite(it->y, 2) || !all_finite(it->f, 2) ||
+        !all_finite(it->y_prev, 2) || !all_finite(it->f_prev, 2) ||
+        !all_finite(&it->dense[0][0], 2 * INTEGRATOR_MAX_STAGES))
+        return "solver state holds a value that is not finite";
+    if (!(fabs(it->t_lo) <= ulp_of(it->t)) || !(fabs(it->t_prev_lo) <= ulp_of(it->t_prev)))
+        return "solver time out of range (low part)";
+    if (!(it->t_prev >= fresh->t) || !(it->t >= it->t_prev) || !(it->h_last >= 0.0))
+        return "solver times out of order";
+    if (it->h_last == 0.0 ? (it->t != fresh->t || it->stats.steps != 0)
+                          : !(fabs((it->t - it->t_prev) + (it->t_lo - it->t_prev_lo) - it->h_last)
+                              <= 4.0 * ulp_of(it->t)))
+        return "solver times and last step do not match";
+    if (!(it->err_prev >= 1e-4 && it->err_prev <= 1.0) || (it->last_rejected != 0 && it->last_rejected != 1))
+        return "solver step-size controller state out of range";
+    if (it->f[0] != it->y[1] || it->f_prev[0] != it->y_prev[1])
+        return "solver slopes do not match its states";
+    if (it->stats.steps < 0 || it->stats.rejected < 0 || it->stats.rhs_evals < 0)
+        return "solver statistics out of range";
+    return NULL;
 }
 
 /* ---- shared helpers ------------------------------------------------------------------ */

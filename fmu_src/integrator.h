@@ -49,6 +49,12 @@ typedef struct {
     double f[2];                 /* y' = (omega, -w0sq sin theta) at (t, y), already counted:
                                     first stage of the next step (FSAL) and end-point slope
                                     for interpolation */
+    double rate;                 /* the motion's own angular rate: w0 in libration, sqrt(m) w0
+                                    (half the largest speed) in rotation; sets the time scale
+                                    of the fixed steps */
+    double closeness;            /* distance from the separatrix, |m1| / max(1, m) (at least
+                                    INTEG_MIN_CLOSENESS): the period's sensitivity to energy
+                                    errors grows like 1/closeness there */
     double h;                    /* next step size to try (fixed-step methods: the step) */
     double hmax;                 /* largest step the adaptive methods may take */
     double t_prev, y_prev[2];    /* start of the last accepted step (for dense output) */
@@ -75,13 +81,45 @@ typedef struct {
 int integrator_init(Integrator *it, SolverKind kind, double w0sq, double tol,
                     double t0, double theta0, double omega0);
 
-/* Most internal steps (accepted or rejected) one integrator_advance may take. */
+/* Most internal steps (accepted or rejected) one integrator_advance may take (a fuzzing
+ * build may set a smaller one on the command line, so that each of its runs stays short). */
+#ifndef INTEGRATOR_MAX_STEPS_PER_ADVANCE
 #define INTEGRATOR_MAX_STEPS_PER_ADVANCE 10000000L
+#endif
+
+/* Communication points (FMI's currentCommunicationPoint, FMI 3's the same): a master's point
+ * may differ from the current time by its own rounding, at most this many ulps of the time. */
+#define INTEGRATOR_POINT_ULPS 4.0
+
+/* Outcome of integrator_step_end. */
+typedef enum {
+    STEP_END_OK = 0,
+    STEP_END_BAD_SIZE,      /* the step size is not a finite number > 0 */
+    STEP_END_BAD_POINT,     /* the point is not within INTEGRATOR_POINT_ULPS ulps of the time */
+    STEP_END_NOT_FINITE,    /* point + step overflows */
+    STEP_END_BACKWARDS      /* point + step lies before the current time */
+} StepEnd;
+
+/* The time a step from the master's `point` by `step` ends at, given the current `time`: the
+ * rule shared by every co-simulation interface (time never goes backwards). Sets *t_end when
+ * the answer is STEP_END_OK. */
+StepEnd integrator_step_end(double time, double point, double step, double *t_end);
+
+/* Fewest internal steps that reaching t_out can take (the largest step the method may take
+ * bounds it from below); 0 if t_out <= the internal time. */
+double integrator_min_steps(const Integrator *it, double t_out);
+
+/* Checks an integrator read from untrusted bytes (an FMU state blob) against `fresh`, the
+ * integrator that integrator_init makes from the same inputs: the fields fixed at init must
+ * equal fresh's, the others lie in their possible ranges (finite, ordered times, step sizes,
+ * counts >= 0, flags 0 or 1). Returns NULL, or a message naming the first bad field. */
+const char *integrator_check(const Integrator *it, const Integrator *fresh);
 
 /* Advances to t_out >= the last output time and writes the solution at t_out.
  * Returns 0 on success, -1 if the step size underflows or the solution is not finite
  * (or t_out lies before the start of the last internal step, which the contract rules
- * out), -2 if reaching t_out would take more than INTEGRATOR_MAX_STEPS_PER_ADVANCE steps. */
+ * out), -2 if reaching t_out would take more than INTEGRATOR_MAX_STEPS_PER_ADVANCE steps
+ * (at once, without stepping, when even integrator_min_steps exceeds it). */
 int integrator_advance(Integrator *it, double t_out, double y_out[2]);
 
 #endif

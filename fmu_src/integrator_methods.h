@@ -30,6 +30,19 @@ static inline double integ_accel(Integrator *it, double theta)
     return -it->w0sq * sin(theta);
 }
 
+/* x + d with the rounding error carried in *carry (compensated summation, Kahan 1965, with
+ * Knuth's TwoSum so that |d| > |x| is fine): the fixed-step methods accumulate no rounding
+ * drift over millions of steps (near the separatrix an energy drift of a few ulps per step
+ * was the error at tol 1e-10). */
+static inline double integ_add_compensated(double x, double d, double *carry)
+{
+    const double b = d + *carry;
+    const double sum = x + b;
+    const double bb = sum - x;
+    *carry = (x - (sum - bb)) + (b - bb);
+    return sum;
+}
+
 /* Weighted RMS norm of a local error estimate e (Hairer, Norsett & Wanner, Solving ODEs I,
  * II.4 (4.11)): sc_i = atol + rtol max(|y0_i|, |y1_i|), err = sqrt(mean (e_i / sc_i)^2). */
 static inline double integ_err_norm(const Integrator *it, const double e[2],

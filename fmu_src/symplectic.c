@@ -19,6 +19,10 @@
  * a safety factor 0.8 covers the larger error of big amplitudes (whose motion has
  * higher harmonics: at 80 deg the error is ~6x the harmonic estimate, and 0.8^8 = 0.17):
  *     h = 0.8 (tol / C)^(1/8) / w0,   capped at 1 / w0 (tol > ~2e-6).
+ * The motion's own scales refine it (integrator.c): w0 becomes the rate r (sqrt(m) w0 in
+ * rotation), tol is scaled by the closeness c to the separatrix and by SYMP_TOL_FACTOR, the
+ * measured margin for the global error over ten periods (the interpolant's included):
+ *     h = min(0.8 (1e-3 tol c / C)^(1/8), 1) / r.
  *
  * Output: Hermite interpolation of degree 7 for theta from theta, theta' = omega,
  * theta'' = -w0^2 sin(theta) and theta''' = -w0^2 cos(theta) omega at both ends of the
@@ -37,6 +41,7 @@
 #define SYMP_PHASE_C 4.75e-6
 #define SYMP_SAFETY 0.8
 #define SYMP_HMAX_W0 1.0
+#define SYMP_TOL_FACTOR 0.001   /* the global error over ten periods, measured (test_solver_tolerance.c) */
 
 /* g1..g7 to 26 digits as published; g8 = 1 - 2 (g1 + ... + g7). */
 static const double G[SYMP_STAGES] = {
@@ -58,8 +63,9 @@ static double jerk(Integrator *it, double theta, double omega)
 
 void integ_symplectic_start(Integrator *it)
 {
-    double w0 = sqrt(it->w0sq);
-    it->h = fmin(SYMP_SAFETY * pow(it->rtol / SYMP_PHASE_C, 0.125), SYMP_HMAX_W0) / w0;
+    /* rate and closeness: integrator.c (the motion's time scale, the separatrix's sensitivity) */
+    it->h = fmin(SYMP_SAFETY * pow(it->rtol * it->closeness * SYMP_TOL_FACTOR / SYMP_PHASE_C, 0.125),
+                 SYMP_HMAX_W0) / it->rate;
     it->dense[0][1] = jerk(it, it->y[0], it->y[1]);
 }
 
@@ -71,12 +77,14 @@ int integ_symplectic_step(Integrator *it)
 
     if (!(it->t + h > it->t))
         return -1;   /* the step no longer advances t */
+    /* compensated sums: dense[1] (unused by the output) carries the rounding of x and v */
+    double *carry = it->dense[1];
     for (int i = 0; i < SYMP_STAGES; i++) {
         const double hi = G[i] * h;
-        v += 0.5 * hi * a;      /* kick */
-        x += hi * v;            /* drift */
+        v = integ_add_compensated(v, 0.5 * hi * a, &carry[1]);   /* kick */
+        x = integ_add_compensated(x, hi * v, &carry[0]);         /* drift */
         a = integ_accel(it, x);
-        v += 0.5 * hi * a;      /* kick */
+        v = integ_add_compensated(v, 0.5 * hi * a, &carry[1]);   /* kick */
     }
     if (!isfinite(x) || !isfinite(v))
         return -1;

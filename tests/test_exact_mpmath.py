@@ -1,8 +1,9 @@
 """The FMU's exact solution (theta_exact, omega_exact, period) against mpmath at 50 digits.
 
 Everything goes through the FMU (Model Exchange, :class:`pendulum_fmu.fmu.exact_port.ExactPort`).
-The references take the FMU's binary inputs exactly (theta0, omega0, t as given, and
-w0 = sqrt(g / L) rounded as the FMU rounds it) and work at 50 significant digits:
+The references take the FMU's binary inputs exactly (theta0, omega0, t, L and g as given,
+w0 = sqrt(g / L) of those two doubles unrounded, as the FMU takes it) and work at 50
+significant digits:
 
 (a) ``mpmath.odefun``: Taylor integration of theta'' = -w0^2 sin(theta) itself, over a
     fraction of a period (it costs seconds per case at 50 digits);
@@ -27,7 +28,8 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from pendulum_fmu.bench.reference import DIGITS, closed_form, frequency, max_abs_diff, omega_scale
+from pendulum_fmu.bench.reference import (DIGITS, closed_form, exact_frequency, frequency, max_abs_diff,
+                                          omega_scale)
 from pendulum_fmu.fmu.exact_port import ExactPort
 from reference_cache import cached
 
@@ -50,8 +52,8 @@ def ode_reference(theta0: float, omega0: float, w0: float,
     ----------
     theta0, omega0 : float
         Initial state at t = 0.
-    w0 : float
-        sqrt(g / L) as a double.
+    w0 : float or mpmath.mpf
+        sqrt(g / L) (the exact root of the doubles g / L, see :func:`exact_frequency`).
     times : sequence of float
         Increasing times >= 0 (odefun caches the path, so each later time extends it).
 
@@ -85,6 +87,7 @@ def port(fmu_path: Path) -> Iterator[ExactPort]:
 # --------------------------------------------------------------------------------------
 
 W0_EARTH = frequency(1.0, 9.81)
+# g / L = 6.25: w0 = 2.5 exactly, so omega0 = 5 is exactly on the separatrix
 
 # name: (theta0, omega0, L, g, t0)
 REGIME_CASES: dict[str, tuple[float, float, float, float, float]] = {
@@ -100,8 +103,9 @@ REGIME_CASES: dict[str, tuple[float, float, float, float, float]] = {
     "pi + 1e-12 (other side of the top)": (math.pi + 1e-12, 0.0, 1.0, 9.81, 0.0),
     "pi (the double), at rest": (math.pi, 0.0, 1.0, 9.81, 0.0),
     "theta0 = 20 rad": (20.0, 0.3, 1.0, 2.89, 0.0),
-    "separatrix, forward": (0.0, 2.0 * W0_EARTH, 1.0, 9.81, 0.0),
-    "separatrix, backward": (0.0, -2.0 * W0_EARTH, 1.0, 9.81, 0.0),
+    "separatrix, forward": (0.0, 5.0, 1.0, 6.25, 0.0),
+    "separatrix, backward": (0.0, -5.0, 1.0, 6.25, 0.0),
+    "next to the separatrix, 2 fl(w0)": (0.0, 2.0 * W0_EARTH, 1.0, 9.81, 0.0),
     "libration next to the separatrix": (0.0, 2.0 * (1.0 - 1e-12), 1.0, 1.0, 0.0),
     "rotation next to the separatrix": (0.0, 2.0 * (1.0 + 1e-12), 1.0, 1.0, 0.0),
     "rotation, forward": (0.5, 2.5, 1.0, 1.0, 0.0),
@@ -121,7 +125,8 @@ def test_three_periods_against_closed_form(port: ExactPort, case: str) -> None:
     horizon = 3.0 * period if math.isfinite(period) else 40.0 / w0
     times = t0 + np.linspace(0.0, horizon, 61)
     theta, omega = port.evaluate(times)
-    ref_theta, ref_omega, ref_period = closed_form(theta0, omega0, w0, times, t0)
+    ref_theta, ref_omega, ref_period = closed_form(theta0, omega0, exact_frequency(length, gravity),
+                                                   times, t0)
     assert max_abs_diff(theta, ref_theta) <= THETA_TOL
     assert max_abs_diff(omega, ref_omega) <= OMEGA_REL_TOL * omega_scale(ref_omega, w0)
     if mp.isinf(ref_period):
@@ -131,12 +136,11 @@ def test_three_periods_against_closed_form(port: ExactPort, case: str) -> None:
 
 
 def test_start_value_reproduced(port: ExactPort) -> None:
-    """At t0 the exact solution returns the start values (to rounding)."""
+    """At t0 the exact solution returns the start values bit for bit."""
     for theta0, omega0, length, gravity, t0 in REGIME_CASES.values():
         port.initialize(theta0, omega0, length, gravity, start_time=t0)
         theta, omega = port.evaluate([t0])
-        assert abs(theta[0] - theta0) <= 4e-16 * max(1.0, abs(theta0))
-        assert abs(omega[0] - omega0) <= 1e-15 * max(abs(omega0), frequency(length, gravity))
+        assert theta[0] == theta0 and omega[0] == omega0
 
 
 def test_one_million_periods_at_170_degrees(port: ExactPort) -> None:
@@ -172,7 +176,7 @@ ODE_CASES: dict[str, tuple[float, float, float, float, tuple[float, ...]]] = {
     "90 deg": (math.radians(90.0), 0.0, 1.0, 1.0, (0.1, 0.3, 0.6)),
     "pi - 1e-9": (math.pi - 1e-9, 0.0, 1.0, 1.0, (0.2, 0.6)),
     "rotation": (0.5, 2.5, 1.0, 1.0, (0.2, 0.5)),
-    "separatrix": (0.0, 2.0 * W0_EARTH, 1.0, 9.81, (0.05, 0.15)),
+    "separatrix": (0.0, 5.0, 1.0, 6.25, (0.05, 0.15)),
 }
 
 
@@ -183,7 +187,7 @@ def test_against_ode_integration(port: ExactPort, case: str) -> None:
     w0 = frequency(length, gravity)
     port.initialize(theta0, omega0, length, gravity)
     theta, omega = port.evaluate(times)
-    ref_theta, ref_omega = ode_reference(theta0, omega0, w0, times)
+    ref_theta, ref_omega = ode_reference(theta0, omega0, exact_frequency(length, gravity), times)
     assert max_abs_diff(theta, ref_theta) <= THETA_TOL
     assert max_abs_diff(omega, ref_omega) <= OMEGA_REL_TOL * max(abs(omega0), 2.0 * w0)
 
@@ -242,7 +246,7 @@ def test_accuracy_property(port: ExactPort, theta0: float, factor: float, length
     w0, omega0, span = start_motion(port, theta0, factor, length, gravity)
     times = [f * span for f in fractions]
     theta, omega = port.evaluate(times)
-    ref_theta, ref_omega, _ = closed_form(theta0, omega0, w0, times)
+    ref_theta, ref_omega, _ = closed_form(theta0, omega0, exact_frequency(length, gravity), times)
     theta_scale = max(1.0, float(max(abs(r) for r in ref_theta)))
     assert max_abs_diff(theta, ref_theta) <= THETA_TOL + 4e-16 * theta_scale
     assert max_abs_diff(omega, ref_omega) <= OMEGA_REL_TOL * max(omega_scale(ref_omega, w0),

@@ -61,14 +61,16 @@ def _p1(unzipped: Path, md: ModelDescription, solver: str, tol: float) -> tuple[
 
 # solver, tolerances whose steps halve one after the other, expected order, allowed band.
 # RK4 and the composition take a fixed step h ~ tol^(1/4) and tol^(1/8): tol / 16 and
-# tol / 256 halve it exactly (the RK4 range starts where its h^5 term no longer counts).
+# tol / 256 halve it exactly (the RK4 range starts where its h^5 term no longer counts; the
+# composition's range ends above its rounding floor: its step rule asks 1e-3 tol of the phase
+# per unit time, issue 11).
 # The adaptive pairs' steps halve when tol falls by about 2^(q): 32 for DOPRI5, 2048 for
 # the 12th-order pair; their order is read from the steps actually taken. DOPRI5 is
 # 5th-order; its energy projection adds accuracy (observed 5.3 to 6.7), never loses it.
 ORDER_CASES = [
     ("rk4", (2.44140625e-10, 2.44140625e-10 / 16, 2.44140625e-10 / 256), 4.0, 0.25),
-    ("symplectic", (1e-8, 1e-8 / 256, 1e-8 / 65536), 8.0, 0.6),
-    ("dopri5", (1e-6, 1e-6 / 32, 1e-6 / 1024), 6.0, 1.2),
+    ("symplectic", (1e-5, 1e-5 / 256, 1e-5 / 65536), 8.0, 0.6),
+    ("dopri5", (1e-5, 1e-5 / 32, 1e-5 / 1024), 6.0, 1.2),
     ("rkn", (1e-5, 1e-5 / 2048), 12.0, 1.0),
 ]
 

@@ -1,7 +1,8 @@
 """Reference values of the exact solution from mpmath at 50 digits, independent of the C code.
 
 The closed form with mpmath's own ``ellipfun``, ``ellipk`` and ``ellipf`` at the FMU's binary
-inputs (theta0, omega0 and t as given, w0 = sqrt(g / L) rounded as the FMU rounds it), for
+inputs (theta0, omega0, t, L and g as given; w0 = sqrt(g / L) of those doubles unrounded, as
+the FMU's exact port takes it), for
 every regime; used by ``pendulum-fmu bench accuracy`` and by the tests.
 """
 
@@ -18,24 +19,33 @@ DIGITS = 50
 
 
 def frequency(length: float, gravity: float) -> float:
-    """w0 = sqrt(g / L), rounded exactly as the FMU computes it (IEEE division and sqrt)."""
+    """w0 = sqrt(g / L) rounded to a double (for scales and start values)."""
     return math.sqrt(gravity / length)
 
 
-def closed_form(theta0: float, omega0: float, w0: float, times: Sequence[float],
-                t0: float = 0.0) -> tuple[list[mp.mpf], list[mp.mpf], mp.mpf]:
+def exact_frequency(length: float, gravity: float) -> mp.mpf:
+    """w0 = sqrt(g / L) of the two doubles at ``DIGITS`` digits: the FMU's exact port solves
+    theta'' = -(g/L) sin theta for g and L as given."""
+    with mp.workdps(DIGITS):
+        return mp.sqrt(mp.mpf(gravity) / mp.mpf(length))
+
+
+def closed_form(theta0: float, omega0: float, w0: float | mp.mpf, times: Sequence[float],
+                t0: float = 0.0, digits: int = DIGITS) -> tuple[list[mp.mpf], list[mp.mpf], mp.mpf]:
     """Exact solution by mpmath's elliptic functions, at ``DIGITS`` digits.
 
     Parameters
     ----------
     theta0, omega0 : float
         Initial state at ``t0`` (taken exactly as binary doubles).
-    w0 : float
-        sqrt(g / L) as a double.
+    w0 : float or mpmath.mpf
+        sqrt(g / L) (the exact root of the doubles g / L, see :func:`exact_frequency`).
     times : sequence of float
         Evaluation times.
     t0 : float
         Time at which the initial state is posed.
+    digits : int
+        Working precision in decimal digits.
 
     Returns
     -------
@@ -54,7 +64,7 @@ def closed_form(theta0: float, omega0: float, w0: float, times: Sequence[float],
     omega = 2 d w0 sech u, u = w0 (t - t0) + asinh(d tan(th/2)). Arguments are reduced by
     the real period in mpmath before calling ellipfun.
     """
-    with mp.workdps(DIGITS):
+    with mp.workdps(digits):
         th0, om0, w, start = mp.mpf(theta0), mp.mpf(omega0), mp.mpf(w0), mp.mpf(t0)
         turns = mp.nint(th0 / (2 * mp.pi))
         th = th0 - 2 * mp.pi * turns
