@@ -448,16 +448,6 @@ void integ_taylor(double w0sq, double theta, double omega, const double trig[2],
     }
 }
 
-void integ_taylor_scale(const double a[INTEG_TAYLOR_TERMS], double h,
-                        double scaled[INTEG_TAYLOR_TERMS])
-{
-    double hn = 1.0;
-    for (int n = 0; n < INTEG_TAYLOR_TERMS; n++) {
-        scaled[n] = a[n] * hn;
-        hn *= h;
-    }
-}
-
 void integ_hermite_setup(const double left[INTEG_TAYLOR_TERMS],
                          const double right[INTEG_TAYLOR_TERMS], double dense[][2])
 {

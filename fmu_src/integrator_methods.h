@@ -97,13 +97,10 @@ int integ_project(Integrator *it, const double y0[2], double ynew[2], double fne
 #define INTEG_TAYLOR_TERMS 8
 
 /* a[n] = theta^(n)(t) / n!, n < INTEG_TAYLOR_TERMS, given theta, omega and
- * trig = (sin theta, cos theta) at t. */
+ * trig = (sin theta, cos theta) at t. In a time unit h (the step's variable s = (t - t0)/h):
+ * pass w0sq h^2 and omega h, get a[n] h^n. */
 void integ_taylor(double w0sq, double theta, double omega, const double trig[2],
                   double a[INTEG_TAYLOR_TERMS]);
-
-/* scaled[n] = a[n] h^n: the Taylor coefficients in the step's variable s = (t - t0)/h. */
-void integ_taylor_scale(const double a[INTEG_TAYLOR_TERMS], double h,
-                        double scaled[INTEG_TAYLOR_TERMS]);
 
 /* Stores the Hermite polynomial matching the scaled Taylor coefficients `left` at the start
  * and `right` at the end of a step in dense[0 .. INTEG_TAYLOR_TERMS - 1]. */

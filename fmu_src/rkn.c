@@ -127,35 +127,20 @@ static const double EBP[RKN_STAGES] = {
     0.025};
 
 /* it->dense holds: rows 0 .. INTEG_TAYLOR_TERMS - 1 the Hermite coefficients of the last
- * step (integ_hermite_setup); the rows from TAYLOR_ROW on the Taylor coefficients of theta
- * at the current point (a[n] in dense[TAYLOR_ROW + n / 2][n % 2]), the start of the next
- * step's interpolant. */
-#define TAYLOR_ROW INTEG_TAYLOR_TERMS
-_Static_assert(TAYLOR_ROW + INTEG_TAYLOR_TERMS / 2 <= INTEGRATOR_MAX_STAGES,
-               "dense[] holds the Hermite and the Taylor coefficients");
-
-static void store_taylor(Integrator *it, const double a[INTEG_TAYLOR_TERMS])
-{
-    for (int n = 0; n < INTEG_TAYLOR_TERMS; n++)
-        it->dense[TAYLOR_ROW + n / 2][n % 2] = a[n];
-}
-
-static void load_taylor(const Integrator *it, double a[INTEG_TAYLOR_TERMS])
-{
-    for (int n = 0; n < INTEG_TAYLOR_TERMS; n++)
-        a[n] = it->dense[TAYLOR_ROW + n / 2][n % 2];
-}
+ * step (integ_hermite_setup); row TRIG_ROW sin and cos of theta at the current point, from
+ * which the next step builds the left end of its interpolant. Both ends are expanded in the
+ * step's own time unit (integ_taylor with w0^2 h^2 and omega h), so no coefficient overflows
+ * however large g/L is (unscaled, the 14th derivative of theta grows like w0^14). */
+#define TRIG_ROW INTEG_TAYLOR_TERMS
+_Static_assert(TRIG_ROW < INTEGRATOR_MAX_STAGES, "dense[] holds the Hermite coefficients and sin/cos");
 
 void integ_rkn_start(Integrator *it)
 {
-    double trig[2], a[INTEG_TAYLOR_TERMS];
     it->hmax = RKN_HMAX_W0 / sqrt(it->w0sq);
     it->h = integ_initial_step(it, 12);
-    trig[0] = sin(it->y[0]);
-    trig[1] = cos(it->y[0]);
+    it->dense[TRIG_ROW][0] = sin(it->y[0]);
+    it->dense[TRIG_ROW][1] = cos(it->y[0]);
     it->stats.rhs_evals++;
-    integ_taylor(it->w0sq, it->y[0], it->y[1], trig, a);
-    store_taylor(it, a);
 }
 
 int integ_rkn_step(Integrator *it)
@@ -193,15 +178,14 @@ int integ_rkn_step(Integrator *it)
             it->h = hnew;
             continue;
         }
-        double f1[2], trig1[2], a0[INTEG_TAYLOR_TERMS], a1[INTEG_TAYLOR_TERMS];
-        double left[INTEG_TAYLOR_TERMS], right[INTEG_TAYLOR_TERMS];
+        double f1[2], trig1[2], left[INTEG_TAYLOR_TERMS], right[INTEG_TAYLOR_TERMS];
+        const double w0sq_h2 = it->w0sq * h * h;
         integ_project(it, it->y, y1, f1, trig1);
-        load_taylor(it, a0);   /* at x0: computed at the end of the previous step */
-        integ_taylor(it->w0sq, y1[0], y1[1], trig1, a1);
-        integ_taylor_scale(a0, h, left);
-        integ_taylor_scale(a1, h, right);
+        integ_taylor(w0sq_h2, x0, v0 * h, it->dense[TRIG_ROW], left);   /* sin/cos of x0: stored */
+        integ_taylor(w0sq_h2, y1[0], y1[1] * h, trig1, right);
         integ_hermite_setup(left, right, it->dense);
-        store_taylor(it, a1);
+        it->dense[TRIG_ROW][0] = trig1[0];
+        it->dense[TRIG_ROW][1] = trig1[1];
         integ_accept(it, h, y1, f1);
         it->h = hnew;
         return 0;
