@@ -9,14 +9,10 @@
 
 int pendulum_exact_abi(void) { return PENDULUM_EXACT_ABI; }
 
-/* The same w0 as the FMU's initialization: sqrt(g / L), refused unless finite and > 0. */
+/* The same set-up as the FMU's initialization: sqrt(g / L) of the two doubles as given. */
 static int set_up(PendulumExact *ex, double theta0, double omega0, double L, double g)
 {
-    double w0sq = g / L;
-    if (!(L > 0.0) || !(g > 0.0) || !isfinite(L) || !isfinite(g) || !(w0sq > 0.0) || !isfinite(w0sq)) {
-        return -1;
-    }
-    return pendulum_exact_init(ex, theta0, omega0, sqrt(w0sq), 0.0);
+    return pendulum_exact_init_gl(ex, theta0, omega0, g, L, 0.0);
 }
 
 /* Equal as bit patterns: -0.0 and 0.0 differ (they may set up different solutions). */
@@ -40,7 +36,7 @@ size_t pendulum_exact_many(size_t n, const double *theta0, const double *omega0,
         if (!same) {
             ready = set_up(&ex, theta0[i], omega0[i], L[i], g[i]) == 0 ? 1 : -1;
         }
-        if (ready == 1 && isfinite(t[i])) {
+        if (ready == 1 && pendulum_exact_resolvable(&ex, t[i])) {
             pendulum_exact_eval(&ex, t[i], &theta[i], &omega[i]);
         } else {
             theta[i] = omega[i] = NAN;
@@ -57,7 +53,7 @@ size_t pendulum_exact_times(double theta0, double omega0, double L, double g, si
     int ready = set_up(&ex, theta0, omega0, L, g) == 0;
     size_t refused = 0;
     for (size_t i = 0; i < n; ++i) {
-        if (ready && isfinite(t[i])) {
+        if (ready && pendulum_exact_resolvable(&ex, t[i])) {
             pendulum_exact_eval(&ex, t[i], &theta[i], &omega[i]);
         } else {
             theta[i] = omega[i] = NAN;
