@@ -13,6 +13,7 @@ the agreement table the README quotes::
 from __future__ import annotations
 
 import os
+import re
 import shutil
 import struct
 import subprocess
@@ -64,14 +65,18 @@ def extract_fmu(fmu: Path, folder: Path) -> Path:
     return folder
 
 
-def build_program(target: Target, source: Path, library: Path, sources_dir: Path) -> Path:
-    """Compile ``source`` for ``target``, linked against ``library``, into the library's folder.
+def build_program(target: Target, source: Path, library: Path, sources_dir: Path, folder: Path) -> Path:
+    """Compile ``source`` for ``target`` into ``folder``, linked against a copy of ``library``.
 
     The program lands beside the library, so the loader finds it there (the DLL search order
     on Windows, ``$ORIGIN`` as the run path on Linux).
     """
+    folder.mkdir(parents=True, exist_ok=True)
+    if library.parent.resolve() != folder.resolve():
+        shutil.copyfile(library, folder / library.name)
+        library = folder / library.name
     suffix = ".exe" if target is WIN64 else ""
-    program = library.parent / f"{source.stem}{suffix}"
+    program = folder / f"{source.stem}{suffix}"
     rpath = [] if target is WIN64 else ["-Wl,-rpath,$ORIGIN", "-lm"]
     subprocess.run([target.compiler, *C_FLAGS, f"-I{sources_dir}", str(source), str(library), *rpath,
                     "-o", str(program)], check=True, capture_output=True, text=True)
@@ -97,9 +102,9 @@ def parse_results(text: str) -> Results:
     return results
 
 
-def results_of(target: Target, library: Path, sources_dir: Path) -> Results:
-    """Build and run ``fmu_results`` for ``target`` against ``library``; its parsed output."""
-    done = run_program(target, build_program(target, RESULTS, library, sources_dir))
+def results_of(target: Target, library: Path, sources_dir: Path, folder: Path) -> Results:
+    """Build ``fmu_results`` for ``target`` against ``library`` in ``folder``, run it, parse it."""
+    done = run_program(target, build_program(target, RESULTS, library, sources_dir, folder))
     if done.returncode != 0:
         raise RuntimeError(f"fmu_results on {target.name} failed ({done.returncode}):\n{done.stderr[-2000:]}")
     return parse_results(done.stdout)
@@ -116,7 +121,7 @@ def _table(fmu: Path, work: Path) -> list[tuple[str, dict[str, float] | str]]:
     """Every comparison with the linux64 binary of ``fmu``: (what, differences or why not run)."""
     unpacked = extract_fmu(fmu, work / "fmu")
     sources = unpacked / "sources"
-    reference = results_of(LINUX64, unpacked / "binaries/linux64/Pendulum.so", sources)
+    reference = results_of(LINUX64, unpacked / "binaries/linux64/Pendulum.so", sources, work / "linux64")
     cross = fmu.parent / "cross"
     rows: list[tuple[str, dict[str, float] | str]] = []
 
@@ -125,10 +130,8 @@ def _table(fmu: Path, work: Path) -> list[tuple[str, dict[str, float] | str]]:
         if why_not:
             rows.append((label, why_not))
             return
-        copy = work / label.split()[0] / library.name
-        copy.parent.mkdir(parents=True, exist_ok=True)
-        shutil.copyfile(library, copy)
-        rows.append((label, max_differences(reference, results_of(target, copy, sources))))
+        folder = work / re.sub(r"\W+", "-", label)
+        rows.append((label, max_differences(reference, results_of(target, library, sources, folder))))
 
     compare("host-gcc build/Pendulum.so (native)", LINUX64, fmu.parent / "Pendulum.so")
     compare("win64 Pendulum.dll from the FMU (wine)", WIN64, unpacked / "binaries/win64/Pendulum.dll")

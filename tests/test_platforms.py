@@ -70,9 +70,10 @@ def unpacked(fmu_path: Path, tmp_path_factory: pytest.TempPathFactory) -> Path:
 
 
 @pytest.fixture(scope="module")
-def linux64_results(unpacked: Path) -> dict:
+def linux64_results(unpacked: Path, tmp_path_factory: pytest.TempPathFactory) -> dict:
     """The seed's runs through the FMU's linux64 binary, run natively: the reference."""
-    return results_of(LINUX64, unpacked / "binaries/linux64/Pendulum.so", unpacked / "sources")
+    return results_of(LINUX64, unpacked / "binaries/linux64/Pendulum.so", unpacked / "sources",
+                      tmp_path_factory.mktemp("linux64"))
 
 
 def binary(unpacked: Path, platform: str) -> Path:
@@ -124,13 +125,13 @@ def test_linux64_exports_only_fmi2(unpacked: Path) -> None:
     assert {line.split()[-1] for line in nm.splitlines()} == fmi2_functions()
 
 
-def test_linux64_binary_gives_the_host_builds_results_bit_for_bit(fmu_path: Path, unpacked: Path,
+def test_linux64_binary_gives_the_host_builds_results_bit_for_bit(fmu_path: Path, unpacked: Path, tmp_path: Path,
                                                                   linux64_results: dict) -> None:
     """zig (clang) at glibc 2.17 against gcc with the build machine's glibc."""
     host = fmu_path.parent / "Pendulum.so"
     if not host.is_file():
         pytest.skip(f"{host}: no host build beside the FMU")
-    assert results_of(LINUX64, host, unpacked / "sources") == linux64_results
+    assert results_of(LINUX64, host, unpacked / "sources", tmp_path) == linux64_results
 
 
 # --- win64 -----------------------------------------------------------------------------------
@@ -154,53 +155,46 @@ def test_win64_dll_needs_only_dlls_every_windows_has(unpacked: Path) -> None:
     assert all(n == "KERNEL32.dll" or re.fullmatch(r"api-ms-win-crt-[a-z]+-l1-1-0\.dll", n) for n in imported), imported
 
 
-@pytest.fixture(scope="module")
-def win64_folder(unpacked: Path, tmp_path_factory: pytest.TempPathFactory) -> Path:
-    """A folder holding a copy of the FMU's Pendulum.dll, where the Windows programs go."""
-    folder = tmp_path_factory.mktemp("win64")
-    shutil.copyfile(binary(unpacked, "win64"), folder / "Pendulum.dll")
-    return folder
-
-
-def test_win64_fmi_harness_passes_under_wine(win64_folder: Path, unpacked: Path) -> None:
+def test_win64_fmi_harness_passes_under_wine(unpacked: Path, tmp_path: Path) -> None:
     require(WIN64)
-    done = run_program(WIN64, build_program(WIN64, HARNESS, win64_folder / "Pendulum.dll", unpacked / "sources"))
+    done = run_program(WIN64, build_program(WIN64, HARNESS, binary(unpacked, "win64"), unpacked / "sources", tmp_path))
     assert done.returncode == 0, done.stdout[-3000:] + done.stderr[-3000:]
     assert re.search(r"test_fmi_api: \d+ checks, 0 failed", done.stdout)
 
 
-def test_win64_results_agree_with_linux64(win64_folder: Path, unpacked: Path, linux64_results: dict) -> None:
+def test_win64_results_agree_with_linux64(unpacked: Path, tmp_path: Path, linux64_results: dict) -> None:
     require(WIN64)
-    differences = max_differences(linux64_results, results_of(WIN64, win64_folder / "Pendulum.dll",
-                                                              unpacked / "sources"))
+    differences = max_differences(linux64_results, results_of(WIN64, binary(unpacked, "win64"),
+                                                              unpacked / "sources", tmp_path))
     print(f"win64 under wine vs linux64: {differences}")
     assert all(d <= AGREEMENT for d in differences.values()), differences
 
 
 # --- arm64 code, as aarch64-linux under qemu ---------------------------------------------------
 
-def test_aarch64_fmi_harness_passes_under_qemu(fmu_path: Path, unpacked: Path) -> None:
+def test_aarch64_fmi_harness_passes_under_qemu(fmu_path: Path, unpacked: Path, tmp_path: Path) -> None:
     require(AARCH64)
     done = run_program(AARCH64, build_program(AARCH64, HARNESS, cross_library(fmu_path, "aarch64-linux"),
-                                              unpacked / "sources"))
+                                              unpacked / "sources", tmp_path))
     assert done.returncode == 0, done.stdout[-3000:] + done.stderr[-3000:]
     assert re.search(r"test_fmi_api: \d+ checks, 0 failed", done.stdout)
 
 
-def test_aarch64_results_agree_with_linux64(fmu_path: Path, unpacked: Path, linux64_results: dict) -> None:
+def test_aarch64_results_agree_with_linux64(fmu_path: Path, unpacked: Path, tmp_path: Path,
+                                            linux64_results: dict) -> None:
     require(AARCH64)
     differences = max_differences(linux64_results, results_of(AARCH64, cross_library(fmu_path, "aarch64-linux"),
-                                                              unpacked / "sources"))
+                                                              unpacked / "sources", tmp_path))
     print(f"aarch64 under qemu vs linux64: {differences}")
     assert all(d <= AGREEMENT for d in differences.values()), differences
 
 
-def test_contraction_is_what_separates_arm64_from_x86_64(fmu_path: Path, unpacked: Path,
+def test_contraction_is_what_separates_arm64_from_x86_64(fmu_path: Path, unpacked: Path, tmp_path: Path,
                                                          linux64_results: dict) -> None:
     """The same arm64 build with -ffp-contract=fast (clang's FMA fusion) does not reproduce the
     linux64 results: -ffp-contract=off is what makes the agreement above exact."""
     require(AARCH64)
-    fused = results_of(AARCH64, cross_library(fmu_path, "aarch64-linux-contract"), unpacked / "sources")
+    fused = results_of(AARCH64, cross_library(fmu_path, "aarch64-linux-contract"), unpacked / "sources", tmp_path)
     assert max(max_differences(linux64_results, fused).values()) > 0.0
 
 
@@ -249,3 +243,19 @@ def test_fat_writer_refuses_what_is_not_a_64_bit_mach_o(tmp_path: Path) -> None:
     arm64 = (0xFEEDFACF).to_bytes(4, "little") + (0x0100000C).to_bytes(4, "little") + bytes(24)
     with pytest.raises(ValueError, match="same architecture"):
         fat_binary([thin_slice(arm64, "a"), thin_slice(arm64, "b")])
+
+
+# --- the wheel -------------------------------------------------------------------------------
+
+def test_wheel_is_py3_none_any_and_carries_all_three_binaries(tmp_path: Path) -> None:
+    """``pip wheel .`` as a user runs it (isolated build environment, zig from the ziglang build
+    requirement), into build-wheel/ (its first run compiles zig's C runtimes, about 2 min)."""
+    done = subprocess.run([sys.executable, "-m", "pip", "wheel", str(REPO_ROOT), "--no-deps", "-w", str(tmp_path)],
+                          capture_output=True, text=True, check=False, timeout=1200)
+    assert done.returncode == 0, done.stdout[-3000:] + done.stderr[-3000:]
+    wheels = list(tmp_path.glob("*.whl"))
+    assert [w.name.split("-", 2)[2] for w in wheels] == ["py3-none-any.whl"]
+    with zipfile.ZipFile(wheels[0]) as wheel:
+        fmu = tmp_path / "Pendulum.fmu"
+        fmu.write_bytes(wheel.read("pendulum_fmu/Pendulum.fmu"))
+    assert set(supported_platforms(str(fmu))) == {"linux64", "win64", "darwin64", "c-code"}
