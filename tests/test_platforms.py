@@ -19,7 +19,7 @@ from fmpy import supported_platforms
 
 from pendulum_fmu.build import REPO_ROOT
 from platform_runs import (AARCH64, HARNESS, INSTALL, LINUX64, WIN64, Target, build_program, extract_fmu,
-                           max_differences, results_of, run_program)
+                           fma_errors, max_differences, results_of, run_program, zig_win64)
 
 sys.path.insert(0, str(REPO_ROOT / "cmake"))
 from fat_macho import fat_binary, thin_slice  # noqa: E402
@@ -168,6 +168,14 @@ def test_win64_results_agree_with_linux64(unpacked: Path, tmp_path: Path, linux6
                                                               unpacked / "sources", tmp_path))
     print(f"win64 under wine vs linux64: {differences}")
     assert all(d <= AGREEMENT for d in differences.values()), differences
+
+
+def test_win64_fma_is_correctly_rounded(fmu_path: Path, tmp_path: Path) -> None:
+    """fma() as the win64 binary gets it (zig's toolchain) against the exactly rounded a*b + c.
+    elliptic.c and exact.c need it; mingw-w64's is not (README, "Platforms")."""
+    target = zig_win64(fmu_path.parent / "zig-cache")
+    require(target)
+    assert fma_errors(target, tmp_path) == 0
 
 
 # --- arm64 code, as aarch64-linux under qemu ---------------------------------------------------
