@@ -16,8 +16,12 @@ import-hook-driven build of the same tree. So:
 - if CMake is missing or fails, the install goes on with a warning, and the package falls
   back at run time to ``find_fmu()``/``locate_fmu()``, which build or report a missing build.
 
+A regular install or wheel builds the multi-platform FMU (linux64, win64, darwin64; zig
+from the ``ziglang`` build requirement, README "Platforms") in ``build-wheel/``.
+
 Environment: ``PENDULUM_FMU_SKIP_BUILD=1`` skips the build, ``PENDULUM_FMU_BUILD_DIR``
-chooses the CMake build folder (default ``build/`` beside this file).
+chooses the CMake build folder (default ``build/`` beside this file, ``build-wheel/`` for a
+regular install or a wheel).
 """
 
 from __future__ import annotations
@@ -52,19 +56,48 @@ def working_cmake() -> str | None:
     return None
 
 
-def build_fmu() -> Path | None:
-    """Configure and build the ``fmu`` and ``pendulum_exact`` targets; the build folder, or None (with a warning)."""
+def zig_path() -> str | None:
+    """The zig of the ``ziglang`` package in this build environment (pyproject's requires)."""
+    try:
+        import ziglang  # noqa: PLC0415 (a build requirement, absent in a plain checkout)
+    except ImportError:
+        return None
+    return str(Path(ziglang.__file__).with_name("zig"))
+
+
+def platform_options() -> list[str]:
+    """CMake options for an FMU with linux64, win64 and darwin64 binaries (cross-built with
+    zig, README "Platforms"): what a py3-none-any wheel must carry."""
+    zig = zig_path()
+    if zig is None:
+        print("warning: pendulum-fmu: no ziglang in the build environment: the FMU gets only the "
+              "host's binary", file=sys.stderr)
+        return []
+    return ["-DPENDULUM_PLATFORMS=ON", f"-DPENDULUM_ZIG={zig}", f"-DPENDULUM_PYTHON={sys.executable}"]
+
+
+def build_fmu(platforms: bool = False) -> Path | None:
+    """Configure and build the ``fmu`` and ``pendulum_exact`` targets; the build folder, or None
+    (with a warning).
+
+    ``platforms``: also the win64 and darwin64 binaries and exact libraries (a wheel); an
+    editable install keeps the build folder's own setting (scripts/build-fmu.sh switches it on).
+    """
     if os.environ.get("PENDULUM_FMU_SKIP_BUILD"):
         return None
-    build_dir = Path(os.environ.get("PENDULUM_FMU_BUILD_DIR") or ROOT / "build")
+    # A wheel's build gets its own folder: the zig it configures lives in pip's temporary
+    # build environment, which must not end up in the cache of the development build/.
+    default_dir = ROOT / ("build-wheel" if platforms else "build")
+    build_dir = Path(os.environ.get("PENDULUM_FMU_BUILD_DIR") or default_dir)
     cmake = working_cmake()
     if cmake is None or not (ROOT / "CMakeLists.txt").is_file():
         print("warning: pendulum-fmu: no cmake (or no CMakeLists.txt): Pendulum.fmu not built; "
               "it is looked for at run time", file=sys.stderr)
         return None
-    commands = [[cmake, "-S", str(ROOT), "-B", str(build_dir), "-DCMAKE_BUILD_TYPE=Release"],
-                [cmake, "--build", str(build_dir), "--target", "fmu", "pendulum_exact", "--parallel",
-                 str(os.cpu_count() or 1)]]
+    options = platform_options() if platforms else []
+    targets = ["fmu", "pendulum_exact"] + (["pendulum_exact_platforms"] if options else [])
+    commands = [[cmake, "-S", str(ROOT), "-B", str(build_dir), "-DCMAKE_BUILD_TYPE=Release", *options],
+                [cmake, "--build", str(build_dir), "--target", *targets, "--parallel", str(os.cpu_count() or 1)]]
     for command in commands:
         done = subprocess.run(command, capture_output=True, text=True, check=False)
         if done.returncode != 0:
@@ -89,7 +122,7 @@ class BuildPyWithFmu(build_py):
 
     def run(self) -> None:
         super().run()
-        build_dir = build_fmu()
+        build_dir = build_fmu(platforms=not self.editable_mode)
         if build_dir is None or self.editable_mode:
             return
         package = Path(self.build_lib) / "pendulum_fmu"

@@ -2,9 +2,8 @@
 # All tests from scratch: C unit tests (ctest) in a normal and a sanitizer build, then pytest.
 source "$(dirname "${BASH_SOURCE[0]}")/setup-env.sh"
 jobs="$(nproc)"
-echo "== C tests (Release)"
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release > /dev/null
-cmake --build build --parallel "$jobs" > /dev/null
+echo "== C tests (Release; the build also makes the linux64/win64/darwin64 FMU, scripts/build-fmu.sh)"
+bash scripts/build-fmu.sh > /dev/null
 ctest --test-dir build --output-on-failure
 echo "== C tests (AddressSanitizer + UndefinedBehaviorSanitizer)"
 cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Debug -DPENDULUM_SANITIZE=ON > /dev/null
