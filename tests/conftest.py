@@ -1,7 +1,11 @@
-"""Shared fixtures: the FMU under test (``$PENDULUM_FMU`` or the default build)."""
+"""Shared fixtures: the FMU under test (``$PENDULUM_FMU`` or the default build), and the wheel."""
 
 from __future__ import annotations
 
+import os
+import shutil
+import subprocess
+import sys
 from pathlib import Path
 
 import pytest
@@ -15,3 +19,26 @@ def fmu_path() -> Path:
     path = find_fmu()
     assert path.exists(), f"no FMU at {path}"
     return path
+
+
+REPO = Path(__file__).resolve().parents[1]
+
+
+@pytest.fixture(scope="session")
+def built_wheel(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """The wheel as a user builds it: ``pip wheel . --no-deps`` (isolated build environment, zig
+    from the ``ziglang`` build requirement), built once per session.
+
+    CMake builds into ``build/wheel-cmake/`` (incremental: the cmake on PATH may differ from the
+    one that configured ``build/``, and CMake refuses a folder another version configured).
+    """
+    wheels = tmp_path_factory.mktemp("wheels")
+    for scratch in [REPO / "build" / "lib", *(REPO / "build").glob("bdist.*")]:  # setuptools' staging
+        shutil.rmtree(scratch, ignore_errors=True)
+    env = dict(os.environ, PENDULUM_FMU_BUILD_DIR=str(REPO / "build" / "wheel-cmake"))
+    env.pop("PENDULUM_FMU", None)
+    built = subprocess.run([sys.executable, "-m", "pip", "wheel", ".", "--no-deps", "-v", "-w", str(wheels)],
+                           cwd=REPO, env=env, capture_output=True, text=True, timeout=1200, check=False)
+    assert built.returncode == 0, built.stdout[-6000:] + built.stderr[-3000:]
+    wheel, = wheels.glob("pendulum_fmu-*.whl")
+    return wheel

@@ -31,19 +31,9 @@ def _run(command: list[str], cwd: Path, env: dict[str, str] | None = None,
 
 
 @pytest.fixture(scope="module")
-def installed(tmp_path_factory: pytest.TempPathFactory) -> Path:
+def installed(built_wheel: Path) -> Path:
     """The ``pendulum-fmu`` program of a fresh environment with the wheel installed."""
-    wheels = tmp_path_factory.mktemp("wheels")
-    for scratch in [REPO / "build" / "lib", *(REPO / "build").glob("bdist.*")]:  # setuptools' staging: no stale files
-        shutil.rmtree(scratch, ignore_errors=True)
-    # A CMake build folder of its own: the cmake on PATH (pip's, in .venv) may differ from the one
-    # that configured build/, and CMake refuses a build folder another version configured.
-    env = dict(os.environ, PENDULUM_FMU_BUILD_DIR=str(REPO / "build" / "wheel-cmake"))
-    env.pop("PENDULUM_FMU", None)
-    built = _run([sys.executable, "-m", "pip", "wheel", ".", "--no-deps", "-q",
-                  "-w", str(wheels)], REPO, env)
-    assert built.returncode == 0, built.stderr[-3000:]
-    wheel, = wheels.glob("pendulum_fmu-*.whl")
+    wheel = built_wheel
     assert wheel.name.endswith("-py3-none-any.whl")
     names = zipfile.ZipFile(wheel).namelist()
     assert "pendulum_fmu/Pendulum.fmu" in names and "pendulum_fmu/lib/linux64/libpendulum_exact.so" in names
