@@ -17,7 +17,7 @@ from pathlib import Path
 import pytest
 from fmpy import supported_platforms
 
-from pendulum_fmu.build import REPO_ROOT
+from pendulum_fmu.fmu.build import REPO_ROOT
 from platform_runs import (AARCH64, HARNESS, INSTALL, LINUX64, WIN64, Target, build_program, extract_fmu,
                            fma_errors, max_differences, results_of, run_program, zig_win64)
 
