@@ -17,7 +17,7 @@
  * dK/dp = (E - p1 K) / (2 p p1) (DLMF 19.4.1), with E - p1 K = K (p/2 - sum_{n>=1} 2^(n-1) c_n^2)
  * from the AGM (DLMF 19.8.6), c_{n+1} = c_n^2 / (4 a_{n+1}) without cancellation. */
 static double dK_dp(double p, double p1, double K) {
-    double a = 1.0, b = sqrt(p1), c = sqrt(p), sum = 0.0, weight = 0.5;
+    double a = 1.0, b = sqrt(p1), c = sqrt(p), sum = 0.0, weight = 1.0; /* 2^(n-1), n = 1 */
     int n;
     if (p == 0.0) {
         return 0.39269908169872414; /* pi/8: K = pi/2 (1 + p/4 + ...) */
