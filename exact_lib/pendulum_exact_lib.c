@@ -9,14 +9,15 @@
 
 int pendulum_exact_abi(void) { return PENDULUM_EXACT_ABI; }
 
-/* The same w0 as the FMU's initialization: sqrt(g / L), refused unless finite and > 0. */
+/* The same solution as the FMU's initialization (model.c): set up from g and L as given, w0 in
+ * double-double (pendulum_exact_init_gl), refused unless g / L is finite and > 0. */
 static int set_up(PendulumExact *ex, double theta0, double omega0, double L, double g)
 {
     double w0sq = g / L;
     if (!(L > 0.0) || !(g > 0.0) || !isfinite(L) || !isfinite(g) || !(w0sq > 0.0) || !isfinite(w0sq)) {
         return -1;
     }
-    return pendulum_exact_init(ex, theta0, omega0, sqrt(w0sq), 0.0);
+    return pendulum_exact_init_gl(ex, theta0, omega0, g, L, 0.0);
 }
 
 /* Equal as bit patterns: -0.0 and 0.0 differ (they may set up different solutions). */
