@@ -7,7 +7,6 @@ test_seed_study.py (fixture fmu_any)."""
 from __future__ import annotations
 
 import math
-import shutil
 import zipfile
 from pathlib import Path
 from xml.etree import ElementTree
@@ -16,9 +15,9 @@ import mpmath as mp
 import numpy as np
 import pytest
 from fmpy import simulate_fmu
-from fmpy.build import build_platform_binary
 from fmpy.validation import validate_fmu
 
+from fmu_rebuild import rebuild_from_sources
 from pendulum_fmu.bench.reference import closed_form, exact_frequency, max_abs_diff
 
 SOLVERS = {"dopri5": 1, "rk4": 2, "rkn": 3, "symplectic": 4}
@@ -99,12 +98,7 @@ def test_exact_port_against_mpmath_in_every_regime(fmu3_path: Path, regime: str)
 
 
 def test_rebuilt_from_its_build_description_gives_the_same_results(fmu3_path: Path, tmp_path: Path) -> None:
-    unzipped = tmp_path / "unzipped"
-    with zipfile.ZipFile(fmu3_path) as archive:
-        archive.extractall(unzipped)
-    shutil.rmtree(unzipped / "binaries")
-    (tmp_path / "cmake-build").mkdir()
-    build_platform_binary(unzipped, build_dir=tmp_path / "cmake-build")
+    unzipped = rebuild_from_sources(fmu3_path, tmp_path)
     assert (unzipped / "binaries/x86_64-linux/Pendulum.so").exists()
     start = {"theta": math.radians(80.0)}
     original = _run(fmu3_path, start)

@@ -4,19 +4,17 @@ targets hold for the FMI 2.0 and the FMI 3.0 FMU alike (fixture fmu_any)."""
 from __future__ import annotations
 
 import math
-import shutil
-import zipfile
 from pathlib import Path
 
 import mpmath
 import numpy as np
 import pytest
 from fmpy import simulate_fmu
-from fmpy.build import build_platform_binary
 from scipy.special import ellipk
 
 from pendulum_fmu.fmu.period import measured_period
 from pendulum_fmu.fmu.simulate import Scenario, simulate
+from fmu_rebuild import rebuild_from_sources
 from reference_cache import cached
 
 SEED_AMPLITUDES = (75.0, 80.0, 85.0, 90.0)
@@ -84,12 +82,7 @@ def test_coarse_and_fine_communication_grids_agree(fmu_any: Path) -> None:
 
 
 def test_fmu_rebuilt_from_its_sources_gives_the_same_results(fmu_path: Path, tmp_path: Path) -> None:
-    unzipped = tmp_path / "unzipped"
-    with zipfile.ZipFile(fmu_path) as archive:
-        archive.extractall(unzipped)
-    shutil.rmtree(unzipped / "binaries")
-    (tmp_path / "cmake-build").mkdir()
-    build_platform_binary(unzipped, build_dir=tmp_path / "cmake-build")
+    unzipped = rebuild_from_sources(fmu_path, tmp_path)
     assert (unzipped / "binaries/linux64/Pendulum.so").exists()
     scenario = Scenario(amplitude_deg=80.0, periods=2)
     original = simulate(fmu_path, scenario, "CS").result

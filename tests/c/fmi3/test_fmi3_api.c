@@ -8,19 +8,12 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "../check.h"
 #include "fmi3Functions.h"
 #include "pendulum_vrs.h"
 
-static int checks, failures;
-
-#define CHECK(condition, what)                                                        \
-    do {                                                                              \
-        checks++;                                                                     \
-        if (!(condition)) {                                                           \
-            failures++;                                                               \
-            fprintf(stderr, "%s:%d: FAILED: %s\n", __FILE__, __LINE__, what);         \
-        }                                                                             \
-    } while (0)
+/* One check, named by what it checks (check.h counts it and prints the failures). */
+#define CHECK(condition, what) check((condition) != 0, "%s", what)
 
 typedef struct {
     int errors;
@@ -39,11 +32,7 @@ static void capture_logger(fmi3InstanceEnvironment env, fmi3Status status, fmi3S
 /* The call returned fmi3Error and logged a message containing `needle`. */
 static void expect_error(fmi3Status status, LogCapture *capture, const char *needle, const char *what) {
     CHECK(status == fmi3Error, what);
-    checks++;
-    if (strstr(capture->last, needle) == NULL) {
-        failures++;
-        fprintf(stderr, "FAILED: %s: log \"%s\" lacks \"%s\"\n", what, capture->last, needle);
-    }
+    check(strstr(capture->last, needle) != NULL, "%s: log \"%s\" lacks \"%s\"", what, capture->last, needle);
 }
 
 static fmi3Instance cs_instance(LogCapture *capture) {
@@ -186,6 +175,5 @@ int main(void) {
     test_calling_sequence_and_bad_input();
     test_states_round_trip();
     test_model_exchange_and_derivatives();
-    printf("test_fmi3_api: %d checks, %d failed\n", checks, failures);
-    return failures == 0 ? 0 : 1;
+    return check_summary("test_fmi3_api");
 }
