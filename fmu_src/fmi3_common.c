@@ -166,57 +166,62 @@ static int integers_allowed(fmi3Instance instance, const char *function, unsigne
     return 1;
 }
 
-fmi3Status fmi3GetInt32(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr, fmi3Int32 values[],
-                        size_t nValues) {
+/* Int32 (enumeration = 0: the statistics) or Int64 (1: the solver) values, read or written. */
+static fmi3Status get_integers(fmi3Instance instance, const char *function, const fmi3ValueReference vr[], size_t nvr,
+                               void *values, size_t n_values, int enumeration) {
     size_t i;
     long got = 0;
-    if (!integers_allowed(instance, "fmi3GetInt32", GET_MODES, vr, nvr, values, nValues, 0)) {
-        return fmi3Error;
-    }
-    for (i = 0; i < nvr && instance_get_integer(instance, "fmi3GetInt32", vr[i], &got) == STATUS_OK; i++) {
-        values[i] = (fmi3Int32)got;
-    }
-    return i == nvr ? fmi3OK : fmi3Error;
-}
-
-fmi3Status fmi3SetInt32(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr, const fmi3Int32 values[],
-                        size_t nValues) {
-    size_t i;
-    if (!integers_allowed(instance, "fmi3SetInt32", SET_MODES, vr, nvr, values, nValues, 0)) {
-        return fmi3Error;
-    }
-    for (i = 0; i < nvr && instance_set_integer(instance, "fmi3SetInt32", vr[i], values[i]) == STATUS_OK; i++) {
-    }
-    return i == nvr ? fmi3OK : fmi3Error;
-}
-
-fmi3Status fmi3GetInt64(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr, fmi3Int64 values[],
-                        size_t nValues) {
-    size_t i;
-    long got = 0;
-    if (!integers_allowed(instance, "fmi3GetInt64", GET_MODES, vr, nvr, values, nValues, 1)) {
-        return fmi3Error;
-    }
-    for (i = 0; i < nvr && instance_get_integer(instance, "fmi3GetInt64", vr[i], &got) == STATUS_OK; i++) {
-        values[i] = got;
-    }
-    return i == nvr ? fmi3OK : fmi3Error;
-}
-
-fmi3Status fmi3SetInt64(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr, const fmi3Int64 values[],
-                        size_t nValues) {
-    size_t i;
-    if (!integers_allowed(instance, "fmi3SetInt64", SET_MODES, vr, nvr, values, nValues, 1)) {
+    if (!integers_allowed(instance, function, GET_MODES, vr, nvr, values, n_values, enumeration)) {
         return fmi3Error;
     }
     for (i = 0; i < nvr; i++) {
-        /* beyond a 32-bit long it is no item of Solver either: narrowed, it is refused as such */
-        long value = values[i] > 2147483647 ? 2147483647L : values[i] < -2147483647 ? -2147483647L : (long)values[i];
-        if (instance_set_integer(instance, "fmi3SetInt64", vr[i], value) != STATUS_OK) {
+        if (instance_get_integer(instance, function, vr[i], &got) != STATUS_OK) {
+            return fmi3Error;
+        }
+        if (enumeration) {
+            ((fmi3Int64 *)values)[i] = got;
+        } else {
+            ((fmi3Int32 *)values)[i] = (fmi3Int32)got;
+        }
+    }
+    return fmi3OK;
+}
+
+static fmi3Status set_integers(fmi3Instance instance, const char *function, const fmi3ValueReference vr[], size_t nvr,
+                               const void *values, size_t n_values, int enumeration) {
+    size_t i;
+    if (!integers_allowed(instance, function, SET_MODES, vr, nvr, values, n_values, enumeration)) {
+        return fmi3Error;
+    }
+    for (i = 0; i < nvr; i++) {
+        /* an Int64 beyond a 32-bit long is no item of Solver either: narrowed, it is refused as such */
+        fmi3Int64 wide = enumeration ? ((const fmi3Int64 *)values)[i] : ((const fmi3Int32 *)values)[i];
+        long value = wide > 2147483647 ? 2147483647L : wide < -2147483647 ? -2147483647L : (long)wide;
+        if (instance_set_integer(instance, function, vr[i], value) != STATUS_OK) {
             return fmi3Error;
         }
     }
     return fmi3OK;
+}
+
+fmi3Status fmi3GetInt32(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr, fmi3Int32 values[],
+                        size_t nValues) {
+    return get_integers(instance, "fmi3GetInt32", vr, nvr, values, nValues, 0);
+}
+
+fmi3Status fmi3SetInt32(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr, const fmi3Int32 values[],
+                        size_t nValues) {
+    return set_integers(instance, "fmi3SetInt32", vr, nvr, values, nValues, 0);
+}
+
+fmi3Status fmi3GetInt64(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr, fmi3Int64 values[],
+                        size_t nValues) {
+    return get_integers(instance, "fmi3GetInt64", vr, nvr, values, nValues, 1);
+}
+
+fmi3Status fmi3SetInt64(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr, const fmi3Int64 values[],
+                        size_t nValues) {
+    return set_integers(instance, "fmi3SetInt64", vr, nvr, values, nValues, 1);
 }
 
 /* Types the model has no variable of: any value reference is unknown. */
