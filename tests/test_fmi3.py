@@ -7,6 +7,8 @@ test_seed_study.py (fixture fmu_any)."""
 from __future__ import annotations
 
 import math
+import re
+import subprocess
 import zipfile
 from pathlib import Path
 from xml.etree import ElementTree
@@ -14,7 +16,9 @@ from xml.etree import ElementTree
 import mpmath as mp
 import numpy as np
 import pytest
-from fmpy import simulate_fmu
+import fmpy
+from fmpy import extract, read_model_description, simulate_fmu
+from fmpy.fmi3 import FMU3Slave
 from fmpy.validation import validate_fmu
 
 from fmu_rebuild import rebuild_from_sources
@@ -105,3 +109,34 @@ def test_rebuilt_from_its_build_description_gives_the_same_results(fmu3_path: Pa
     rebuilt = _run(unzipped, start)
     for name in OUTPUTS:
         assert np.allclose(rebuilt[name], original[name], rtol=0, atol=1e-12), name
+
+
+def test_exports_exactly_the_fmi3_functions(fmu3_path: Path, tmp_path: Path) -> None:
+    """Every function the FMI 3.0 header declares, and nothing else (the core stays hidden)."""
+    header = (Path(fmpy.__file__).parent / "c-code" / "fmi3Functions.h").read_text()
+    declared = set(re.findall(r"#define (fmi3\w+)\s+fmi3FullName", header))
+    with zipfile.ZipFile(fmu3_path) as archive:
+        archive.extract("binaries/x86_64-linux/Pendulum.so", tmp_path)
+    nm = subprocess.run(["nm", "-D", "--defined-only", str(tmp_path / "binaries/x86_64-linux/Pendulum.so")],
+                        capture_output=True, text=True, check=True).stdout
+    exported = {line.split()[-1] for line in nm.splitlines() if line.split()[1] in "TtDdBbRr"}
+    assert len(declared) == 75 and exported == declared
+
+
+def test_start_values_of_the_binary_match_its_xml(fmu3_path: Path) -> None:
+    md = read_model_description(str(fmu3_path))
+    instance = FMU3Slave(guid=md.instantiationToken, unzipDirectory=extract(str(fmu3_path)),
+                         modelIdentifier="Pendulum", instanceName="start-values")
+    instance.instantiate()
+    instance.enterInitializationMode(startTime=0.0)
+    checked = 0
+    for variable in md.modelVariables:
+        if variable.start is None:
+            continue
+        if variable.type == "Float64":
+            assert instance.getFloat64([variable.valueReference])[0] == float(variable.start), variable.name
+        else:
+            assert instance.getInt64([variable.valueReference])[0] == int(variable.start), variable.name
+        checked += 1
+    assert checked == 5
+    instance.freeInstance()
