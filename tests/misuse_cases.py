@@ -2,6 +2,9 @@
 
 Usage: ``python misuse_cases.py CASE FMU_PATH``. Prints the FMU's log lines (fmpy's default
 logger) and a final line ``RESULT <exception text or OK>``; a crash shows as a bad exit code.
+The FMI 3.0 FMU runs the same scenarios through :class:`Fmi3Calls`, which speaks 3.0 in the
+words of 2.0 (setReal is fmi3SetFloat64, setupExperiment's arguments go to
+fmi3EnterInitializationMode, ...).
 """
 
 from __future__ import annotations
@@ -15,14 +18,47 @@ from tempfile import mkdtemp
 
 from fmpy import read_model_description
 from fmpy.fmi2 import FMU2Model, FMU2Slave
+from fmpy.fmi3 import FMU3Model, FMU3Slave
 
 VR = {"L": 1, "g": 2, "theta": 3, "omega": 5, "theta_exact": 7, "period": 9, "solver": 12}
+
+
+class Fmi3Calls:
+    """An fmpy FMI 3.0 instance with the FMI 2.0 method names the scenarios use."""
+
+    def __init__(self, instance: FMU3Slave | FMU3Model) -> None:
+        self.instance = instance
+        self.experiment: dict[str, float | None] = {"tolerance": None, "startTime": 0.0}
+
+    def setupExperiment(self, tolerance: float | None = None, startTime: float = 0.0) -> None:
+        self.experiment = {"tolerance": tolerance, "startTime": startTime}
+
+    def enterInitializationMode(self) -> None:
+        self.instance.enterInitializationMode(**self.experiment)
+
+    def setReal(self, vr: list[int], values: list[float]) -> None:
+        self.instance.setFloat64(vr, values)
+
+    def getReal(self, vr: list[int]) -> list[float]:
+        return self.instance.getFloat64(vr)
+
+    def setInteger(self, vr: list[int], values: list[int]) -> None:
+        self.instance.setInt64(vr, values)  # the Enumeration solver is an Int64 in FMI 3.0
+
+    def __getattr__(self, name: str) -> object:
+        return getattr(self.instance, name)
 
 
 def _slave(fmu: str, cls: type = FMU2Slave) -> FMU2Slave:
     directory = mkdtemp()
     zipfile.ZipFile(fmu).extractall(directory)
     md = read_model_description(fmu)
+    if md.fmiVersion == "3.0":
+        cls3 = FMU3Model if cls is FMU2Model else FMU3Slave
+        instance3 = cls3(guid=md.instantiationToken, unzipDirectory=directory, modelIdentifier="Pendulum",
+                         instanceName="misuse")
+        instance3.instantiate()
+        return Fmi3Calls(instance3)  # type: ignore[return-value]
     instance = cls(guid=md.guid, unzipDirectory=directory, modelIdentifier="Pendulum", instanceName="misuse")
     instance.instantiate()
     return instance
@@ -88,14 +124,17 @@ def _bad_solver(fmu: str) -> None:
 
 
 def _bad_tolerance(fmu: str) -> None:
-    _slave(fmu).setupExperiment(tolerance=-1.0, startTime=0.0)
+    slave = _slave(fmu)
+    slave.setupExperiment(tolerance=-1.0, startTime=0.0)  # FMI 2.0 refuses here
+    slave.enterInitializationMode()  # FMI 3.0 here (it takes the experiment)
 
 
 def _wrong_guid(fmu: str) -> None:
     directory = mkdtemp()
     zipfile.ZipFile(fmu).extractall(directory)
-    FMU2Slave(guid="{00000000-0000-0000-0000-000000000000}", unzipDirectory=directory,
-              modelIdentifier="Pendulum", instanceName="misuse").instantiate()
+    cls = FMU3Slave if read_model_description(fmu).fmiVersion == "3.0" else FMU2Slave
+    cls(guid="{00000000-0000-0000-0000-000000000000}", unzipDirectory=directory,
+        modelIdentifier="Pendulum", instanceName="misuse").instantiate()
 
 
 def _me_nan_state(fmu: str) -> None:

@@ -15,8 +15,8 @@ from pathlib import Path
 from pendulum_fmu.fmu.build import DEFAULT_BUILD_DIR, PACKAGED_FMU, REPO_ROOT, build_fmu, fmu_in
 from pendulum_fmu.errors import BuildError, UsageError
 
-SOURCES: tuple[str, ...] = ("fmu_src", "modelDescription.xml", "CMakeLists.txt")
-"""What the FMU is built from, relative to the repository root."""
+SOURCES: tuple[str, ...] = ("fmu_src", "modelDescription.xml", "CMakeLists.txt", "cmake", "fmi3", "reference")
+"""What the FMUs (FMI 2.0 and 3.0) are built from, relative to the repository root."""
 
 
 def newest_source_time(root: Path = REPO_ROOT) -> float:

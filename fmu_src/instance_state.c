@@ -1,4 +1,5 @@
-/* fmi2_state.c: FMU states for rollback (FMI 2.0 section 2.1.8). A state is a copy of the
+/* instance_state.c: FMU states for rollback (FMI 2.0 section 2.1.8, FMI 3.0 section 2.2.6.4),
+ * shared by both versions. A state is a copy of the
  * instance's ModelData (plain data); its serialized form is a header followed by those
  * bytes. The header carries a magic text, a format version, the payload size and an
  * FNV-1a checksum, so a blob from another build, a truncated or a corrupted one is refused.
@@ -7,7 +8,7 @@
 #include <stdint.h>
 #include <string.h>
 
-#include "fmi2_instance.h"
+#include "instance.h"
 
 #define STATE_MAGIC "PNDLSTAT"
 #define STATE_FORMAT_VERSION 3u /* 2: the solver state gained fields; 3: interface, hard-case
@@ -20,8 +21,6 @@ typedef struct {
     uint64_t checksum;
 } StateHeader;
 
-#define ANY_LIVE_MODE (MODE_INSTANTIATED | MODE_INITIALIZATION | MODE_EVENT | MODE_CONTINUOUS_TIME | \
-                       MODE_STEP_COMPLETE | MODE_TERMINATED)
 
 /* FNV-1a, 64 bit: offset basis 14695981039346656037, prime 1099511628211. */
 static uint64_t fnv1a64(const unsigned char *bytes, size_t size) {
@@ -35,88 +34,83 @@ static uint64_t fnv1a64(const unsigned char *bytes, size_t size) {
 }
 
 static ModelData *allocate_state(Instance *inst, const char *function) {
-    ModelData *copy = inst->callbacks.allocateMemory(1, sizeof *copy);
+    ModelData *copy = inst->host.allocate(inst, sizeof *copy);
     if (copy == NULL) {
         instance_fail(inst, function, "out of memory");
     }
     return copy;
 }
 
-fmi2Status fmi2GetFMUstate(fmi2Component c, fmi2FMUstate *state) {
-    Instance *inst = c;
+Status instance_get_state(Instance *inst, const char *function, void **state) {
     ModelData *copy;
-    if (!instance_allowed(inst, "fmi2GetFMUstate", ANY_LIVE_MODE)) {
-        return fmi2Error;
+    if (!instance_allowed(inst, function, ANY_LIVE_MODE)) {
+        return STATUS_ERROR;
     }
     if (state == NULL) {
-        return instance_fail(inst, "fmi2GetFMUstate", "state is NULL");
+        return instance_fail(inst, function, "state is NULL");
     }
-    /* 2.1.8: a non-NULL *state is a state of this FMU to be overwritten. */
-    copy = *state != NULL ? (ModelData *)*state : allocate_state(inst, "fmi2GetFMUstate");
+    /* FMI 2.0 2.1.8: a non-NULL *state is a state of this FMU to be overwritten. */
+    copy = *state != NULL ? (ModelData *)*state : allocate_state(inst, function);
     if (copy == NULL) {
-        return fmi2Error;
+        return STATUS_ERROR;
     }
     memcpy(copy, &inst->data, sizeof *copy); /* bytewise, padding included: the checksum sees it */
     *state = copy;
-    return fmi2OK;
+    return STATUS_OK;
 }
 
-fmi2Status fmi2SetFMUstate(fmi2Component c, fmi2FMUstate state) {
-    Instance *inst = c;
+Status instance_set_state(Instance *inst, const char *function, const void *state) {
     const char *problem;
-    if (!instance_allowed(inst, "fmi2SetFMUstate", ANY_LIVE_MODE | MODE_ERROR)) {
-        return fmi2Error;
+    if (!instance_allowed(inst, function, ANY_LIVE_MODE | MODE_ERROR)) {
+        return STATUS_ERROR;
     }
     if (state == NULL) {
-        return instance_fail(inst, "fmi2SetFMUstate", "state is NULL");
+        return instance_fail(inst, function, "state is NULL");
     }
     /* a state is memory handed back by the master: checked like a deserialized one */
     problem = model_check_state((const ModelData *)state, inst->type);
     if (problem != NULL) {
-        return instance_fail(inst, "fmi2SetFMUstate", "the state is refused: %s", problem);
+        return instance_fail(inst, function, "the state is refused: %s", problem);
     }
     memcpy(&inst->data, state, sizeof inst->data);
-    return fmi2OK;
+    return STATUS_OK;
 }
 
-fmi2Status fmi2FreeFMUstate(fmi2Component c, fmi2FMUstate *state) {
-    Instance *inst = c;
-    if (!instance_allowed(inst, "fmi2FreeFMUstate", ANY_LIVE_MODE | MODE_ERROR)) {
-        return fmi2Error;
+Status instance_free_state(Instance *inst, const char *function, void **state) {
+    if (!instance_allowed(inst, function, ANY_LIVE_MODE | MODE_ERROR)) {
+        return STATUS_ERROR;
     }
     if (state == NULL) {
-        return instance_fail(inst, "fmi2FreeFMUstate", "state is NULL");
+        return instance_fail(inst, function, "state is NULL");
     }
     if (*state != NULL) {
-        inst->callbacks.freeMemory(*state);
+        inst->host.release(inst, *state);
         *state = NULL;
     }
-    return fmi2OK;
+    return STATUS_OK;
 }
 
-fmi2Status fmi2SerializedFMUstateSize(fmi2Component c, fmi2FMUstate state, size_t *size) {
-    Instance *inst = c;
-    if (!instance_allowed(inst, "fmi2SerializedFMUstateSize", ANY_LIVE_MODE | MODE_ERROR)) {
-        return fmi2Error;
+Status instance_serialized_state_size(Instance *inst, const char *function, const void *state, size_t *size) {
+    if (!instance_allowed(inst, function, ANY_LIVE_MODE | MODE_ERROR)) {
+        return STATUS_ERROR;
     }
     if (state == NULL || size == NULL) {
-        return instance_fail(inst, "fmi2SerializedFMUstateSize", "state or size is NULL");
+        return instance_fail(inst, function, "state or size is NULL");
     }
     *size = sizeof(StateHeader) + sizeof(ModelData);
-    return fmi2OK;
+    return STATUS_OK;
 }
 
-fmi2Status fmi2SerializeFMUstate(fmi2Component c, fmi2FMUstate state, fmi2Byte bytes[], size_t size) {
-    Instance *inst = c;
+Status instance_serialize_state(Instance *inst, const char *function, const void *state, char bytes[], size_t size) {
     StateHeader header;
-    if (!instance_allowed(inst, "fmi2SerializeFMUstate", ANY_LIVE_MODE | MODE_ERROR)) {
-        return fmi2Error;
+    if (!instance_allowed(inst, function, ANY_LIVE_MODE | MODE_ERROR)) {
+        return STATUS_ERROR;
     }
     if (state == NULL || bytes == NULL) {
-        return instance_fail(inst, "fmi2SerializeFMUstate", "state or bytes is NULL");
+        return instance_fail(inst, function, "state or bytes is NULL");
     }
     if (size != sizeof header + sizeof(ModelData)) {
-        return instance_fail(inst, "fmi2SerializeFMUstate", "size is %zu, fmi2SerializedFMUstateSize gives %zu",
+        return instance_fail(inst, function, "size is %zu, the serialized state size is %zu",
                              size, sizeof header + sizeof(ModelData));
     }
     memcpy(header.magic, STATE_MAGIC, sizeof header.magic);
@@ -125,18 +119,17 @@ fmi2Status fmi2SerializeFMUstate(fmi2Component c, fmi2FMUstate state, fmi2Byte b
     header.checksum = fnv1a64((const unsigned char *)state, sizeof(ModelData));
     memcpy(bytes, &header, sizeof header);
     memcpy(bytes + sizeof header, state, sizeof(ModelData));
-    return fmi2OK;
+    return STATUS_OK;
 }
 
-fmi2Status fmi2DeSerializeFMUstate(fmi2Component c, const fmi2Byte bytes[], size_t size, fmi2FMUstate *state) {
-    Instance *inst = c;
+Status instance_deserialize_state(Instance *inst, const char *function, const char bytes[], size_t size,
+                                  void **state) {
     StateHeader header;
     ModelData payload;
     ModelData *copy;
     const char *problem;
-    const char *function = "fmi2DeSerializeFMUstate";
     if (!instance_allowed(inst, function, ANY_LIVE_MODE | MODE_ERROR)) {
-        return fmi2Error;
+        return STATUS_ERROR;
     }
     if (bytes == NULL || state == NULL) {
         return instance_fail(inst, function, "bytes or state is NULL");
@@ -162,9 +155,9 @@ fmi2Status fmi2DeSerializeFMUstate(fmi2Component c, const fmi2Byte bytes[], size
     }
     copy = *state != NULL ? (ModelData *)*state : allocate_state(inst, function);
     if (copy == NULL) {
-        return fmi2Error;
+        return STATUS_ERROR;
     }
     memcpy(copy, &payload, sizeof *copy);
     *state = copy;
-    return fmi2OK;
+    return STATUS_OK;
 }

@@ -1,93 +1,27 @@
-/* fmi2_instance.c: logging, the calling-sequence check and the variables of one instance. */
-#include "fmi2_instance.h"
+/* model.c: the variables of the model, their checks, the equations and FMU-state validation,
+ * shared by the FMI 2.0 and FMI 3.0 layers. */
+#include "model.h"
 
 #include <limits.h>
 #include <math.h>
-#include <stdarg.h>
-#include <stdio.h>
 #include <string.h>
 
 #include "pendulum_vrs.h"
 
-static const char *const LOG_CATEGORY_NAMES[LOG_CATEGORY_COUNT] = {
-    "logStatusError", "logStatusWarning", "logCalls"};
-
-const char *mode_name(Mode mode) {
+const char *mode_name(Mode mode, int fmi_version) {
     switch (mode) {
     case MODE_INSTANTIATED: return "Instantiated";
     case MODE_INITIALIZATION: return "InitializationMode";
     case MODE_EVENT: return "EventMode";
     case MODE_CONTINUOUS_TIME: return "ContinuousTimeMode";
-    case MODE_STEP_COMPLETE: return "StepComplete";
+    case MODE_STEP_COMPLETE: return fmi_version == 3 ? "StepMode" : "StepComplete";
     case MODE_TERMINATED: return "Terminated";
     case MODE_ERROR: return "Error";
     }
     return "unknown state";
 }
 
-int log_category_from_name(const char *name) {
-    int category;
-    for (category = 0; category < LOG_CATEGORY_COUNT; category++) {
-        if (name != NULL && strcmp(name, LOG_CATEGORY_NAMES[category]) == 0) {
-            return category;
-        }
-    }
-    return -1;
-}
-
-static void log_va(const Instance *inst, fmi2Status status, LogCategory category,
-                   const char *format, va_list args) {
-    char message[512];
-    if (!inst->log_enabled[category] || inst->callbacks.logger == NULL) {
-        return;
-    }
-    vsnprintf(message, sizeof message, format, args);
-    /* The message goes through "%s": a '%' in it must not be read as a format. */
-    inst->callbacks.logger(inst->callbacks.componentEnvironment, inst->name, status,
-                           LOG_CATEGORY_NAMES[category], "%s", message);
-}
-
-void instance_log(const Instance *inst, fmi2Status status, LogCategory category, const char *format, ...) {
-    va_list args;
-    va_start(args, format);
-    log_va(inst, status, category, format, args);
-    va_end(args);
-}
-
-fmi2Status instance_fail(Instance *inst, const char *function, const char *format, ...) {
-    char reason[400];
-    va_list args;
-    va_start(args, format);
-    vsnprintf(reason, sizeof reason, format, args);
-    va_end(args);
-    instance_log(inst, fmi2Error, LOG_STATUS_ERROR, "%s: %s", function, reason);
-    inst->data.mode = MODE_ERROR;
-    return fmi2Error;
-}
-
-int instance_allowed(Instance *inst, const char *function, unsigned allowed_modes) {
-    if (inst == NULL) {
-        return 0;
-    }
-    if (((unsigned)inst->data.mode & allowed_modes) == 0) {
-        instance_fail(inst, function, "not allowed in state %s", mode_name(inst->data.mode));
-        return 0;
-    }
-    instance_log(inst, fmi2OK, LOG_CALLS, "%s", function);
-    return 1;
-}
-
-int instance_allowed_for(Instance *inst, const char *function, fmi2Type type, unsigned allowed_modes) {
-    if (inst != NULL && inst->type != type) {
-        instance_fail(inst, function, "is a %s function; this instance was instantiated for %s",
-                      type == fmi2ModelExchange ? "Model Exchange" : "Co-Simulation",
-                      inst->type == fmi2ModelExchange ? "Model Exchange" : "Co-Simulation");
-        return 0;
-    }
-    return instance_allowed(inst, function, allowed_modes);
-}
-
-void model_reset(ModelData *data, fmi2Type type) {
+void model_reset(ModelData *data, InterfaceType type) {
     memset(data, 0, sizeof *data);   /* padding too: states are compared and checksummed bytewise */
     data->mode = MODE_INSTANTIATED;
     data->interface = (int)type;
@@ -119,7 +53,7 @@ static const char *check_parameters(const ModelData *data) {
     return NULL;
 }
 
-const char *model_initialize(ModelData *data, fmi2Type type) {
+const char *model_initialize(ModelData *data, InterfaceType type) {
     const char *problem = check_parameters(data);
     double w0sq = data->g / data->L;
     if (problem != NULL) {
@@ -129,7 +63,7 @@ const char *model_initialize(ModelData *data, fmi2Type type) {
         isnan(pendulum_exact_period(&data->exact))) {
         return "the exact solution cannot be set up for these start values";
     }
-    if (type == fmi2CoSimulation &&
+    if (type == INTERFACE_CO_SIMULATION &&
         integrator_init(&data->integrator, (SolverKind)data->solver, w0sq, data->tolerance,
                         data->time, data->theta, data->omega) != 0) {
         return "the solver cannot be set up for these start values";
@@ -137,12 +71,12 @@ const char *model_initialize(ModelData *data, fmi2Type type) {
     return NULL;
 }
 
-const char *model_check_state(const ModelData *data, fmi2Type type) {
+const char *model_check_state(const ModelData *data, InterfaceType type) {
     ModelData reset;
-    const unsigned modes = type == fmi2ModelExchange ? ME_MODES : CS_MODES;
+    const unsigned modes = type == INTERFACE_MODEL_EXCHANGE ? ME_MODES : CS_MODES;
     const unsigned mode = (unsigned)data->mode;
     if (data->interface != (int)type) {
-        return data->interface == fmi2ModelExchange || data->interface == fmi2CoSimulation
+        return data->interface == INTERFACE_MODEL_EXCHANGE || data->interface == INTERFACE_CO_SIMULATION
                    ? "the state is of an instance of the other interface (Model Exchange / Co-Simulation)"
                    : "the interface type is out of range";
     }
@@ -189,7 +123,7 @@ const char *model_check_state(const ModelData *data, fmi2Type type) {
         !(data->exact.t0 == data->start_time)) {
         return "the exact solution does not match its start values and parameters";
     }
-    if (type == fmi2ModelExchange) {
+    if (type == INTERFACE_MODEL_EXCHANGE) {
         if (memcmp(&reset.integrator, &data->integrator, sizeof reset.integrator) != 0) {
             return "a Model Exchange state carries a solver state";
         }
@@ -241,7 +175,7 @@ static const char *current_exact(const ModelData *data, PendulumExact *exact) {
     return NULL;
 }
 
-const char *model_get_real(const ModelData *data, fmi2ValueReference vr, double *value) {
+const char *model_get_real(const ModelData *data, ValueReference vr, double *value) {
     PendulumExact exact;
     double unused;
     const char *problem = NULL;
@@ -283,7 +217,7 @@ const char *model_get_real(const ModelData *data, fmi2ValueReference vr, double 
     return NULL;
 }
 
-const char *model_set_real(ModelData *data, fmi2ValueReference vr, double value) {
+const char *model_set_real(ModelData *data, ValueReference vr, double value) {
     const unsigned before_init = MODE_INSTANTIATED | MODE_INITIALIZATION;
     switch (vr) {
     case VR_L:
@@ -291,7 +225,7 @@ const char *model_set_real(ModelData *data, fmi2ValueReference vr, double value)
     case VR_THETA:
     case VR_OMEGA:
         if (((unsigned)data->mode & before_init) == 0) {
-            return "is fixed after initialization (set it before fmi2ExitInitializationMode)";
+            return "is fixed after initialization (set it before ExitInitializationMode)";
         }
         if (!isfinite(value)) {
             return "must be a finite number";
@@ -323,7 +257,7 @@ static int clamp_count(long count) {
     return count > INT_MAX ? INT_MAX : (int)count;
 }
 
-const char *model_get_integer(const ModelData *data, fmi2ValueReference vr, int *value) {
+const char *model_get_integer(const ModelData *data, ValueReference vr, int *value) {
     switch (vr) {
     case VR_SOLVER: *value = data->solver; break;
     case VR_STATS_STEPS: *value = clamp_count(data->integrator.stats.steps); break;
@@ -334,11 +268,11 @@ const char *model_get_integer(const ModelData *data, fmi2ValueReference vr, int 
     return NULL;
 }
 
-const char *model_set_integer(ModelData *data, fmi2ValueReference vr, int value) {
+const char *model_set_integer(ModelData *data, ValueReference vr, int value) {
     switch (vr) {
     case VR_SOLVER:
         if (((unsigned)data->mode & (MODE_INSTANTIATED | MODE_INITIALIZATION)) == 0) {
-            return "is fixed after initialization (set it before fmi2ExitInitializationMode)";
+            return "is fixed after initialization (set it before ExitInitializationMode)";
         }
         if (value < SOLVER_DOPRI5 || value > SOLVER_SYMPLECTIC) {
             return "must be one of the items of the enumeration Solver";
@@ -353,7 +287,7 @@ const char *model_set_integer(ModelData *data, fmi2ValueReference vr, int value)
     }
 }
 
-const char *variable_name(fmi2ValueReference vr) {
+const char *variable_name(ValueReference vr) {
 #define VARIABLE(ref, name) if (vr == (ref)) return name;
     PENDULUM_VARIABLES
 #undef VARIABLE

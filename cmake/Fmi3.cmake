@@ -1,0 +1,85 @@
+# Builds the FMI 3.0 Pendulum.fmu (Co-Simulation + Model Exchange) at build/fmi3/Pendulum.fmu
+# from the same model core as the FMI 2.0 one (CORE_SOURCES: every source but fmi2_*.c) and
+# the thin FMI 3.0 layer fmu_src/fmi3_*.c. Included by CMakeLists.txt after the FMI 2.0 FMU.
+#
+# The FMI 3.0 headers are the standard's, taken at build time from the installed fmpy package
+# (its c-code folder); without them the FMI 3.0 FMU is not built and CMake says why.
+option(PENDULUM_FMI3 "Build the FMI 3.0 Pendulum.fmu (needs fmpy's FMI 3.0 headers)" ON)
+if(NOT PENDULUM_FMI3)
+  return()
+endif()
+
+find_program(PENDULUM_PYTHON NAMES python3 python HINTS ${CMAKE_CURRENT_SOURCE_DIR}/.venv/bin)
+set(FMI3_HEADER_DIR "" CACHE PATH "Folder of fmi3Functions.h (default: fmpy's c-code)")
+if(NOT FMI3_HEADER_DIR AND PENDULUM_PYTHON)
+  execute_process(
+    COMMAND ${PENDULUM_PYTHON} -c "import fmpy, os; print(os.path.join(os.path.dirname(fmpy.__file__), 'c-code'))"
+    OUTPUT_VARIABLE fmpy_c_code OUTPUT_STRIP_TRAILING_WHITESPACE ERROR_QUIET RESULT_VARIABLE fmpy_found)
+  if(fmpy_found EQUAL 0 AND EXISTS ${fmpy_c_code}/fmi3Functions.h)
+    set(FMI3_HEADER_DIR ${fmpy_c_code})
+  endif()
+endif()
+if(NOT FMI3_HEADER_DIR OR NOT EXISTS ${FMI3_HEADER_DIR}/fmi3Functions.h)
+  message(WARNING "FMI 3.0 Pendulum.fmu not built: no fmi3Functions.h (install fmpy: pip install fmpy, "
+                  "or set FMI3_HEADER_DIR)")
+  return()
+endif()
+
+file(GLOB FMI3_LAYER_SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/fmu_src/fmi3_*.c)
+set(FMI3_SOURCES ${CORE_SOURCES} ${FMI3_LAYER_SOURCES})
+set(FMI3_DIR ${CMAKE_CURRENT_BINARY_DIR}/fmi3)
+
+add_library(Pendulum_fmi3 SHARED ${FMI3_SOURCES})
+target_include_directories(Pendulum_fmi3 PRIVATE fmu_src ${GENERATED_DIR} ${FMI3_HEADER_DIR})
+target_compile_options(Pendulum_fmi3 PRIVATE ${WARNING_FLAGS})
+set_target_properties(Pendulum_fmi3 PROPERTIES PREFIX "" OUTPUT_NAME Pendulum C_VISIBILITY_PRESET hidden
+                      LIBRARY_OUTPUT_DIRECTORY ${FMI3_DIR}/lib)
+target_link_libraries(Pendulum_fmi3 PRIVATE m)
+target_link_options(Pendulum_fmi3 PRIVATE -Wl,--no-undefined)
+
+# modelDescription.xml: the template with the FMI 2.0 description's GUID as instantiation token
+set(FMI3_MODEL_DESCRIPTION_IN ${CMAKE_CURRENT_SOURCE_DIR}/fmi3/modelDescription.xml.in)
+configure_file(${FMI3_MODEL_DESCRIPTION_IN} ${FMI3_DIR}/modelDescription.xml @ONLY)
+
+# sources/buildDescription.xml (FMI 3.0 2.5.1): the same list of sources the binary is built from
+set(build_files "")
+foreach(source IN LISTS FMI3_SOURCES)
+  get_filename_component(source_name ${source} NAME)
+  string(APPEND build_files "        <SourceFile name=\"${source_name}\"/>\n")
+endforeach()
+file(WRITE ${FMI3_DIR}/buildDescription.xml.new
+  "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+  "<fmiBuildDescription fmiVersion=\"3.0\">\n"
+  "  <BuildConfiguration modelIdentifier=\"Pendulum\" description=\"C sources; the FMI 3.0 headers come from the importer\">\n"
+  "    <SourceFileSet language=\"C99\">\n"
+  "${build_files}"
+  "    </SourceFileSet>\n"
+  "    <Library name=\"m\"/>\n"
+  "  </BuildConfiguration>\n"
+  "</fmiBuildDescription>\n")
+configure_file(${FMI3_DIR}/buildDescription.xml.new ${FMI3_DIR}/buildDescription.xml COPYONLY)
+
+set(FMI3_FMU_DIR ${FMI3_DIR}/fmu)
+set(FMI3_FMU_FILE ${FMI3_DIR}/Pendulum.fmu)
+file(GLOB FMI3_HEADERS ${CMAKE_CURRENT_SOURCE_DIR}/fmu_src/*.h)
+list(FILTER FMI3_HEADERS EXCLUDE REGEX "fmi2_api\\.h$")
+add_custom_command(
+  OUTPUT ${FMI3_FMU_FILE}
+  COMMAND ${CMAKE_COMMAND} -E rm -rf ${FMI3_FMU_DIR}
+  COMMAND ${CMAKE_COMMAND} -E make_directory ${FMI3_FMU_DIR}/binaries/x86_64-linux ${FMI3_FMU_DIR}/sources
+          ${FMI3_FMU_DIR}/documentation
+  COMMAND ${CMAKE_COMMAND} -E copy ${FMI3_DIR}/modelDescription.xml ${FMI3_FMU_DIR}/modelDescription.xml
+  COMMAND ${CMAKE_COMMAND} -E copy $<TARGET_FILE:Pendulum_fmi3> ${FMI3_FMU_DIR}/binaries/x86_64-linux/Pendulum.so
+  COMMAND ${CMAKE_COMMAND} -E copy ${FMI3_SOURCES} ${FMI3_HEADERS} ${GENERATED_DIR}/pendulum_vrs.h
+          ${FMI3_DIR}/buildDescription.xml ${FMI3_FMU_DIR}/sources/
+  COMMAND ${CMAKE_COMMAND} -E copy ${CMAKE_CURRENT_SOURCE_DIR}/fmu_src/documentation/index.html
+          ${CMAKE_CURRENT_SOURCE_DIR}/fmu_src/documentation/math.html ${FMI3_FMU_DIR}/documentation/
+  COMMAND ${CMAKE_COMMAND} -E rm -f ${FMI3_FMU_FILE}
+  COMMAND ${CMAKE_COMMAND} -E chdir ${FMI3_FMU_DIR} ${CMAKE_COMMAND} -E tar cf ${FMI3_FMU_FILE} --format=zip
+          modelDescription.xml binaries sources documentation
+  DEPENDS Pendulum_fmi3 ${FMI3_MODEL_DESCRIPTION_IN} ${FMI3_HEADERS} ${FMI3_DIR}/buildDescription.xml
+          ${CMAKE_CURRENT_SOURCE_DIR}/fmu_src/documentation/index.html
+          ${CMAKE_CURRENT_SOURCE_DIR}/fmu_src/documentation/math.html
+  COMMENT "Packing fmi3/Pendulum.fmu"
+  VERBATIM)
+add_custom_target(fmu3 ALL DEPENDS ${FMI3_FMU_FILE})
