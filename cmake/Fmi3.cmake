@@ -59,6 +59,38 @@ file(WRITE ${FMI3_DIR}/buildDescription.xml.new
   "</fmiBuildDescription>\n")
 configure_file(${FMI3_DIR}/buildDescription.xml.new ${FMI3_DIR}/buildDescription.xml COPYONLY)
 
+# Binaries: the host build in binaries/x86_64-linux; with PENDULUM_PLATFORMS=ON (as the FMI 2.0
+# FMU, cmake/FmuPlatforms.cmake) the glibc-2.17 build there instead, and x86_64-windows,
+# x86_64-darwin and aarch64-darwin beside it (FMI 3.0 names one folder per architecture, so
+# no universal binary), all cross-built with zig from the same sources and flags.
+set(FMI3_LINUX_BINARY $<TARGET_FILE:Pendulum_fmi3>)
+set(FMI3_OTHER_BINARIES "")
+set(FMI3_BINARY_DEPENDS "")
+if(PENDULUM_PLATFORMS)
+  # the standard's headers as system headers: their K&R-style declarations of two callback
+  # types would trip clang's -Wstrict-prototypes
+  set(fmi3_cross_common NAME Pendulum SOURCES ${FMI3_SOURCES}
+      INCLUDES ${PROJECT_SOURCE_DIR}/fmu_src ${GENERATED_DIR} FLAGS -isystem ${FMI3_HEADER_DIR}
+      DEPENDS ${FMU_HEADERS} ${GENERATED_DIR}/pendulum_vrs.h)
+  set(fmi3_cross_targets
+      x86_64-linux x86_64-linux-gnu.2.17 so
+      x86_64-windows x86_64-windows-gnu dll
+      x86_64-darwin x86_64-macos.10.13 dylib
+      aarch64-darwin aarch64-macos.11.0 dylib)
+  while(fmi3_cross_targets)
+    list(POP_FRONT fmi3_cross_targets folder zig_target ext)
+    cross_shared_library(fmi3_${folder} TARGET ${zig_target} SUBDIR fmi3-${folder} ${fmi3_cross_common})
+    list(APPEND FMI3_BINARY_DEPENDS ${fmi3_${folder}})
+    if(folder STREQUAL "x86_64-linux")
+      set(FMI3_LINUX_BINARY ${fmi3_${folder}})
+    else()
+      list(APPEND FMI3_OTHER_BINARIES
+           COMMAND ${CMAKE_COMMAND} -E make_directory ${FMI3_DIR}/fmu/binaries/${folder}
+           COMMAND ${CMAKE_COMMAND} -E copy ${fmi3_${folder}} ${FMI3_DIR}/fmu/binaries/${folder}/Pendulum.${ext})
+    endif()
+  endwhile()
+endif()
+
 set(FMI3_FMU_DIR ${FMI3_DIR}/fmu)
 set(FMI3_FMU_FILE ${FMI3_DIR}/Pendulum.fmu)
 file(GLOB FMI3_HEADERS ${CMAKE_CURRENT_SOURCE_DIR}/fmu_src/*.h)
@@ -69,7 +101,8 @@ add_custom_command(
   COMMAND ${CMAKE_COMMAND} -E make_directory ${FMI3_FMU_DIR}/binaries/x86_64-linux ${FMI3_FMU_DIR}/sources
           ${FMI3_FMU_DIR}/documentation
   COMMAND ${CMAKE_COMMAND} -E copy ${FMI3_DIR}/modelDescription.xml ${FMI3_FMU_DIR}/modelDescription.xml
-  COMMAND ${CMAKE_COMMAND} -E copy $<TARGET_FILE:Pendulum_fmi3> ${FMI3_FMU_DIR}/binaries/x86_64-linux/Pendulum.so
+  COMMAND ${CMAKE_COMMAND} -E copy ${FMI3_LINUX_BINARY} ${FMI3_FMU_DIR}/binaries/x86_64-linux/Pendulum.so
+  ${FMI3_OTHER_BINARIES}
   COMMAND ${CMAKE_COMMAND} -E copy ${FMI3_SOURCES} ${FMI3_HEADERS} ${GENERATED_DIR}/pendulum_vrs.h
           ${FMI3_DIR}/buildDescription.xml ${FMI3_FMU_DIR}/sources/
   COMMAND ${CMAKE_COMMAND} -E copy ${CMAKE_CURRENT_SOURCE_DIR}/fmu_src/documentation/index.html
@@ -77,7 +110,7 @@ add_custom_command(
   COMMAND ${CMAKE_COMMAND} -E rm -f ${FMI3_FMU_FILE}
   COMMAND ${CMAKE_COMMAND} -E chdir ${FMI3_FMU_DIR} ${CMAKE_COMMAND} -E tar cf ${FMI3_FMU_FILE} --format=zip
           modelDescription.xml binaries sources documentation
-  DEPENDS Pendulum_fmi3 ${FMI3_MODEL_DESCRIPTION_IN} ${FMI3_HEADERS} ${FMI3_DIR}/buildDescription.xml
+  DEPENDS Pendulum_fmi3 ${FMI3_BINARY_DEPENDS} ${FMI3_MODEL_DESCRIPTION_IN} ${FMI3_HEADERS} ${FMI3_DIR}/buildDescription.xml
           ${CMAKE_CURRENT_SOURCE_DIR}/fmu_src/documentation/index.html
           ${CMAKE_CURRENT_SOURCE_DIR}/fmu_src/documentation/math.html
   COMMENT "Packing fmi3/Pendulum.fmu"

@@ -39,7 +39,10 @@ add_custom_command(
   VERBATIM)
 
 # Adds extra/ to a packed FMU: copies the reference folder into its folder and zips it again.
-function(add_reference_result target fmu_dir fmu_file)
+# target: the new target; fmu_target: the target that packs fmu_file. The dependency between the
+# two makes fmu_target's packing run first and once (with only a file dependency, a parallel
+# make would run the packing rule in both targets at the same time).
+function(add_reference_result target fmu_target fmu_dir fmu_file)
   set(stamp ${CMAKE_CURRENT_BINARY_DIR}/reference/${target}.stamp)
   add_custom_command(
     OUTPUT ${stamp}
@@ -52,9 +55,10 @@ function(add_reference_result target fmu_dir fmu_file)
     COMMENT "Adding the reference result to ${fmu_file}"
     VERBATIM)
   add_custom_target(${target} ALL DEPENDS ${stamp})
+  add_dependencies(${target} ${fmu_target})
 endfunction()
 
-add_reference_result(fmu_reference ${FMU_DIR} ${FMU_FILE})
+add_reference_result(fmu_reference fmu ${FMU_DIR} ${FMU_FILE})
 if(TARGET fmu3)
-  add_reference_result(fmu3_reference ${FMI3_FMU_DIR} ${FMI3_FMU_FILE})
+  add_reference_result(fmu3_reference fmu3 ${FMI3_FMU_DIR} ${FMI3_FMU_FILE})
 endif()

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import math
 import re
+import shutil
 import subprocess
 import zipfile
 from pathlib import Path
@@ -111,16 +112,44 @@ def test_rebuilt_from_its_build_description_gives_the_same_results(fmu3_path: Pa
         assert np.allclose(rebuilt[name], original[name], rtol=0, atol=1e-12), name
 
 
-def test_exports_exactly_the_fmi3_functions(fmu3_path: Path, tmp_path: Path) -> None:
-    """Every function the FMI 3.0 header declares, and nothing else (the core stays hidden)."""
+FMI3_BINARIES = {"x86_64-linux": "Pendulum.so", "x86_64-windows": "Pendulum.dll",
+                  "x86_64-darwin": "Pendulum.dylib", "aarch64-darwin": "Pendulum.dylib"}
+"""The FMI 3.0 platform folders (one per architecture) that scripts/build-fmu.sh fills."""
+
+
+def exported_names(library: Path, folder: str) -> set[str]:
+    """Names a loader can bind to: the dynamic symbols (ELF), the export table (PE), the
+    export trie without the leading _ (Mach-O), read with llvm's tools."""
+    objdump, nm = shutil.which("llvm-objdump-14") or "llvm-objdump", shutil.which("llvm-nm-14") or "llvm-nm"
+    if shutil.which(objdump) is None:
+        pytest.skip("llvm-objdump not found: install llvm (bash scripts/install-system-packages.sh)")
+    if folder.endswith("linux"):
+        text = subprocess.run([nm, "-D", "-g", "--defined-only", str(library)], capture_output=True, text=True,
+                              check=True).stdout
+        return {line.split()[-1] for line in text.splitlines()}
+    if folder.endswith("windows"):
+        text = subprocess.run([objdump, "-p", str(library)], capture_output=True, text=True, check=True).stdout
+        table = text.split("Export Table:", 1)[1].split("\n\n", 1)[0]
+        return set(re.findall(r"^\s+\d+\s+0x[0-9a-f]+\s+(\S+)$", table, re.MULTILINE))
+    text = subprocess.run([objdump, "--macho", "--exports-trie", str(library)], capture_output=True, text=True,
+                          check=True).stdout
+    return {name[1:] for name in re.findall(r"^0x[0-9A-Fa-f]+\s+(\S+)", text, re.MULTILINE)}
+
+
+@pytest.mark.parametrize("folder", sorted(FMI3_BINARIES))
+def test_exports_exactly_the_fmi3_functions(fmu3_path: Path, tmp_path: Path, folder: str) -> None:
+    """Every function the FMI 3.0 header declares, and nothing else (the core stays hidden), in
+    every platform folder; on macOS zig's linker also exports its two image-header labels."""
     header = (Path(fmpy.__file__).parent / "c-code" / "fmi3Functions.h").read_text()
     declared = set(re.findall(r"#define (fmi3\w+)\s+fmi3FullName", header))
+    member = f"binaries/{folder}/{FMI3_BINARIES[folder]}"
     with zipfile.ZipFile(fmu3_path) as archive:
-        archive.extract("binaries/x86_64-linux/Pendulum.so", tmp_path)
-    nm = subprocess.run(["nm", "-D", "--defined-only", str(tmp_path / "binaries/x86_64-linux/Pendulum.so")],
-                        capture_output=True, text=True, check=True).stdout
-    exported = {line.split()[-1] for line in nm.splitlines() if line.split()[1] in "TtDdBbRr"}
-    assert len(declared) == 75 and exported == declared
+        if member not in archive.namelist():
+            pytest.fail(f"{member} missing: scripts/build-fmu.sh builds every platform")
+        archive.extract(member, tmp_path)
+    exported = exported_names(tmp_path / member, folder)
+    extra = {"_mh_dylib_header", "__dso_handle"} if folder.endswith("darwin") else set()
+    assert len(declared) == 75 and exported == declared | extra
 
 
 def test_start_values_of_the_binary_match_its_xml(fmu3_path: Path) -> None:
