@@ -1,4 +1,4 @@
-"""The FMU's log: warnings kept per run, routed by component, through one logger for the process."""
+"""The FMU's log: warnings kept per run, routed by instance name, through one logger for the process."""
 
 from __future__ import annotations
 
@@ -17,16 +17,16 @@ from pendulum_fmu.sweep.worker import row_of
 
 def test_warnings_are_routed_to_their_instance_and_kept_once_in_order() -> None:
     mine, other = fmu_log.FmuLog(), fmu_log.FmuLog()
-    fmu_log.register(0x1234, mine)
-    fmu_log.register(0x5678, other)
+    fmu_log.register("pendulum_cs_1001", mine)
+    fmu_log.register("pendulum_cs_1002", other)
     try:
         for message in (b"hard case: theta0 within 1e-9 of pi", b"hard case: theta0 within 1e-9 of pi", b"second"):
-            fmu_log._dispatch(0x1234, b"pendulum_cs", 1, b"logStatusWarning", message)
-        fmu_log._dispatch(0x1234, b"pendulum_cs", 0, b"logCalls", b"fmi2DoStep")
-        fmu_log._dispatch(0x1234, b"pendulum_cs", 3, b"logStatusError", b"fmi2DoStep: step <= 0")
+            fmu_log._dispatch(None, b"pendulum_cs_1001", 1, b"logStatusWarning", message)
+        fmu_log._dispatch(None, b"pendulum_cs_1001", 0, b"logCalls", b"fmi2DoStep")
+        fmu_log._dispatch(None, b"pendulum_cs_1001", 3, b"logStatusError", b"fmi2DoStep: step <= 0")
     finally:
-        fmu_log.unregister(0x1234)
-        fmu_log.unregister(0x5678)
+        fmu_log.unregister("pendulum_cs_1001")
+        fmu_log.unregister("pendulum_cs_1002")
     assert mine.warnings() == ("hard case: theta0 within 1e-9 of pi", "second")
     assert mine.last_error() == "fmi2DoStep: step <= 0"
     assert other.entries == []

@@ -19,7 +19,7 @@ PI_RAD = "3.141592653589793rad"
 
 
 def run_cli(args: list[str], cwd: Path, fmu_path: Path) -> subprocess.CompletedProcess[str]:
-    env = dict(os.environ, PENDULUM_FMU=str(fmu_path))
+    env = dict(os.environ, PENDULUM_FMU=str(fmu_path.resolve()))
     return subprocess.run([sys.executable, "-m", "pendulum_fmu", *args], cwd=cwd, env=env,
                           capture_output=True, text=True, timeout=300, check=False)
 

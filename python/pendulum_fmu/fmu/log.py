@@ -6,14 +6,18 @@ in a small C proxy and hands it to a Python function. That proxy keeps one Pytho
 the whole process (the last one registered), so a logger per instance would be replaced by
 the next one and, once collected, leave the proxy calling freed memory. Hence one logger for
 the process, :func:`shared_callbacks`, kept alive for good, which routes each message by its
-component to the :class:`FmuLog` registered for it (:func:`register`) and prints the others
-as fmpy does.
+instance name to the :class:`FmuLog` registered for it (:func:`register`) and prints the
+others as fmpy does. The name, not the component: the FMU's logger receives the
+``componentEnvironment`` of the callbacks (FMI 2.0.x, 2.1.5), the same for every instance
+given these callbacks, while each :class:`~pendulum_fmu.fmu.runner.FmuRunner` names its
+instances uniquely (:func:`unique_instance_name`).
 """
 
 from __future__ import annotations
 
+import itertools
 import threading
-from ctypes import byref, c_void_p, cast
+from ctypes import byref
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -65,24 +69,23 @@ def _text(value: bytes | str | None) -> str:
     return value.decode("utf-8", "replace") if isinstance(value, bytes) else str(value)
 
 
-_routes: dict[int, FmuLog] = {}
+_routes: dict[str, FmuLog] = {}
 _lock = threading.Lock()
 _callbacks: Any = None
 
 
-def _address(component: Any) -> int:
-    """The component pointer as an int (0 for NULL)."""
-    if component is None:
-        return 0
-    if isinstance(component, int):
-        return component
-    return int(cast(component, c_void_p).value or 0)
+_names = itertools.count(1)
+
+
+def unique_instance_name(prefix: str) -> str:
+    """``prefix`` with a number no other instance of this process has (the routing key)."""
+    return f"{prefix}_{next(_names)}"
 
 
 def _dispatch(component: Any, instance_name: bytes, status: int, category: bytes, message: bytes) -> None:
     """The process's one logger: to the component's FmuLog, else printed like fmpy's default."""
     with _lock:
-        log = _routes.get(_address(component))
+        log = _routes.get(_text(instance_name))
     if log is not None:
         log.callback(component, instance_name, status, category, message)
         return
@@ -109,13 +112,13 @@ def shared_callbacks() -> Any:
         return _callbacks
 
 
-def register(component: Any, log: FmuLog) -> None:
-    """Route the messages of ``component`` (an instantiated FMU's pointer) to ``log``."""
+def register(instance_name: str, log: FmuLog) -> None:
+    """Route the messages of the instance named ``instance_name`` to ``log``."""
     with _lock:
-        _routes[_address(component)] = log
+        _routes[instance_name] = log
 
 
-def unregister(component: Any) -> None:
-    """Stop routing ``component``'s messages (before ``fmi2FreeInstance``)."""
+def unregister(instance_name: str) -> None:
+    """Stop routing the messages of the instance named ``instance_name``."""
     with _lock:
-        _routes.pop(_address(component), None)
+        _routes.pop(instance_name, None)

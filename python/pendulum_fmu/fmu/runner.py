@@ -31,7 +31,7 @@ from fmpy.fmi2 import FMU2Model, FMU2Slave
 
 from pendulum_fmu.errors import SimulationError
 from pendulum_fmu.fmu.fast_cs import FastStepper
-from pendulum_fmu.fmu.log import FmuLog, register, shared_callbacks, unregister
+from pendulum_fmu.fmu.log import FmuLog, register, shared_callbacks, unique_instance_name, unregister
 from pendulum_fmu.spec import CS_SOLVERS, Method, Pendulum, TimeGrid
 
 RECORDED: tuple[str, ...] = ("theta", "omega", "theta_exact", "omega_exact", "x", "y")
@@ -134,7 +134,7 @@ class FmuRunner:
         """Free the FMU instances and delete the extracted files."""
         for instance in (self._slave, self._model):
             if instance is not None:
-                unregister(instance.component)
+                unregister(instance.instanceName)
                 instance.freeInstance()
         self._slave = self._model = None
         shutil.rmtree(self._tempdir, ignore_errors=True)
@@ -144,9 +144,10 @@ class FmuRunner:
         if self._slave is None:
             md = self.model_description
             self._slave = FMU2Slave(guid=md.guid, unzipDirectory=self._unzipdir,
-                                    modelIdentifier=md.coSimulation.modelIdentifier, instanceName="pendulum_cs")
+                                    modelIdentifier=md.coSimulation.modelIdentifier,
+                                    instanceName=unique_instance_name("pendulum_cs"))
+            register(self._slave.instanceName, self._log)   # before instantiate: it may log already
             self._slave.instantiate(callbacks=shared_callbacks())
-            register(self._slave.component, self._log)
         elif self._slave_used:
             self._slave.reset()
         self._slave_used = True
@@ -156,9 +157,10 @@ class FmuRunner:
         if self._model is None:
             md = self.model_description
             self._model = FMU2Model(guid=md.guid, unzipDirectory=self._unzipdir,
-                                    modelIdentifier=md.modelExchange.modelIdentifier, instanceName="pendulum_me")
+                                    modelIdentifier=md.modelExchange.modelIdentifier,
+                                    instanceName=unique_instance_name("pendulum_me"))
+            register(self._model.instanceName, self._log)
             self._model.instantiate(callbacks=shared_callbacks())
-            register(self._model.component, self._log)
         elif self._model_used:
             self._model.reset()
         self._model_used = True
