@@ -120,7 +120,10 @@ def run_sweep(fmu: Path, sweep: SweepGrid, out: Path, table_format: str = "csv",
                 seconds = execute(client, fmu, pending, record, progress)
         except KeyboardInterrupt:
             journal.close()
-            _write_rows([done[p.key] for p in points if p.key in done], out, table_format, fmu)  # what finished
+            # What finished is what the journal holds: the interrupt may have come between a
+            # batch's append and its bookkeeping in ``done``.
+            finished = read_journal(journal_path)
+            _write_rows([finished[p.key] for p in points if p.key in finished], out, table_format, fmu)
             raise
         finally:
             journal.close()
