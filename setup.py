@@ -19,7 +19,8 @@ import-hook-driven build of the same tree. So:
 A regular install or wheel builds the multi-platform FMU (linux64, win64, darwin64; zig
 from the ``ziglang`` build requirement, README "Platforms") in ``build-wheel/``.
 
-Environment: ``PENDULUM_FMU_SKIP_BUILD=1`` skips the build, ``PENDULUM_FMU_BUILD_DIR``
+Environment: ``PENDULUM_FMU_SKIP_BUILD=1`` skips the build, ``PENDULUM_ZIG`` names the zig
+to cross-build with (default: the ``ziglang`` build requirement's), ``PENDULUM_FMU_BUILD_DIR``
 chooses the CMake build folder (default ``build/`` beside this file, ``build-wheel/`` for a
 regular install or a wheel).
 """
@@ -57,7 +58,11 @@ def working_cmake() -> str | None:
 
 
 def zig_path() -> str | None:
-    """The zig of the ``ziglang`` package in this build environment (pyproject's requires)."""
+    """``$PENDULUM_ZIG``, else the zig of the ``ziglang`` package in this build environment
+    (pyproject's requires). A zig at a fixed path keeps zig's cache of the C runtimes valid
+    from one build to the next (pip's isolated environment is a new folder every time)."""
+    if os.environ.get("PENDULUM_ZIG"):
+        return os.environ["PENDULUM_ZIG"]
     try:
         import ziglang  # noqa: PLC0415 (a build requirement, absent in a plain checkout)
     except ImportError:
