@@ -16,9 +16,10 @@ of ``repeat`` after one warm-up:
   is a Python function), the loosest rtol of 1e-7 .. 1e-13 that reaches the error;
 - ``solve_ivp DOP853``: scipy's pure-Python DOP853, likewise.
 
-numbalsoda (DOP853 with a numba-compiled right-hand side) is the peer the issue names; it
-builds from source only with a Fortran compiler, which this machine lacks, so scipy's
-compiled ``dop853`` stands in for it.
+- ``numbalsoda dop853``: numbalsoda's C++ DOP853 with a numba-compiled right-hand side, called
+  once for the whole grid: the compiled peer the issue names. It is optional (it builds from
+  source only, with a Fortran compiler: ``apt-get install gfortran`` and
+  ``pip install numba==0.68.1 numbalsoda==0.3.4``); without it its row says so.
 """
 
 from __future__ import annotations
@@ -155,9 +156,38 @@ def measure(fmu: Path, repeat: int = 5) -> list[Timing]:
                               f"rkn, tol {FMU_TOLERANCE:g}, extracted once, theta only"))
     finally:
         shutil.rmtree(unzipped, ignore_errors=True)
+    timings.append(_numbalsoda_row(pendulum, times, truth, repeat))
     timings.append(_peer("scipy ode dop853 (compiled)", _ode_dop853, pendulum, times, truth, repeat))
     timings.append(_peer("scipy solve_ivp DOP853", _solve_ivp_dop853, pendulum, times, truth, repeat))
     return timings
+
+
+NUMBALSODA = "numbalsoda dop853 (compiled)"
+"""The name of numbalsoda's row."""
+
+
+def _numbalsoda_row(pendulum: Pendulum, times: np.ndarray, truth: np.ndarray, repeat: int) -> Timing:
+    """numbalsoda's row, or a row that says it is not installed."""
+    try:
+        import numba
+        import numbalsoda
+    except ImportError:
+        return Timing(NUMBALSODA, math.nan, times.size, math.nan,
+                      "not installed: apt-get install gfortran; pip install numba==0.68.1 numbalsoda==0.3.4")
+
+    @numba.cfunc(numbalsoda.lsoda_sig)
+    def rhs(_t, u, du, p):  # type: ignore[no-untyped-def]
+        du[0] = u[1]
+        du[1] = -p[0] * math.sin(u[0])   # theta'' = -(g/L) sin theta
+
+    start = np.array([pendulum.amplitude_rad, pendulum.omega0])
+    data = np.array([pendulum.gravity / pendulum.length])
+
+    def solve(_: Pendulum, grid: np.ndarray, rtol: float) -> np.ndarray:
+        solution, ok = numbalsoda.dop853(rhs.address, start, grid, data=data, rtol=rtol, atol=rtol / 100.0)
+        return solution[:, 0] if ok else np.full(grid.size, math.nan)
+
+    return _peer(NUMBALSODA, solve, pendulum, times, truth, repeat)
 
 
 def _ode_dop853(pendulum: Pendulum, times: np.ndarray, rtol: float) -> np.ndarray:
