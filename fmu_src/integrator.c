@@ -42,7 +42,7 @@ int integrator_init(Integrator *it, SolverKind kind, double w0sq, double tol,
      * drifts and turns into a secular phase error (DOPRI5 at tol 1e-8 was 4e-6 off after
      * 10 periods at 75..90 deg, as scipy's RK45 is), and near the separatrix it can carry
      * a libration over the top; with it, 3e-8 (see tests/c/test_integrators.c). */
-    /* The motion's scales (pendulum-math.md): m = s^2 + q^2, m1 = (|c| - |q|)(|c| + |q|) with
+    /* The motion's scales (documentation/math.html): m = s^2 + q^2, m1 = (|c| - |q|)(|c| + |q|) with
      * s, c = sin, cos(theta0/2), q = omega0 / (2 w0). The time scale is 1/rate, and near the
      * separatrix an energy error dH shifts the period by ~dH / (w0^2 closeness) (dK/dm ~
      * 1/(2 m1)), so the global error over a period grows like 1/closeness: the step rules of

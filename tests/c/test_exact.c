@@ -1,7 +1,7 @@
 /* test_exact.c: checks of fmu_src/exact.{h,c}, the exact solution of theta'' + w0^2 sin theta = 0.
  *
  * Tabulated values were generated once with mpmath 1.4.1 at 50 significant digits from the
- * closed form (pendulum-math.md: libration 2 atan2(k sn u, dn u), rotation 2 am(v | 1/m),
+ * closed form (documentation/math.html: libration 2 atan2(k sn u, dn u), rotation 2 am(v | 1/m),
  * separatrix 2 atan(sinh u); mpmath's ellipfun, ellipk, ellipf with the argument reduced by
  * the period in mpmath), at the same binary inputs (theta0, omega0, w0 = sqrt(g/L) rounded
  * as in the FMU, t0, t), and printed with 17 significant digits. The same closed form is

@@ -4,7 +4,7 @@
  * The reference is computed here, independently of fmu_src/exact.c (so that the two
  * cross-check each other instead of sharing a bug): theta(t) = 2 atan2(k cn(w0 t | m), k'),
  * omega(t) = -2 k k' w0 sn/dn, k = sin(theta0/2), k' = cos(theta0/2), m = k^2
- * (pendulum-math.md), with K from the AGM and sn, cn, dn by the descending Landen scheme
+ * (documentation/math.html), with K from the AGM and sn, cn, dn by the descending Landen scheme
  * (Abramowitz & Stegun 16.4). The reference itself is checked against values computed
  * once with mpmath at 30 digits.
  *
