@@ -73,10 +73,10 @@ if(PENDULUM_PLATFORMS)
       INCLUDES ${PROJECT_SOURCE_DIR}/fmu_src ${GENERATED_DIR} FLAGS -isystem ${FMI3_HEADER_DIR}
       DEPENDS ${FMU_HEADERS} ${GENERATED_DIR}/pendulum_vrs.h)
   set(fmi3_cross_targets
-      x86_64-linux x86_64-linux-gnu.2.17 so
-      x86_64-windows x86_64-windows-gnu dll
-      x86_64-darwin x86_64-macos.10.13 dylib
-      aarch64-darwin aarch64-macos.11.0 dylib)
+      x86_64-linux ${ZIG_LINUX_X86_64} so
+      x86_64-windows ${ZIG_WINDOWS_X86_64} dll
+      x86_64-darwin ${ZIG_MACOS_X86_64} dylib
+      aarch64-darwin ${ZIG_MACOS_ARM64} dylib)
   while(fmi3_cross_targets)
     list(POP_FRONT fmi3_cross_targets folder zig_target ext)
     cross_shared_library(fmi3_${folder} TARGET ${zig_target} SUBDIR fmi3-${folder} ${fmi3_cross_common})

@@ -35,14 +35,21 @@ include(${CMAKE_CURRENT_LIST_DIR}/CrossLibrary.cmake)
 
 # The floors: glibc 2.17 (manylinux2014: CentOS 7 and every later distribution), macOS 10.13
 # on x86_64 and 11.0 (the first release for Apple silicon) on arm64. Windows x86_64 with the
-# UCRT (part of Windows 10 and later, an update on 7 and 8.1), see the README.
+# UCRT (part of Windows 10 and later, an update on 7 and 8.1), see the README. These zig
+# targets are the one place the floors are set: the FMI 2.0 and 3.0 FMUs (cmake/Fmi3.cmake)
+# and the exact library all build with them.
+set(ZIG_LINUX_X86_64 x86_64-linux-gnu.2.17)
+set(ZIG_LINUX_ARM64 aarch64-linux-gnu.2.17)
+set(ZIG_WINDOWS_X86_64 x86_64-windows-gnu)
+set(ZIG_MACOS_X86_64 x86_64-macos.10.13)
+set(ZIG_MACOS_ARM64 aarch64-macos.11.0)
 set(FMU_CROSS_TARGETS
-    linux64 x86_64-linux-gnu.2.17
-    win64 x86_64-windows-gnu
-    darwin-x86_64 x86_64-macos.10.13
-    darwin-arm64 aarch64-macos.11.0
+    linux64 ${ZIG_LINUX_X86_64}
+    win64 ${ZIG_WINDOWS_X86_64}
+    darwin-x86_64 ${ZIG_MACOS_X86_64}
+    darwin-arm64 ${ZIG_MACOS_ARM64}
     # for the tests only: the arm64 code (flags as darwin-arm64) on Linux, run under qemu,
-    aarch64-linux aarch64-linux-gnu.2.17)
+    aarch64-linux ${ZIG_LINUX_ARM64})
 set(fmu_cross_common NAME Pendulum SOURCES ${FMU_SOURCES} INCLUDES ${PROJECT_SOURCE_DIR}/fmu_src ${GENERATED_DIR}
     DEPENDS ${FMU_HEADERS} ${GENERATED_DIR}/pendulum_vrs.h)
 set(FMU_BINARY_DEPENDS "")
@@ -53,9 +60,9 @@ while(FMU_CROSS_TARGETS)
 endwhile()
 # ... and what contraction would change (tests/platform_runs.py measures it): a*b+c fused
 # into an FMA on arm64, and on x86_64 with FMA hardware (x86-64-v3, Haswell and later).
-cross_shared_library(lib_contract_arm64 TARGET aarch64-linux-gnu.2.17 SUBDIR aarch64-linux-contract
+cross_shared_library(lib_contract_arm64 TARGET ${ZIG_LINUX_ARM64} SUBDIR aarch64-linux-contract
                      FLAGS -ffp-contract=fast ${fmu_cross_common})
-cross_shared_library(lib_contract_v3 TARGET x86_64-linux-gnu.2.17 SUBDIR x86_64-v3-contract
+cross_shared_library(lib_contract_v3 TARGET ${ZIG_LINUX_X86_64} SUBDIR x86_64-v3-contract
                      FLAGS -mcpu=x86_64_v3 -ffp-contract=fast ${fmu_cross_common})
 universal_macos_library(lib_darwin64 NAME Pendulum INPUTS ${lib_darwin-x86_64} ${lib_darwin-arm64})
 list(APPEND FMU_BINARY_DEPENDS ${lib_darwin64} ${lib_contract_arm64} ${lib_contract_v3})
@@ -73,20 +80,19 @@ set(exact_cross_common NAME pendulum_exact
     SOURCES ${PROJECT_SOURCE_DIR}/exact_lib/pendulum_exact_lib.c ${CORE_SOURCES}
     INCLUDES ${PROJECT_SOURCE_DIR}/fmu_src ${GENERATED_DIR}
     DEPENDS ${FMU_HEADERS} ${GENERATED_DIR}/pendulum_vrs.h ${PROJECT_SOURCE_DIR}/exact_lib/pendulum_exact_lib.h)
-cross_shared_library(exact_linux64 TARGET x86_64-linux-gnu.2.17 SUBDIR exact-linux64 ${exact_cross_common})
-cross_shared_library(exact_win64 TARGET x86_64-windows-gnu SUBDIR exact-win64 ${exact_cross_common})
-cross_shared_library(exact_darwin_x86_64 TARGET x86_64-macos.10.13 SUBDIR exact-darwin-x86_64 ${exact_cross_common})
-cross_shared_library(exact_darwin_arm64 TARGET aarch64-macos.11.0 SUBDIR exact-darwin-arm64 ${exact_cross_common})
-universal_macos_library(exact_darwin64 NAME pendulum_exact INPUTS ${exact_darwin_x86_64} ${exact_darwin_arm64})
+foreach(platform IN ITEMS LINUX_X86_64 WINDOWS_X86_64 MACOS_X86_64 MACOS_ARM64)
+  cross_shared_library(exact_${platform} TARGET ${ZIG_${platform}} SUBDIR exact-${platform} ${exact_cross_common})
+endforeach()
+universal_macos_library(exact_darwin64 NAME pendulum_exact INPUTS ${exact_MACOS_X86_64} ${exact_MACOS_ARM64})
 set(exact_dir ${CMAKE_BINARY_DIR}/exact_lib)
 add_custom_command(
   OUTPUT ${exact_dir}/linux64/libpendulum_exact.so ${exact_dir}/win64/pendulum_exact.dll
          ${exact_dir}/darwin64/libpendulum_exact.dylib
   COMMAND ${CMAKE_COMMAND} -E make_directory ${exact_dir}/linux64 ${exact_dir}/win64 ${exact_dir}/darwin64
-  COMMAND ${CMAKE_COMMAND} -E copy ${exact_linux64} ${exact_dir}/linux64/libpendulum_exact.so
-  COMMAND ${CMAKE_COMMAND} -E copy ${exact_win64} ${exact_dir}/win64/pendulum_exact.dll
+  COMMAND ${CMAKE_COMMAND} -E copy ${exact_LINUX_X86_64} ${exact_dir}/linux64/libpendulum_exact.so
+  COMMAND ${CMAKE_COMMAND} -E copy ${exact_WINDOWS_X86_64} ${exact_dir}/win64/pendulum_exact.dll
   COMMAND ${CMAKE_COMMAND} -E copy ${exact_darwin64} ${exact_dir}/darwin64/libpendulum_exact.dylib
-  DEPENDS ${exact_linux64} ${exact_win64} ${exact_darwin64}
+  DEPENDS ${exact_LINUX_X86_64} ${exact_WINDOWS_X86_64} ${exact_darwin64}
   VERBATIM)
 add_custom_target(pendulum_exact_platforms ALL
                   DEPENDS ${exact_dir}/linux64/libpendulum_exact.so ${exact_dir}/win64/pendulum_exact.dll
