@@ -1,13 +1,6 @@
-"""``pendulum-fmu sweep``: the command line of :mod:`pendulum_fmu.sweep.run`.
-
-By default the runs go to a local cluster of worker processes on this machine; with
-``--scheduler tcp://host:port`` they go to any running Dask scheduler and its workers
-(which need this package installed). The FMU is sent to every worker once and each worker
-loads it once (:mod:`pendulum_fmu.sweep.worker`). Finished runs are appended to
-``runs.journal.csv`` as they arrive; a sweep interrupted and started again with the same
-``--out`` skips the runs already there (if the FMU is the same one, byte for byte). At the end the table (CSV or Parquet, in grid
-order) and three summary plots are written.
-"""
+"""``pendulum-fmu sweep``: the command line of :mod:`pendulum_fmu.sweep.run` (what a sweep
+does, where it runs and how it resumes is told there); this module reads the arguments and
+prints the outcome."""
 
 from __future__ import annotations
 

@@ -5,8 +5,8 @@ By default the runs go to a local cluster of worker processes on this machine; w
 (which need this package installed). The FMU is sent to every worker once and each worker
 loads it once (:mod:`pendulum_fmu.sweep.worker`). Finished runs are appended to
 ``runs.journal.csv`` as they arrive; a sweep interrupted and started again with the same
-``--out`` skips the runs already there (if the FMU is the same one, byte for byte). At the end the table (CSV or Parquet, in grid
-order) and three summary plots are written.
+``--out`` skips the runs already there (if the FMU is the same one, byte for byte). At the
+end the table (CSV or Parquet, in grid order) and three summary plots are written.
 """
 
 from __future__ import annotations
