@@ -33,12 +33,14 @@ class Fit:
     residual: float
     """Largest |column - exact(fitted)| over the fitted columns."""
 
-    def differences(self, experiment: Experiment) -> list[str]:
-        """"L = 1.1 (not 1)" for each value that differs from the experiment's."""
+    def differences(self, experiment: Experiment, resolution: float = 0.0) -> list[str]:
+        """"L = 1.1 (not 1)" for each value that differs from the experiment's by more than
+        1e-9 relative, or 10 times the columns' print ``resolution`` (relative)."""
         out = []
+        relative = max(1e-9, 10 * resolution)
         for name, fitted, stated in (("theta", self.theta0, experiment.theta0), ("omega", self.omega0, experiment.omega0),
                                      ("L", self.L, experiment.L)):
-            if abs(fitted - stated) > 1e-9 * max(1.0, abs(stated)):
+            if abs(fitted - stated) > relative * max(1.0, abs(stated)):
                 out.append(f"{name} = {fitted:.10g} (not {stated:.10g})")
         return out
 

@@ -11,9 +11,10 @@ Ecos and fmi-cross-check results:
   ``iterations``, libcosim's ``StepCount``, ``x``, ``y``, ...) are ignored;
 - any subset of ``theta``, ``omega``, ``theta_exact``, ``omega_exact`` (at least one).
 
-For CSV, the printed precision is kept: the most significant digits of any value is the
-tool's format (``%g`` prints 6), and each value's resolution is half a unit in that format's
-last digit (none from 15 digits on), so the checks can tell a rounded print from a wrong value.
+For CSV, each column's print format is recognised (fixed decimals as ``%f``, or significant
+digits as ``%g``, at least 6), and each value's resolution is half a unit in its last printed
+place (none from 15 significant digits on), so the checks can tell a rounded print from a
+wrong value.
 """
 
 from __future__ import annotations
@@ -56,9 +57,8 @@ class Result:
         The instance prefix of the columns used ("" when the names were bare).
     source : str
         A name for the input (the file name, or the type of the object).
-    digits : int or None
-        The most significant digits any value was printed with: a tool prints all its values
-        alike, so this is its precision (None: stored in binary).
+    formats : dict of str to Format, or None
+        How each column was printed (None: stored in binary).
     """
 
     time: np.ndarray
@@ -67,7 +67,7 @@ class Result:
     columns: dict[str, str]
     instance: str
     source: str
-    digits: int | None = None
+    formats: dict[str, Format] | None = None
 
     @property
     def rows(self) -> int:
@@ -85,22 +85,48 @@ def _split_name(raw: str) -> tuple[str, str]:
     return "", name
 
 
-def _significant_digits(cell: str) -> int:
-    """Significant digits of a decimal literal (0 for text that is not one)."""
-    mantissa = cell.strip().lower().partition("e")[0].lstrip("+-")
-    digits = mantissa.replace(".", "").lstrip("0")
-    return len(digits) if digits.isdigit() else 0
+DEFAULT_PRECISION = 6
+"""C's and C++'s default precision (``%g``, ``std::ostream``): no tool prints fewer significant
+digits, so a column whose values happen to be short (0.01, 9.99) is taken as printed with 6."""
 
 
-def _resolution(values: np.ndarray, digits: int) -> np.ndarray:
-    """Half a unit in the last place of each value printed with ``digits`` significant digits
-    (0 when printed in full: 15 digits or more round-trip a double closely enough)."""
-    if digits >= 15:
-        return np.zeros(values.size)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        exponent = np.floor(np.log10(np.abs(values)))
-    exponent = np.where(np.isfinite(exponent), exponent, 0.0)
-    return np.where(values == 0, 0.0, 0.5 * 10.0 ** (exponent - digits + 1))
+@dataclass(frozen=True)
+class Format:
+    """How a column was printed: ``decimals`` fixed digits after the point (``%f``), else
+    ``digits`` significant digits (``%g``; 17 for a round-trip print)."""
+
+    decimals: int | None
+    digits: int
+
+    @classmethod
+    def of(cls, cells: list[str]) -> Format:
+        """The format of a column from its cells."""
+        digits, decimals = 0, set()
+        for cell in cells:
+            text = cell.strip().strip('"').lower()
+            mantissa, exponent_mark, _ = text.partition("e")
+            mantissa = mantissa.lstrip("+-")
+            significant = mantissa.replace(".", "").lstrip("0")
+            digits = max(digits, len(significant) if significant.isdigit() else 0)
+            decimals.add(len(mantissa.split(".", 1)[1]) if "." in mantissa and not exponent_mark else -1)
+        fixed = decimals.pop() if len(decimals) == 1 else -1
+        return cls(fixed if fixed > 0 else None, max(digits, DEFAULT_PRECISION))
+
+    def resolution(self, values: np.ndarray) -> np.ndarray:
+        """Half a unit in the last printed place of each value (0 from 15 significant digits on,
+        which round-trip a double closely enough)."""
+        if self.decimals is not None:
+            return np.full(values.size, 0.5 * 10.0 ** -self.decimals)
+        if self.digits >= 15:
+            return np.zeros(values.size)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            exponent = np.floor(np.log10(np.abs(values)))
+        exponent = np.where(np.isfinite(exponent), exponent, 0.0)
+        return np.where(values == 0, 0.0, 0.5 * 10.0 ** (exponent - self.digits + 1))
+
+    def describe(self) -> str:
+        """"%.6f" or "6 significant digits"."""
+        return f"%.{self.decimals}f" if self.decimals is not None else f"{self.digits} significant digits"
 
 
 def _pick(names: list[str], instance: str | None, source: str) -> tuple[int, dict[str, int], str]:
@@ -150,7 +176,6 @@ def read_csv_text(text: str, source: str, instance: str | None = None) -> Result
     time_index, picked, used = _pick(header, instance, source)
     wanted = {"time": time_index, **picked}
     numbers = {name: np.empty(len(body)) for name in wanted}
-    digits = 0
     for r, row in enumerate(body):
         if len(row) != len(header):
             raise ReadError(f"{source}: row {r + 2} has {len(row)} fields, the header {len(header)}")
@@ -160,10 +185,12 @@ def read_csv_text(text: str, source: str, instance: str | None = None) -> Result
                 numbers[name][r] = float(cell)
             except ValueError:
                 raise ReadError(f"{source}: row {r + 2}, column {header[c].strip()!r}: not a number: {cell!r}") from None
-            digits = max(digits, _significant_digits(cell))
     columns = {name: header[c].strip().strip('"') for name, c in wanted.items()}
-    resolution = {name: _resolution(values, digits) for name, values in numbers.items()}
-    return Result(numbers.pop("time"), numbers, resolution, columns, used, source, digits)
+    formats = {name: Format.of([row[c] for row in body]) for name, c in wanted.items()}
+    if all(f.decimals is None and f.digits >= 15 for n, f in formats.items() if n != "time"):
+        formats["time"] = Format(None, 17)  # one round-trip formatter: short times are exact decimals
+    resolution = {name: formats[name].resolution(values) for name, values in numbers.items()}
+    return Result(numbers.pop("time"), numbers, resolution, columns, used, source, formats)
 
 
 def _from_columns(columns: dict[str, np.ndarray], source: str, instance: str | None) -> Result:
@@ -231,11 +258,15 @@ def read_result(data: Any, instance: str | None = None) -> Result:
 
 def describe_digits(result: Result) -> str:
     """"printed with N significant digits" or "stored in binary"."""
-    if result.digits is None:
+    if result.formats is None:
         return "stored in binary"
-    if result.digits >= 15:
-        return f"printed with up to {result.digits} significant digits (full precision)"
-    return f"printed with {result.digits} significant digits (resolution {0.5 * 10.0 ** (1 - result.digits):.0e}, relative)"
+    coarse = {n: f for n, f in result.formats.items() if f.decimals is not None or f.digits < 15}
+    if not coarse:
+        return "printed in full precision"
+    kinds: dict[str, list[str]] = {}
+    for name, form in coarse.items():
+        kinds.setdefault(form.describe(), []).append(result.columns[name])
+    return "printed with " + "; ".join(f"{k} ({', '.join(v)})" for k, v in kinds.items())
 
 
 __all__ = ["ReadError", "Result", "VARIABLES", "describe_digits", "read_result", "read_csv_text"]
