@@ -37,7 +37,7 @@ class Reference:
     """The exact solution at the file's times for the experiment's problem."""
 
     t: np.ndarray
-    """Times from the start (the file's first time)."""
+    """Times from the start of the run (the experiment's start time)."""
     theta: np.ndarray
     omega: np.ndarray
     accumulation: np.ndarray
@@ -47,10 +47,10 @@ class Reference:
 
 
 def reference(result: Result, experiment: Experiment) -> Reference:
-    """pendulum_fmu.exact at the file's own times, counted from the file's first time."""
+    """pendulum_fmu.exact at the file's own times, counted from the experiment's start time."""
     from pendulum_fmu.fmu.exact_lib import exact  # noqa: PLC0415
 
-    t = result.time - result.time[0]
+    t = result.time - experiment.start_time
     theta, omega = exact(experiment.theta0, experiment.omega0, experiment.L, experiment.g, t)
     w0, d = experiment.w0, SENSITIVITY_STEP
     gain = np.ones_like(t)
@@ -98,7 +98,8 @@ def time_grid(result: Result, step: float | None = None) -> tuple[Check, float |
     back = np.flatnonzero(steps < 0)
     if back.size:
         k = int(back[0])
-        return Check("time grid", "fail", f"not monotone: time goes back from {t[k]!r} to {t[k + 1]!r} at row {k + 2}",
+        return Check("time grid", "fail", f"not monotone: time goes back from {float(t[k])!r} to {float(t[k + 1])!r} "
+                     f"at row {k + 2}",
                      {"rows": n, "first_backstep_row": k + 2}), None
     repeated = int(np.sum(steps == 0))
     span = float(t[-1] - t[0])

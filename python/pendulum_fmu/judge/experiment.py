@@ -12,15 +12,15 @@ from typing import Literal
 from pendulum_fmu.errors import UsageError
 from pendulum_fmu.judge.verdict import Experiment
 
-NUMBERS: tuple[str, ...] = ("theta", "omega", "L", "g", "tolerance")
+NUMBERS: tuple[str, ...] = ("theta", "omega", "L", "g", "tolerance", "startTime")
 NAMES: tuple[str, ...] = NUMBERS + ("solver",)
 FALLBACK: dict[str, float | str] = {"theta": math.radians(75.0), "omega": 0.0, "L": 1.0, "g": 9.81,
-                                    "tolerance": 1e-8, "solver": "rkn"}
+                                    "tolerance": 1e-8, "solver": "rkn", "startTime": 0.0}
 """The FMU's defaults, used only when no model description can be found."""
 
 
 def model_description_defaults(xml_text: str | bytes) -> dict[str, float | str]:
-    """Start values of theta, omega, L, g, the solver's name and the default tolerance.
+    """Start values of theta, omega, L, g, the solver's name, the default tolerance and start time.
 
     Parameters
     ----------
@@ -35,8 +35,9 @@ def model_description_defaults(xml_text: str | bytes) -> dict[str, float | str]:
     root = ET.fromstring(xml_text)
     found: dict[str, float | str] = {}
     experiment = root.find("DefaultExperiment")
-    if experiment is not None and experiment.get("tolerance"):
-        found["tolerance"] = float(experiment.get("tolerance", "nan"))
+    for key in ("tolerance", "startTime"):
+        if experiment is not None and experiment.get(key):
+            found[key] = float(experiment.get(key, "nan"))
     items: dict[str, str] = {}
     for item in root.iter("Item"):
         items[item.get("value", "")] = item.get("name", "")
@@ -91,7 +92,8 @@ def parse_start(pairs: list[str] | dict[str, float | str] | None) -> dict[str, f
     """``["theta=1.4", "L=2"]`` (or a dict) to checked values by name.
 
     ``theta`` also takes degrees (``theta=80deg``); ``tolerance`` must be > 0, ``L`` and ``g``
-    finite and > 0; ``solver`` is any name (informational for Model Exchange runs).
+    finite and > 0; ``startTime`` is when the start values hold; ``solver`` is any name
+    (informational for Model Exchange runs).
 
     Raises
     ------
@@ -140,4 +142,4 @@ def make_experiment(start: list[str] | dict[str, float | str] | None = None,
                       g=float(merged["g"]), interface=interface, tolerance=float(merged["tolerance"]),
                       tolerance_stated="tolerance" in given,
                       solver=str(given["solver"]) if "solver" in given else (str(base["solver"]) if interface == "CS" else None),
-                      given=tuple(sorted(given))), where
+                      given=tuple(sorted(given)), start_time=float(merged["startTime"])), where

@@ -143,7 +143,7 @@ def identify_fixed_step(result: Result, experiment: Experiment, h: float, error:
         return (x[1], -c * math.sin(x[0]))
 
     n = result.rows
-    if n > 20000:
+    if n > 20000 or result.time[0] != experiment.start_time:
         return None
     for method, advance in METHODS.items():
         for parts in (1, 2, 4, 10):
@@ -173,8 +173,8 @@ def cvode_errors(fmu: Path, result: Result, experiment: Experiment, tolerances: 
 
     from pendulum_fmu.fmu.exact_lib import exact  # noqa: PLC0415
 
-    start, stop = float(result.time[0]), float(result.time[-1])
-    interval = (stop - start) / max(1, result.rows - 1)
+    start, stop = experiment.start_time, float(result.time[-1])
+    interval = (stop - float(result.time[0])) / max(1, result.rows - 1)
     out = []
     for tol in tolerances:
         run = simulate_fmu(str(fmu), fmi_type="ModelExchange", solver="CVode", relative_tolerance=tol,

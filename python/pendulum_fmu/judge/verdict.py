@@ -49,6 +49,9 @@ class Experiment:
         True when the tolerance was given (``--start tolerance=...``), False for the default.
     solver : str or None
         The FMU's Co-Simulation solver when given; None: the FMU's default.
+    start_time : float
+        When the run started (the start values hold there): ``--start startTime=...``, else the
+        model description's DefaultExperiment.
     given : tuple of str
         The names set by the caller (the rest are the model description's defaults).
     """
@@ -62,6 +65,7 @@ class Experiment:
     tolerance_stated: bool
     solver: str | None = None
     given: tuple[str, ...] = ()
+    start_time: float = 0.0
 
     @property
     def w0(self) -> float:
