@@ -99,6 +99,8 @@ def test_ecos_swallows_an_fmu_error_and_the_judge_catches_it(fmu_path: Path, tmp
     verdict = judge(run.files["observer"], start=["theta=80deg"])
     assert not verdict.passed
     assert verdict.check("bound").status == "fail"
+    assert verdict.check("diagnosis").figures["cause"] == "frozen"
+    assert "the FMU never advanced" in verdict.line
 
 
 def test_ecos_import_needs_tbb_on_the_loader_path(tmp_path: Path) -> None:

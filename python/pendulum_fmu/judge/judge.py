@@ -62,6 +62,9 @@ def _exact_columns(result: Result, ref: checks.Reference, experiment: Experiment
         return Check("exact columns", "fail", f"{names}: {rows.size} value(s) off pendulum_fmu.exact (largest "
                      f"{max(largest.values()):.2e}) at {where}, the rest agree: mangled values", figures), None
     first = int(rows[0])
+    frozen = _frozen(result, list(mismatch))
+    if frozen:
+        return Check("exact columns", "fail", f"{names} differ from pendulum_fmu.exact: {frozen}", figures), None
     if h is not None:  # values computed at k h but written at other times (a drifting clock)
         on_grid = Result(np.arange(result.rows) * h + result.time[0], result.values, result.resolution,
                          result.columns, result.instance, result.source, result.formats)
@@ -86,6 +89,16 @@ def _exact_columns(result: Result, ref: checks.Reference, experiment: Experiment
                  "mangled values", figures), None
 
 
+def _frozen(result: Result, names: list[str]) -> str:
+    """"theta stays at 1.3963 in all 1001 rows: ..." when some of ``names`` never change, else ""."""
+    still = [n for n in names if result.rows > 2 and np.ptp(result.values[n]) == 0]
+    if not still:
+        return ""
+    values = ", ".join(f"{n} stays at {result.values[n][0]:.6g}" for n in still)
+    return (f"{values} in all {result.rows} rows: the FMU never advanced (an importer that went on after the FMU "
+            "refused a value?)")
+
+
 def _diagnosis(result: Result, ref: checks.Reference, experiment: Experiment, errors: dict[str, np.ndarray],
                bound_failed: bool, fitted: inference.Fit | None, h: float | None, fmu: Path | None) -> Check | None:
     """Why the numbers are off (or, in ME, what the importer's solver did)."""
@@ -101,6 +114,9 @@ def _diagnosis(result: Result, ref: checks.Reference, experiment: Experiment, er
                      f"solution: {changed}", {"cause": "parameters", "error_against_fit": against})
     if not bound_failed and experiment.interface == "CS":
         return None
+    frozen = _frozen(result, list(errors)) if bound_failed else ""
+    if frozen:
+        return Check("diagnosis", "info", frozen, {"cause": "frozen"})
     if bound_failed and result.formats is not None:
         rates = checks.slopes(ref, experiment)
         rounding = {n: result.resolution[n] + np.abs(rates[n]) * result.resolution["time"] for n in errors}
