@@ -15,9 +15,10 @@ fmi-cross-check write it, or Parquet) and check it against the exact solution: t
 (monotone, step, drift from k h), the theta_exact/omega_exact columns against
 pendulum_fmu.exact at the file's own times, theta and omega against the exact solution (largest
 error, where, growth), isolated mangled values, and the bound: in CS the certificate's
-100 tol max(1, |theta_e|) (omega: max(w0, |omega_e|)); in ME the same times A(t), the sum of one
-such error per period grown by the pendulum's own sensitivity. When it fails the judge says
-what fits: other parameters or start values, a fixed-step method, another tolerance.
+100 tol max(1, |theta_e|) (omega: max(w0, |omega_e|)); in ME 1000 tol times A(t), the sum of
+one such error per period grown by the pendulum's own sensitivity (docs/importers.md). When
+it fails the judge says what fits: other parameters or start values, a fixed-step method,
+another tolerance.
 One line per check, then the verdict. Exit status 0 pass, 1 fail, 2 unreadable input.
 """
 EPILOG = """\
