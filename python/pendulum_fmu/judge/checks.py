@@ -94,19 +94,18 @@ def time_grid(result: Result, step: float | None = None) -> tuple[Check, float |
     t = result.time
     n = t.size
     if not np.all(np.isfinite(t)):
-        k = int(np.flatnonzero(~np.isfinite(t))[0])
-        return Check("time grid", "fail", f"time is {t[k]} at row {k + 1}", {"rows": n}), None
+        nonfinite = int(np.flatnonzero(~np.isfinite(t))[0])
+        return Check("time grid", "fail", f"time is {t[nonfinite]} at row {nonfinite + 1}", {"rows": n}), None
     steps = np.diff(t)
     back = np.flatnonzero(steps < 0)
     if back.size:
-        k = int(back[0])
-        return Check("time grid", "fail", f"not monotone: time goes back from {float(t[k])!r} to {float(t[k + 1])!r} "
-                     f"at row {k + 2}",
-                     {"rows": n, "first_backstep_row": k + 2}), None
+        b = int(back[0])
+        return Check("time grid", "fail", f"not monotone: time goes back from {float(t[b])!r} to {float(t[b + 1])!r} "
+                     f"at row {b + 2}", {"rows": n, "first_backstep_row": b + 2}), None
     repeated = int(np.sum(steps == 0))
     span = float(t[-1] - t[0])
     if span <= 0:
-        return Check("time grid", "fail", f"all {n} rows at t = {t[0]!r}: no time span", {"rows": n}), None
+        return Check("time grid", "fail", f"all {n} rows at t = {float(t[0])!r}: no time span", {"rows": n}), None
     unique = t[np.concatenate(([True], steps > 0))]
     mean_step = span / (unique.size - 1)
     h = float(step) if step else nominal_step(mean_step)
