@@ -215,6 +215,7 @@ def test_any_subset_of_columns(cs_run: np.ndarray) -> None:
     ("time,x\n0,1\n", "none of theta"),
     ("time,theta\n0,1\n0.01,oops\n", "row 3, column 'theta': not a number"),
     ("time,theta,omega\n0,1\n", "row 2 has 2 fields"),
+    ("time,theta\n0,1\n", "1 row: a result needs at least two"),
     ("time,a.theta,b.theta\n0,1,1\n0.1,1,1\n", "several instances"),
 ])
 def test_unreadable_input_is_one_line_and_exit_2(tmp_path: Path, text: str, message: str) -> None:
@@ -224,6 +225,23 @@ def test_unreadable_input_is_one_line_and_exit_2(tmp_path: Path, text: str, mess
     done = judge_cli(str(tmp_path / "bad.csv"))
     assert done.returncode == 2
     assert done.stdout == "" and len(done.stderr.strip().splitlines()) == 1 and message in done.stderr
+
+
+def test_semicolons_with_decimal_commas(cs_run: np.ndarray, tmp_path: Path) -> None:
+    rows = [";".join(repr(float(cs_run[c][k])).replace(".", ",") for c in ["time", "theta"]) for k in range(cs_run.size)]
+    (tmp_path / "de.csv").write_text("\n".join(["time;theta", *rows]) + "\n")
+    result = read_result(tmp_path / "de.csv")
+    assert np.array_equal(result.values["theta"], cs_run["theta"])
+
+
+def test_nan_values_fail_and_nan_times_fail(cs_run: np.ndarray) -> None:
+    broken = cs_run.copy()
+    broken["theta"][3] = np.nan
+    verdict = judge(broken, start=["theta=80deg"])
+    assert not verdict.passed and verdict.check("theta error").status == "fail"
+    broken = cs_run.copy()
+    broken["time"][0] = np.nan
+    assert judge(broken, start=["theta=80deg"]).check("time grid").status == "fail"
 
 
 def test_binary_and_missing_files_exit_2(tmp_path: Path) -> None:

@@ -59,7 +59,7 @@ def fit_parameters(t: np.ndarray, columns: dict[str, np.ndarray], experiment: Ex
 
     thetas = [v for k, v in columns.items() if k.startswith("theta")]
     omegas = [v for k, v in columns.items() if k.startswith("omega")]
-    if not thetas and not omegas:
+    if not thetas and not omegas or t.size < 10:  # three unknowns: too few rows fit anything
         return None
     theta0 = float(thetas[0][0]) if thetas and t[0] == 0 else experiment.theta0
     omega0 = float(omegas[0][0]) if omegas and t[0] == 0 else experiment.omega0

@@ -3,7 +3,8 @@
 What is understood, so the same judge reads fmpy, both fmusims, fmuCheck, FMI4j, libcosim,
 Ecos and fmi-cross-check results:
 
-- a delimiter of ``,``, ``;`` or tab (the most frequent one in the header), or blanks;
+- a delimiter of ``,``, ``;`` (then also with decimal commas) or tab (the most frequent one in
+  the header), or blanks;
 - names quoted or bare, with blanks around them; ``#`` comment lines and blank lines skipped;
 - an instance prefix, ``pend.theta``, ``pend::theta`` or ``pend/theta``, and a trailing
   annotation in brackets, ``theta [rad]`` or libcosim's ``theta [3 REAL OUTPUT]``;
@@ -181,6 +182,9 @@ def read_csv_text(text: str, source: str, instance: str | None = None) -> Result
             raise ReadError(f"{source}: row {r + 2} has {len(row)} fields, the header {len(header)}")
         for name, c in wanted.items():
             cell = row[c].strip().strip('"')
+            if delimiter == ";":  # a semicolon file may use the decimal comma (Excel in most locales)
+                cell = cell.replace(",", ".")
+                row[c] = cell
             try:
                 numbers[name][r] = float(cell)
             except ValueError:
