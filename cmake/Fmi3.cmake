@@ -61,7 +61,8 @@ configure_file(${FMI3_DIR}/buildDescription.xml.new ${FMI3_DIR}/buildDescription
 
 # Binaries: the host build in binaries/x86_64-linux; with PENDULUM_PLATFORMS=ON (as the FMI 2.0
 # FMU, cmake/FmuPlatforms.cmake) the glibc-2.17 build there instead, and x86_64-windows,
-# x86_64-darwin and aarch64-darwin beside it (FMI 3.0 names one folder per architecture, so
+# x86_64-darwin, aarch64-darwin and aarch64-linux (Raspberry Pi OS 64-bit, ARM servers and CI
+# runners; glibc 2.17 like x86_64) beside it (FMI 3.0 names one folder per architecture, so
 # no universal binary), all cross-built with zig from the same sources and flags.
 set(FMI3_LINUX_BINARY $<TARGET_FILE:Pendulum_fmi3>)
 set(FMI3_OTHER_BINARIES "")
@@ -76,7 +77,8 @@ if(PENDULUM_PLATFORMS)
       x86_64-linux ${ZIG_LINUX_X86_64} so
       x86_64-windows ${ZIG_WINDOWS_X86_64} dll
       x86_64-darwin ${ZIG_MACOS_X86_64} dylib
-      aarch64-darwin ${ZIG_MACOS_ARM64} dylib)
+      aarch64-darwin ${ZIG_MACOS_ARM64} dylib
+      aarch64-linux ${ZIG_LINUX_ARM64} so)
   while(fmi3_cross_targets)
     list(POP_FRONT fmi3_cross_targets folder zig_target ext)
     cross_shared_library(fmi3_${folder} TARGET ${zig_target} SUBDIR fmi3-${folder} ${fmi3_cross_common})

@@ -25,6 +25,7 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
 HARNESS = ROOT / "tests/c/test_fmi_api.c"
+FMI3_HARNESS = ROOT / "tests/c/fmi3/test_fmi3_api.c"
 RESULTS = ROOT / "tests/c/fmu_results.c"
 FMA_CHECK = ROOT / "tests/c/fma_check.c"
 VARIABLES = ("theta", "omega", "theta_exact", "omega_exact")
@@ -88,11 +89,12 @@ def extract_fmu(fmu: Path, folder: Path) -> Path:
 
 
 def build_program(target: Target, source: Path, library: Path | None, sources_dir: Path | None,
-                  folder: Path) -> Path:
+                  folder: Path, extra_includes: tuple[Path, ...] = ()) -> Path:
     """Compile ``source`` for ``target`` into ``folder``, linked against a copy of ``library``.
 
     The program lands beside the library, so the loader finds it there (the DLL search order
-    on Windows, ``$ORIGIN`` as the run path on Linux).
+    on Windows, ``$ORIGIN`` as the run path on Linux). ``extra_includes``: more header
+    folders (the FMI 3.0 standard's headers, which the FMU does not ship).
     """
     folder.mkdir(parents=True, exist_ok=True)
     inputs = [str(source)]
@@ -100,7 +102,7 @@ def build_program(target: Target, source: Path, library: Path | None, sources_di
         if library.parent.resolve() != folder.resolve():
             shutil.copyfile(library, folder / library.name)
         inputs.append(str(folder / library.name))
-    includes = [f"-I{sources_dir}"] if sources_dir else []
+    includes = ([f"-I{sources_dir}"] if sources_dir else []) + [f"-I{d}" for d in extra_includes]
     program = folder / (source.stem + (".exe" if target.windows else ""))
     rpath = [] if target.windows else ["-Wl,-rpath,$ORIGIN", "-lm"]
     done = subprocess.run([*target.compiler, *C_FLAGS, *includes, *inputs, *rpath, "-o", str(program)],

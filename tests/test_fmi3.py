@@ -113,7 +113,7 @@ def test_rebuilt_from_its_build_description_gives_the_same_results(fmu3_path: Pa
 
 
 FMI3_BINARIES = {"x86_64-linux": "Pendulum.so", "x86_64-windows": "Pendulum.dll",
-                  "x86_64-darwin": "Pendulum.dylib", "aarch64-darwin": "Pendulum.dylib"}
+                  "x86_64-darwin": "Pendulum.dylib", "aarch64-darwin": "Pendulum.dylib", "aarch64-linux": "Pendulum.so"}
 """The FMI 3.0 platform folders (one per architecture) that scripts/build-fmu.sh fills."""
 
 

@@ -18,8 +18,8 @@ import pytest
 from fmpy import supported_platforms
 
 from pendulum_fmu.fmu.build import REPO_ROOT
-from platform_runs import (AARCH64, HARNESS, INSTALL, LINUX64, WIN64, Target, build_program, extract_fmu,
-                           fma_errors, max_differences, results_of, run_program, zig_win64)
+from platform_runs import (AARCH64, FMI3_HARNESS, HARNESS, INSTALL, LINUX64, WIN64, Target, build_program,
+                           extract_fmu, fma_errors, max_differences, results_of, run_program, zig_win64)
 
 sys.path.insert(0, str(REPO_ROOT / "cmake"))
 from fat_macho import fat_binary, thin_slice  # noqa: E402
@@ -204,6 +204,47 @@ def test_contraction_is_what_separates_arm64_from_x86_64(fmu_path: Path, unpacke
     require(AARCH64)
     fused = results_of(AARCH64, cross_library(fmu_path, "aarch64-linux-contract"), unpacked / "sources", tmp_path)
     assert max(max_differences(linux64_results, fused).values()) > 0.0
+
+
+# --- the FMI 3.0 FMU's aarch64-linux and x86_64-windows binaries, run -------------------------------
+
+@pytest.fixture(scope="module")
+def unpacked3(fmu3_path: Path, tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """The FMI 3.0 FMU, unpacked once for this module."""
+    return extract_fmu(fmu3_path, tmp_path_factory.mktemp("platforms3"))
+
+
+def fmi3_binary(unpacked3: Path, folder: str, name: str) -> Path:
+    path = unpacked3 / "binaries" / folder / name
+    assert path.is_file(), f"no binaries/{folder}/{name} in the FMI 3.0 FMU: build it with bash scripts/build-fmu.sh"
+    return path
+
+
+def run_fmi3_harness(target: Target, library: Path, unpacked3: Path, folder: Path) -> None:
+    """tests/c/fmi3/test_fmi3_api.c built for ``target`` against ``library`` (the binary taken
+    out of the FMU) and run there; the standard's headers from fmpy, as cmake/Fmi3.cmake."""
+    import fmpy
+
+    headers = Path(fmpy.__file__).parent / "c-code"
+    program = build_program(target, FMI3_HARNESS, library, unpacked3 / "sources", folder, (headers,))
+    done = run_program(target, program)
+    assert done.returncode == 0, done.stdout[-3000:] + done.stderr[-3000:]
+    assert re.search(r"test_fmi3_api: \d+ checks passed", done.stdout), done.stdout[-3000:]
+
+
+def test_fmi3_aarch64_linux_binary_loads_on_glibc_2_17(unpacked3: Path) -> None:
+    versions = glibc_versions_needed(fmi3_binary(unpacked3, "aarch64-linux", "Pendulum.so"))
+    assert versions and max(versions) <= GLIBC_FLOOR
+
+
+def test_fmi3_aarch64_linux_binary_passes_the_fmi3_harness_under_qemu(unpacked3: Path, tmp_path: Path) -> None:
+    require(AARCH64)
+    run_fmi3_harness(AARCH64, fmi3_binary(unpacked3, "aarch64-linux", "Pendulum.so"), unpacked3, tmp_path)
+
+
+def test_fmi3_x86_64_windows_dll_passes_the_fmi3_harness_under_wine(unpacked3: Path, tmp_path: Path) -> None:
+    require(WIN64)
+    run_fmi3_harness(WIN64, fmi3_binary(unpacked3, "x86_64-windows", "Pendulum.dll"), unpacked3, tmp_path)
 
 
 # --- darwin64, inspected only ----------------------------------------------------------------

@@ -15,10 +15,10 @@ from types import ModuleType
 from typing import NoReturn
 
 from pendulum_fmu import __version__
-from pendulum_fmu.cli import animate, bench, compare, simulate, study, sweep
+from pendulum_fmu.cli import animate, bench, compare, judge, simulate, study, sweep
 from pendulum_fmu.errors import BuildError, SimulationError, UsageError
 
-COMMANDS: tuple[ModuleType, ...] = (simulate, compare, study, animate, sweep, bench)
+COMMANDS: tuple[ModuleType, ...] = (simulate, compare, study, animate, sweep, bench, judge)
 
 DESCRIPTION = """\
 Build, run and check Pendulum.fmu: the nonlinear pendulum theta'' + (g/L) sin(theta) = 0,
@@ -36,6 +36,7 @@ examples:
   pendulum-fmu animate --amplitude 120 --out pendulum.gif
   pendulum-fmu sweep --amplitudes 1:179:100 --solvers dopri5,rkn,cvode --out out/sweep
   pendulum-fmu bench sweep
+  pendulum-fmu judge result.csv --interface ME --start tolerance=1e-6
 """
 
 

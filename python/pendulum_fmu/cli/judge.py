@@ -1,0 +1,67 @@
+"""``pendulum-fmu judge``: is an importer's result of Pendulum.fmu right, and if not, what is wrong."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+
+from pendulum_fmu.cli.arguments import fmu_file, output_file, positive
+
+NAME = "judge"
+HELP = "judge any importer's result file against the exact solution (exit 0 pass, 1 fail, 2 unreadable)"
+DESCRIPTION = """\
+Read the result of any importer (CSV as fmpy, fmusim, fmuCheck, FMI4j, libcosim, Ecos or the
+fmi-cross-check write it, or Parquet) and check it against the exact solution: the time grid
+(monotone, step, drift from k h), the theta_exact/omega_exact columns against
+pendulum_fmu.exact at the file's own times, theta and omega against the exact solution (largest
+error, where, growth), isolated mangled values, and the bound: in CS the certificate's
+100 tol max(1, |theta_e|) (omega: max(w0, |omega_e|)); in ME 1000 tol times A(t), the sum of
+one such error per period grown by the pendulum's own sensitivity (docs/importers.md). When
+it fails the judge says what fits: other parameters or start values, a fixed-step method,
+another tolerance.
+One line per check, then the verdict. Exit status 0 pass, 1 fail, 2 unreadable input.
+"""
+EPILOG = """\
+examples:
+  pendulum-fmu judge fmpy_cs.csv
+  pendulum-fmu judge result.csv --interface ME --start tolerance=1e-6
+  pendulum-fmu judge ecos.csv --start theta=80deg --start L=2 --json verdict.json --plot errors.png
+  pendulum-fmu judge container.csv --instance pend2
+"""
+
+
+def configure(parser: argparse.ArgumentParser) -> None:
+    """Add the options of ``judge``."""
+    parser.add_argument("result", metavar="RESULT", help="the result file: CSV or Parquet")
+    parser.add_argument("--start", action="append", default=[], metavar="NAME=VALUE",
+                        help="a value the run set: theta (rad, or e.g. 80deg), omega, L, g, solver, tolerance; "
+                             "repeat for several (the rest: the model description's defaults)")
+    parser.add_argument("--interface", choices=("CS", "ME"), default="CS",
+                        help="Co-Simulation (default) or Model Exchange")
+    parser.add_argument("--instance", metavar="NAME", help="whose columns, when the file has several instances")
+    parser.add_argument("--step", type=positive("s"), metavar="H",
+                        help="the communication step the run asked for (default: read from the times)")
+    parser.add_argument("--json", type=output_file(".json"), metavar="FILE.json", help="also write the verdict as JSON")
+    parser.add_argument("--plot", type=output_file(".png"), metavar="FILE.png",
+                        help="also draw the error over time with the bound")
+    parser.add_argument("--fmu", type=fmu_file, metavar="PATH",
+                        help="the FMU whose model description gives the defaults (default: as for simulate)")
+
+
+def run(args: argparse.Namespace) -> int:
+    """Run ``judge`` with parsed arguments: print the checks and the verdict, return 0/1/2."""
+    from pendulum_fmu.judge import ReadError, judge
+    from pendulum_fmu.judge.report import lines, write_json, write_plot
+
+    try:
+        verdict = judge(args.result, start=args.start, interface=args.interface, instance=args.instance,
+                        step=args.step, fmu=args.fmu)
+    except ReadError as error:
+        print(f"pendulum-fmu judge: unreadable: {error}", file=sys.stderr)
+        return 2
+    print("\n".join(lines(verdict)))
+    if args.json:
+        write_json(verdict, args.json)
+    if args.plot:
+        write_plot(verdict, args.result, args.plot)
+    return verdict.exit_code

@@ -1,0 +1,21 @@
+"""The judge: is an importer's result of Pendulum.fmu right, and if not, what is wrong?
+
+::
+
+    from pendulum_fmu.judge import judge
+    verdict = judge("result.csv", start=["theta=1.4", "tolerance=1e-6"], interface="ME")
+    print(verdict.line)          # PASS: ... or FAIL (...): ...
+    for check in verdict.checks:
+        print(check.name, check.status, check.line)
+
+Modules: ``reading`` (CSV, Parquet, tables), ``experiment`` (start values and defaults),
+``checks`` (grid, exact columns, errors, isolated values, bound), ``inference`` (parameter
+fit, fixed-step methods, effective tolerance), ``verdict`` (the dataclasses), ``report``
+(text, JSON, plot), ``judge`` (the whole run).
+"""
+
+from pendulum_fmu.judge.judge import judge
+from pendulum_fmu.judge.reading import ReadError
+from pendulum_fmu.judge.verdict import Check, Experiment, Verdict
+
+__all__ = ["Check", "Experiment", "ReadError", "Verdict", "judge"]

@@ -1,0 +1,285 @@
+"""The judge's checks, each one a function of the result that returns a :class:`Check`.
+
+Every check reports its figures; the bound check alone decides whether the numbers are
+accurate enough, the others whether the file is what it claims (its time grid, its exact
+columns, no value alone out of line with its neighbours).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from pendulum_fmu.judge.reading import Result
+from pendulum_fmu.judge.verdict import Check, Experiment
+
+EPS = float(np.finfo(float).eps)
+HALF_NANOSECOND = 5e-10
+"""Clocks that count whole nanoseconds (libcosim) place each time within this of k h."""
+EXACT_AGREEMENT = 1e-13
+"""|column - pendulum_fmu.exact| allowed per unit of max(1, |value|) beyond the printed
+resolution: the FMU's exact outputs and the library are the same C code (bit for bit on one
+platform; within 1.1e-15 across the ones measured)."""
+CS_FACTOR = 100.0
+"""The certificate's bound (BOUND.md): 100 tol."""
+ME_FACTOR = 1000.0
+"""Model Exchange: 1000 tol per period of the motion, propagated and accumulated (:func:`bound`).
+Ten times the certificate's: fmpy's CVODE (BDF) reaches 8.7 times 100 tol A(t) at 170 deg and
+stays below 0.1 of 1000 tol A(t) there (tests/me_bound_table.py, docs/importers.md)."""
+SENSITIVITY_STEP = 1e-7
+"""Relative change of the start state for the finite-difference sensitivity of :func:`reference`."""
+SPIKE_RATIO = 100.0
+"""A value whose error stands this many times above both neighbours' errors is isolated."""
+
+
+@dataclass(frozen=True)
+class Reference:
+    """The exact solution at the file's times for the experiment's problem."""
+
+    t: np.ndarray
+    """Times from the start of the run (the experiment's start time)."""
+    theta: np.ndarray
+    omega: np.ndarray
+    accumulation: np.ndarray
+    """A(t) = 1 + (1/T) int_0^t G(s) ds, T = 2 pi / w0, G(s) the largest growth of a change of
+    the start state after a time s (finite differences of the exact solution, >= 1): how a
+    local error made once per period grows and accumulates (the Model Exchange bound)."""
+
+
+def reference(result: Result, experiment: Experiment) -> Reference:
+    """pendulum_fmu.exact at the file's own times, counted from the experiment's start time."""
+    from pendulum_fmu.fmu.exact_lib import exact  # noqa: PLC0415
+
+    t = result.time - experiment.start_time
+    theta, omega = exact(experiment.theta0, experiment.omega0, experiment.L, experiment.g, t)
+    w0, d = experiment.w0, SENSITIVITY_STEP
+    gain = np.ones_like(t)
+    for d_theta, d_omega in ((d, 0.0), (0.0, d * w0)):
+        moved_theta, moved_omega = exact(experiment.theta0 + d_theta, experiment.omega0 + d_omega, experiment.L,
+                                         experiment.g, t)
+        moved = np.maximum(np.abs(moved_theta - theta), np.abs(moved_omega - omega) / w0) / d
+        gain = np.maximum(gain, np.where(np.isfinite(moved), moved, 1.0))
+    integral = np.concatenate(([0.0], np.cumsum(0.5 * (gain[1:] + gain[:-1]) * np.abs(np.diff(t)))))
+    return Reference(t, theta, omega, 1.0 + integral * w0 / (2 * math.pi))
+
+
+def _at(result: Result, k: int) -> str:
+    return f"t = {result.time[k]:.6g} s (row {k + 1})"
+
+
+# --- time grid -------------------------------------------------------------------------------
+
+def nominal_step(mean_step: float) -> float:
+    """The shortest decimal (up to 6 significant digits) within 1e-5 of ``mean_step``,
+    relative: the step the importer was asked for, as a person would have written it."""
+    for digits in range(1, 7):
+        candidate = float(f"{mean_step:.{digits}g}")
+        if abs(candidate - mean_step) <= 1e-5 * mean_step:
+            return candidate
+    return mean_step
+
+
+def time_grid(result: Result, step: float | None = None) -> tuple[Check, float | None]:
+    """Monotone times, the step h, and the drift of t_k from t_0 + k h.
+
+    Allowed drift at row k: 2 k eps max(|t_k|, h) (a clock that sums its steps), half a
+    nanosecond (a clock counting whole nanoseconds), and the times' printed resolution.
+
+    Returns
+    -------
+    Check, and the step h (None when the grid is not uniform or not monotone).
+    """
+    t = result.time
+    n = t.size
+    if not np.all(np.isfinite(t)):
+        nonfinite = int(np.flatnonzero(~np.isfinite(t))[0])
+        return Check("time grid", "fail", f"time is {t[nonfinite]} at row {nonfinite + 1}", {"rows": n}), None
+    steps = np.diff(t)
+    back = np.flatnonzero(steps < 0)
+    if back.size:
+        b = int(back[0])
+        return Check("time grid", "fail", f"not monotone: time goes back from {float(t[b])!r} to {float(t[b + 1])!r} "
+                     f"at row {b + 2}", {"rows": n, "first_backstep_row": b + 2}), None
+    repeated = int(np.sum(steps == 0))
+    span = float(t[-1] - t[0])
+    if span <= 0:
+        return Check("time grid", "fail", f"all {n} rows at t = {float(t[0])!r}: no time span", {"rows": n}), None
+    unique = t[np.concatenate(([True], steps > 0))]
+    mean_step = span / (unique.size - 1)
+    h = float(step) if step else nominal_step(mean_step)
+    figures: dict[str, float | int | bool | str] = {"rows": n, "start": float(t[0]), "end": float(t[-1]),
+                                                    "step": h, "repeated_times": repeated}
+    positive = np.diff(unique)
+    near = np.abs(positive - h) <= 1e-3 * h
+    if np.mean(near) < 0.9:
+        figures.update(uniform=False, smallest_step=float(positive.min()), largest_step=float(positive.max()))
+        return Check("time grid", "info", f"{n} rows, {t[0]:.6g} to {t[-1]:.6g} s, not a uniform grid "
+                     f"(steps {positive.min():.3g} to {positive.max():.3g} s): no k h to drift from", figures), None
+    k = np.arange(unique.size)
+    ideal = unique[0] + k * h
+    deviation = unique - ideal
+    rows = np.flatnonzero(np.concatenate(([True], steps > 0)))
+    allowed = 2 * k * EPS * np.maximum(np.abs(unique), h) + HALF_NANOSECOND + result.resolution["time"][rows]
+    worst = int(np.argmax(np.abs(deviation)))
+    over = np.flatnonzero(np.abs(deviation) > allowed)
+    figures.update(uniform=True, largest_deviation=float(deviation[worst]), at_time=float(unique[worst]),
+                   allowed_there=float(allowed[worst]), rows_over=int(over.size))
+    extra = f", {repeated} repeated" if repeated else ""
+    head = f"{n} rows{extra}, {t[0]:.6g} to {t[-1]:.6g} s, step h = {h:.6g} s"
+    if over.size:
+        first = int(over[0])
+        figures["first_over_time"] = float(unique[first])
+        return Check("time grid", "fail", f"{head}; times drift from k h: {deviation[worst]:+.2e} s at "
+                     f"{_at(result, int(rows[worst]))}, first beyond rounding ({allowed[first]:.1e} s) at "
+                     f"t = {unique[first]:.6g} s; {over.size} rows off", figures), h
+    return Check("time grid", "pass", f"{head}; largest drift from k h {abs(deviation[worst]):.1e} s "
+                 f"(at t = {unique[worst]:.6g} s; rounding allows {allowed[worst]:.1e})", figures), h
+
+
+# --- exact columns -----------------------------------------------------------------------------
+
+def slopes(ref: Reference, experiment: Experiment) -> dict[str, np.ndarray]:
+    """d/dt of the exact theta and omega (for the effect of a rounded time)."""
+    return {"theta": ref.omega, "omega": -(experiment.g / experiment.L) * np.sin(ref.theta)}
+
+
+def exact_mismatch(result: Result, ref: Reference, experiment: Experiment) -> dict[str, tuple[np.ndarray, np.ndarray]]:
+    """For each exact column present: (|column - reference|, allowed) per row."""
+    out = {}
+    rates = slopes(ref, experiment)
+    for name, exact_name in (("theta", "theta_exact"), ("omega", "omega_exact")):
+        if exact_name in result.values:
+            expected = getattr(ref, name)
+            diff = np.abs(result.values[exact_name] - expected)
+            allowed = (EXACT_AGREEMENT * np.maximum(1.0, np.abs(expected)) + result.resolution[exact_name]
+                       + np.abs(rates[name]) * result.resolution["time"])
+            out[exact_name] = (np.where(np.isfinite(diff), diff, np.inf), allowed)
+    return out
+
+
+# --- errors of theta and omega ------------------------------------------------------------------
+
+def growth(t: np.ndarray, error: np.ndarray) -> tuple[float, float] | None:
+    """(p, C) of |error| ~ C t^p, fitted to the running maximum of |error| over the last 90 %
+    of the time span (None when the error is 0 or the span too short)."""
+    envelope = np.maximum.accumulate(np.abs(error))
+    mask = (t >= 0.1 * t[-1]) & (envelope > 0) & (t > 0)
+    if np.sum(mask) < 5:
+        return None
+    p, log_c = np.polyfit(np.log(t[mask]), np.log(envelope[mask]), 1)
+    return float(p), float(math.exp(log_c))
+
+
+def describe_growth(fit: tuple[float, float] | None) -> str:
+    """"grows linearly (|e| ~ 2.1e-03 t^1.02)" and the like."""
+    if fit is None:
+        return "no growth to fit"
+    p, c = fit
+    if p < 0.4:
+        how = "stays level"
+    elif abs(p - 1) <= 0.25:
+        how = "grows linearly with t"
+    elif abs(p - 2) <= 0.25:
+        how = "grows quadratically with t"
+    else:
+        how = f"grows as t^{p:.1f}"
+    return f"{how} (|e| ~ {c:.2g} t^{p:.2f})"
+
+
+def state_errors(result: Result, ref: Reference) -> dict[str, np.ndarray]:
+    """theta - theta_exact and omega - omega_exact (reference), for the columns present."""
+    return {name: result.values[name] - getattr(ref, name) for name in ("theta", "omega") if name in result.values}
+
+
+def error_check(result: Result, ref: Reference, name: str, error: np.ndarray) -> Check:
+    """Largest error of ``name``, where, and how it grows."""
+    bad = ~np.isfinite(error)
+    if np.any(bad):
+        k = int(np.flatnonzero(bad)[0])
+        return Check(f"{name} error", "fail", f"{name} is {result.values[name][k]} at {_at(result, k)}",
+                     {"first_nonfinite_time": float(result.time[k])})
+    k = int(np.argmax(np.abs(error)))
+    fit = growth(ref.t, error)
+    figures = {"largest": float(abs(error[k])), "at_time": float(result.time[k]),
+               "growth_power": fit[0] if fit else None, "growth_constant": fit[1] if fit else None}
+    return Check(f"{name} error", "info", f"{name}: largest error {abs(error[k]):.2e} at t = {result.time[k]:.6g} s; "
+                 f"{describe_growth(fit)}", figures)
+
+
+def isolated_values(result: Result, ref: Reference, errors: dict[str, np.ndarray]) -> Check:
+    """Values whose error stands alone: SPIKE_RATIO times above both neighbours' errors (and
+    above rounding), which no integrator makes and a mangled file does."""
+    found: list[tuple[str, int, float, float]] = []
+    for name, error in errors.items():
+        if error.size < 3 or not np.all(np.isfinite(error)):
+            continue
+        scale = np.maximum(1.0, np.abs(getattr(ref, name)))
+        floor = 1e-14 * scale + result.resolution[name]
+        e = np.abs(error)
+        left = np.concatenate(([e[1]], e[:-1]))
+        right = np.concatenate((e[1:], [e[-2]]))
+        neighbours = np.maximum(np.maximum(left, right), floor)
+        middle = error.copy()
+        middle[1:-1] = error[1:-1] - 0.5 * (error[:-2] + error[2:])
+        middle[0] = error[0] - (2 * error[1] - error[2])
+        middle[-1] = error[-1] - (2 * error[-2] - error[-3])
+        spikes = np.flatnonzero(np.abs(middle) > SPIKE_RATIO * neighbours)
+        found += [(name, int(k), float(middle[k]), float(neighbours[k])) for k in spikes]
+    if not errors:
+        return Check("isolated values", "info", "no theta or omega column to look at")
+    if not found:
+        return Check("isolated values", "pass", f"no value stands out of its neighbours' error by {SPIKE_RATIO:g}x",
+                     {"count": 0})
+    name, k, jump, around = max(found, key=lambda f: abs(f[2]) / f[3])
+    return Check("isolated values", "fail", f"{len(found)} value(s) out of line: {name} at {_at(result, k)} is "
+                 f"{jump:+.2e} off its neighbours (their error {around:.1e}): a mangled value, no solver's error",
+                 {"count": len(found), "variable": name, "at_time": float(result.time[k]), "jump": jump,
+                  "rows": [f[1] + 1 for f in found[:20]]})
+
+
+# --- the bound -----------------------------------------------------------------------------------
+
+def bound(name: str, ref: Reference, experiment: Experiment) -> np.ndarray:
+    """The allowed |error| of ``name`` ("theta" or "omega") at each time.
+
+    Co-Simulation, the certificate's bound (BOUND.md): 100 tol max(1, |theta_e|) and
+    100 tol max(w0, |omega_e|). Model Exchange: 1000 tol (the same scales) times A(t) of
+    :class:`Reference`: the importer's solver controls its local error to tol, so an error of
+    1000 tol made once per period T = 2 pi / w0, each grown by the pendulum's own sensitivity
+    to its state, accumulates to A(t) times it (docs/importers.md, "The bound").
+    """
+    tol = experiment.tolerance
+    if name == "theta":
+        scale = np.maximum(1.0, np.abs(ref.theta))
+    else:
+        scale = np.maximum(experiment.w0, np.abs(ref.omega))
+    factor = CS_FACTOR if experiment.interface == "CS" else ME_FACTOR * ref.accumulation
+    return factor * tol * scale
+
+
+def bound_check(result: Result, ref: Reference, experiment: Experiment, errors: dict[str, np.ndarray]) -> Check:
+    """Every theta and omega within :func:`bound`."""
+    what = ("the certificate's bound 100 tol" if experiment.interface == "CS"
+            else "the ME bound 1000 tol A(t)")
+    tol_text = f"tol = {experiment.tolerance:g}{'' if experiment.tolerance_stated else ' (the experiment default)'}"
+    if not errors:
+        return Check("bound", "info", f"no theta or omega column: {what} not applied", {})
+    worst_ratio, worst = -1.0, ("", 0)
+    over = 0
+    for name, error in errors.items():
+        ratio = np.abs(error) / bound(name, ref, experiment)
+        ratio = np.where(np.isfinite(ratio), ratio, np.inf)
+        over += int(np.sum(ratio > 1))
+        k = int(np.argmax(ratio))
+        if ratio[k] > worst_ratio:
+            worst_ratio, worst = float(ratio[k]), (name, k)
+    name, k = worst
+    figures = {"interface": experiment.interface, "tolerance": experiment.tolerance, "worst_ratio": worst_ratio,
+               "variable": name, "at_time": float(result.time[k]), "rows_over": over}
+    if over:
+        return Check("bound", "fail", f"{over} values beyond {what} ({tol_text}); worst {name} at "
+                     f"t = {result.time[k]:.6g} s, {worst_ratio:.3g} times the bound", figures)
+    return Check("bound", "pass", f"within {what} ({tol_text}); worst {name} at t = {result.time[k]:.6g} s, "
+                 f"{worst_ratio:.2g} of the bound", figures)

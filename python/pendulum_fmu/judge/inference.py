@@ -1,0 +1,197 @@
+"""What went wrong, inferred from the numbers: different parameters or start values, a
+known fixed-step method, or a tolerance other than the experiment's.
+
+Each inference reproduces the file: a parameter fit recomputes the exact solution with the
+fitted values; a fixed-step method is rerun on the file's grid; a tolerance is found by
+running CVODE (fmpy's, the solver most importers use) on the FMU at decades of tolerance
+and interpolating where its error meets the file's.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from pendulum_fmu.judge.reading import Result
+from pendulum_fmu.judge.verdict import Experiment
+
+State = tuple[float, float]
+
+
+@dataclass(frozen=True)
+class Fit:
+    """Start values and parameters that reproduce some columns with the exact solution."""
+
+    theta0: float
+    omega0: float
+    L: float  # noqa: N815
+    g: float
+    residual: float
+    """Largest |column - exact(fitted)| over the fitted columns."""
+
+    def differences(self, experiment: Experiment, resolution: float = 0.0) -> list[str]:
+        """"L = 1.1 (not 1)" for each value that differs from the experiment's by more than
+        1e-9 relative, or 10 times the columns' print ``resolution`` (relative)."""
+        out = []
+        relative = max(1e-9, 10 * resolution)
+        for name, fitted, stated in (("theta", self.theta0, experiment.theta0), ("omega", self.omega0, experiment.omega0),
+                                     ("L", self.L, experiment.L)):
+            if abs(fitted - stated) > relative * max(1.0, abs(stated)):
+                out.append(f"{name} = {fitted:.10g} (not {stated:.10g})")
+        return out
+
+
+def fit_parameters(t: np.ndarray, columns: dict[str, np.ndarray], experiment: Experiment) -> Fit | None:
+    """Fit theta0, omega0 and L (g held: only g/L matters) so that the exact solution matches
+    ``columns`` (keys among theta, omega, theta_exact, omega_exact) at the times ``t``
+    (counted from the start).
+
+    The start values begin at the file's first row when it is at t = 0, L at a scan of
+    w0 over a factor of 2 either way; then scipy's least squares polishes all three.
+    """
+    from scipy.optimize import least_squares  # noqa: PLC0415
+
+    from pendulum_fmu.fmu.exact_lib import exact  # noqa: PLC0415
+
+    thetas = [v for k, v in columns.items() if k.startswith("theta")]
+    omegas = [v for k, v in columns.items() if k.startswith("omega")]
+    if not thetas and not omegas or t.size < 10:  # three unknowns: too few rows fit anything
+        return None
+    theta0 = float(thetas[0][0]) if thetas and t[0] == 0 else experiment.theta0
+    omega0 = float(omegas[0][0]) if omegas and t[0] == 0 else experiment.omega0
+    g = experiment.g
+
+    def residuals(theta_start: float, omega_start: float, length: np.ndarray | float) -> np.ndarray:
+        theta, omega = exact(theta_start, omega_start, np.atleast_1d(length)[:, None], g, t)
+        parts = [theta - v for v in thetas] + [(omega - v) / experiment.w0 for v in omegas]
+        return np.concatenate(parts, axis=-1)
+
+    lengths = experiment.L * np.geomspace(0.25, 4.0, 241)
+    with np.errstate(all="ignore"):
+        scan = np.nanmax(np.abs(residuals(theta0, omega0, lengths)), axis=-1)
+    if not np.any(np.isfinite(scan)):
+        return None
+    start = np.array([theta0, omega0, math.log(float(lengths[int(np.nanargmin(scan))]))])
+
+    def vector(x: np.ndarray) -> np.ndarray:
+        with np.errstate(all="ignore"):
+            r = residuals(float(x[0]), float(x[1]), math.exp(float(x[2])))[0]
+        return np.where(np.isfinite(r), r, 1e3)
+
+    solved = least_squares(vector, start, x_scale=np.array([1.0, experiment.w0, 1.0]), xtol=1e-15, ftol=1e-15,
+                           gtol=1e-15, max_nfev=200)
+    theta_f, omega_f, log_l = (float(v) for v in solved.x)
+    r = vector(solved.x)
+    scaled = np.concatenate([r[: len(thetas) * t.size], r[len(thetas) * t.size:] * experiment.w0])
+    return Fit(theta_f, omega_f, math.exp(log_l), g, float(np.max(np.abs(scaled))))
+
+
+# --- fixed-step methods ------------------------------------------------------------------------
+
+def _euler(f: Callable[[State], State], x: State, h: float) -> State:
+    d = f(x)
+    return (x[0] + h * d[0], x[1] + h * d[1])
+
+
+def _symplectic_euler(f: Callable[[State], State], x: State, h: float) -> State:
+    omega = x[1] + h * f(x)[1]
+    return (x[0] + h * omega, omega)
+
+
+def _heun(f: Callable[[State], State], x: State, h: float) -> State:
+    k1 = f(x)
+    k2 = f((x[0] + h * k1[0], x[1] + h * k1[1]))
+    return (x[0] + 0.5 * h * (k1[0] + k2[0]), x[1] + 0.5 * h * (k1[1] + k2[1]))
+
+
+def _rk4(f: Callable[[State], State], x: State, h: float) -> State:
+    k1 = f(x)
+    k2 = f((x[0] + 0.5 * h * k1[0], x[1] + 0.5 * h * k1[1]))
+    k3 = f((x[0] + 0.5 * h * k2[0], x[1] + 0.5 * h * k2[1]))
+    k4 = f((x[0] + h * k3[0], x[1] + h * k3[1]))
+    return (x[0] + h / 6 * (k1[0] + 2 * k2[0] + 2 * k3[0] + k4[0]),
+            x[1] + h / 6 * (k1[1] + 2 * k2[1] + 2 * k3[1] + k4[1]))
+
+
+METHODS: dict[str, Callable[[Callable[[State], State], State, float], State]] = {
+    "explicit Euler": _euler, "symplectic Euler": _symplectic_euler, "Heun (RK2)": _heun, "classic RK4": _rk4}
+
+
+@dataclass(frozen=True)
+class FixedStep:
+    """A fixed-step method that reproduces the file."""
+
+    method: str
+    step: float
+    agreement: float
+    """Largest |file - rerun| over theta and omega."""
+
+
+def identify_fixed_step(result: Result, experiment: Experiment, h: float, error: float) -> FixedStep | None:
+    """The first of :data:`METHODS` at step h, h/2, h/4 or h/10 that reproduces theta and
+    omega to 1e-3 of their error ``error`` against the exact solution (so the rerun explains
+    the error), else None."""
+    if "theta" not in result.values and "omega" not in result.values or error <= 0 or not math.isfinite(error):
+        return None
+    c = experiment.g / experiment.L
+
+    def f(x: State) -> State:
+        return (x[1], -c * math.sin(x[0]))
+
+    n = result.rows
+    if n > 20000 or result.time[0] != experiment.start_time:
+        return None
+    for method, advance in METHODS.items():
+        for parts in (1, 2, 4, 10):
+            x: State = (experiment.theta0, experiment.omega0)
+            trajectory = np.empty((n, 2))
+            trajectory[0] = x
+            step = h / parts
+            for k in range(1, n):
+                for _ in range(parts):
+                    x = advance(f, x, step)
+                trajectory[k] = x
+            worst = 0.0
+            for i, name in enumerate(("theta", "omega")):
+                if name in result.values:
+                    worst = max(worst, float(np.max(np.abs(result.values[name] - trajectory[:, i]))))
+            if worst <= 1e-3 * error:
+                return FixedStep(method, step, worst)
+    return None
+
+
+# --- tolerance ---------------------------------------------------------------------------------
+
+def cvode_errors(fmu: Path, result: Result, experiment: Experiment, tolerances: list[float]) -> list[float]:
+    """Largest |theta - exact| of fmpy's CVODE on the FMU (Model Exchange) at each tolerance,
+    on the file's output grid."""
+    from fmpy import simulate_fmu  # noqa: PLC0415
+
+    from pendulum_fmu.fmu.exact_lib import exact  # noqa: PLC0415
+
+    start, stop = experiment.start_time, float(result.time[-1])
+    interval = (stop - float(result.time[0])) / max(1, result.rows - 1)
+    out = []
+    for tol in tolerances:
+        run = simulate_fmu(str(fmu), fmi_type="ModelExchange", solver="CVode", relative_tolerance=tol,
+                           start_time=start, stop_time=stop, output_interval=interval, output=["theta"],
+                           start_values={"theta": experiment.theta0, "omega": experiment.omega0,
+                                         "L": experiment.L, "g": experiment.g})
+        theta, _ = exact(experiment.theta0, experiment.omega0, experiment.L, experiment.g, run["time"] - start)
+        out.append(float(np.max(np.abs(run["theta"] - theta))))
+    return out
+
+
+def effective_tolerance(error: float, tolerances: list[float], errors: list[float]) -> float | None:
+    """The tolerance at which CVODE's error (log-log interpolated) equals ``error``; None when
+    ``error`` is outside the range the runs span."""
+    pairs = sorted(zip(errors, tolerances))
+    logs_e = np.log10([e for e, _ in pairs])
+    logs_t = np.log10([t for _, t in pairs])
+    if error <= 0 or not (pairs[0][0] <= error <= pairs[-1][0]) or len(pairs) < 2:
+        return None
+    return float(10 ** np.interp(math.log10(error), logs_e, logs_t))

@@ -1,0 +1,233 @@
+"""``judge(...)``: read a result, run every check, infer what went wrong, return the verdict."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any, Literal
+
+import numpy as np
+
+from pendulum_fmu.fmu.exact_lib import exact
+from pendulum_fmu.judge import checks, inference
+from pendulum_fmu.judge.experiment import make_experiment
+from pendulum_fmu.judge.reading import ReadError, Result, describe_digits, read_result
+from pendulum_fmu.judge.verdict import Check, Experiment, Verdict
+
+MANGLED_ROWS = 3
+"""At most this many rows (or 1 % of them) off in the exact columns: mangled values, not a
+different problem (which moves every row)."""
+FIT_AGREEMENT = 1e-10
+"""A parameter fit explains the exact columns when it reproduces them to this."""
+CVODE_TOLERANCES = [10.0 ** -k for k in range(3, 13)]
+
+
+def _reading_check(result: Result) -> Check:
+    used = ", ".join(result.columns[v] for v in ("theta", "omega", "theta_exact", "omega_exact") if v in result.columns)
+    instance = f" of instance {result.instance!r}" if result.instance else ""
+    return Check("read", "info", f"{Path(result.source).name}: {result.rows} rows; {used}{instance}; "
+                 f"{describe_digits(result)}", {"rows": result.rows, "columns": dict(result.columns),
+                                                "instance": result.instance,
+                                                "formats": None if result.formats is None else
+                                                {k: f.describe() for k, f in result.formats.items()}})
+
+
+def _experiment_check(experiment: Experiment, where: str) -> Check:
+    given = ", ".join(experiment.given) if experiment.given else "nothing"
+    solver = f", solver {experiment.solver}" if experiment.solver else ""
+    return Check("experiment", "info", f"{experiment.interface}, theta0 = {experiment.theta0:.10g} rad, "
+                 f"omega0 = {experiment.omega0:.10g} rad/s, L = {experiment.L:g} m, g = {experiment.g:g} m/s^2, "
+                 f"tol = {experiment.tolerance:g}{solver} (given: {given}; the rest from {Path(where).name})",
+                 {"defaults_from": where})
+
+
+def _exact_columns(result: Result, ref: checks.Reference, experiment: Experiment,
+                   h: float | None) -> tuple[Check, inference.Fit | None]:
+    mismatch = checks.exact_mismatch(result, ref, experiment)
+    if not mismatch:
+        return Check("exact columns", "info", "no theta_exact or omega_exact column"), None
+    names = ", ".join(mismatch)
+    largest = {k: float(np.max(d)) for k, (d, _) in mismatch.items()}
+    off = np.zeros(result.rows, dtype=bool)
+    for d, allowed in mismatch.values():
+        off |= d > allowed
+    figures: dict[str, Any] = {"largest": largest, "rows_off": int(off.sum())}
+    if not off.any():
+        worst = max(largest.values())
+        return Check("exact columns", "pass", f"{names} equal pendulum_fmu.exact at the file's times: "
+                     f"largest difference {worst:.1e}", figures), None
+    rows = np.flatnonzero(off)
+    if rows.size <= max(MANGLED_ROWS, result.rows // 100):
+        where = ", ".join(f"t = {result.time[k]:.6g} s (row {k + 1})" for k in rows[:5])
+        figures["rows"] = [int(k) + 1 for k in rows]
+        return Check("exact columns", "fail", f"{names}: {rows.size} value(s) off pendulum_fmu.exact (largest "
+                     f"{max(largest.values()):.2e}) at {where}, the rest agree: mangled values", figures), None
+    first = int(rows[0])
+    frozen = _frozen(result, list(mismatch))
+    if frozen:
+        return Check("exact columns", "fail", f"{names} differ from pendulum_fmu.exact: {frozen}", figures), None
+    if h is not None:  # values computed at k h but written at other times (a drifting clock)
+        on_grid = Result(np.arange(result.rows) * h + result.time[0], result.values, result.resolution,
+                         result.columns, result.instance, result.source, result.formats)
+        on_grid_ref = checks.reference(on_grid, experiment)
+        if all(np.all(d <= a) for d, a in checks.exact_mismatch(on_grid, on_grid_ref, experiment).values()):
+            return Check("exact columns", "fail", f"{names} differ from pendulum_fmu.exact at the written times "
+                         f"(largest {max(largest.values()):.2e}) but equal it at t = k h: the values are right, "
+                         "the times are written wrong", figures), None
+    fit = inference.fit_parameters(ref.t, {k: result.values[k] for k in mismatch}, experiment)
+    head = (f"{names} differ from pendulum_fmu.exact from t = {result.time[first]:.6g} s on (largest "
+            f"{max(largest.values()):.2e}, {rows.size} rows)")
+    print_allowance = 2 * max(float(np.max(a)) for _, a in mismatch.values())
+    changed = fit.differences(experiment, print_allowance) if fit is not None else []
+    if fit is not None and fit.residual <= FIT_AGREEMENT + print_allowance and changed:
+        figures["fit"] = {"theta0": fit.theta0, "omega0": fit.omega0, "L": fit.L, "g": fit.g, "residual": fit.residual,
+                          "changed": changed}
+        return Check("exact columns", "fail", f"{head}: they are the exact solution for {', '.join(changed)} "
+                     f"(g = {fit.g:g} held; fits to {fit.residual:.1e}): the importer set different parameters "
+                     "or start values", figures), fit
+    residual = f"best fit off by {fit.residual:.1e}" if fit else "no fit"
+    return Check("exact columns", "fail", f"{head}: no start values and L reproduce them ({residual}): "
+                 "mangled values", figures), None
+
+
+def _frozen(result: Result, names: list[str]) -> str:
+    """"theta stays at 1.3963 in all 1001 rows: ..." when some of ``names`` never change, else ""."""
+    still = [n for n in names if result.rows > 2 and np.ptp(result.values[n]) == 0]
+    if not still:
+        return ""
+    values = ", ".join(f"{n} stays at {result.values[n][0]:.6g}" for n in still)
+    return (f"{values} in all {result.rows} rows: the FMU never advanced (an importer that went on after the FMU "
+            "refused a value?)")
+
+
+def _diagnosis(result: Result, ref: checks.Reference, experiment: Experiment, errors: dict[str, np.ndarray],
+               bound_failed: bool, fitted: inference.Fit | None, h: float | None, fmu: Path | None) -> Check | None:
+    """Why the numbers are off (or, in ME, what the importer's solver did)."""
+    if not errors:
+        return None
+    worst = max(float(np.max(np.abs(e))) for e in errors.values())
+    theta_growth = checks.describe_growth(checks.growth(ref.t, next(iter(errors.values()))))
+    if fitted is not None:
+        refit = checks.Reference(ref.t, *exact(fitted.theta0, fitted.omega0, fitted.L, fitted.g, ref.t), ref.accumulation)
+        against = max(float(np.max(np.abs(e))) for e in checks.state_errors(result, refit).values())
+        changed = ", ".join(fitted.differences(experiment, _largest_resolution(result)))
+        return Check("diagnosis", "info", f"a different problem, solved to {against:.1e} against its own exact "
+                     f"solution: {changed}", {"cause": "parameters", "error_against_fit": against})
+    if not bound_failed and experiment.interface == "CS":
+        return None
+    frozen = _frozen(result, list(errors)) if bound_failed else ""
+    if frozen:
+        return Check("diagnosis", "info", frozen, {"cause": "frozen"})
+    if bound_failed and result.formats is not None:
+        rates = checks.slopes(ref, experiment)
+        rounding = {n: result.resolution[n] + np.abs(rates[n]) * result.resolution["time"] for n in errors}
+        if all(np.all(np.abs(e) <= 1.01 * rounding[n] + 1e-12) for n, e in errors.items()):
+            coarse = max(float(np.max(r)) for r in rounding.values())
+            formats = ", ".join(sorted({result.formats[n].describe() for n in errors}))
+            return Check("diagnosis", "info", f"every error is within the print's rounding (values printed with "
+                         f"{formats}, up to {coarse:.1e} here), coarser than the bound: the file cannot show the "
+                         "accuracy; write 17 significant digits", {"cause": "print precision", "rounding": coarse})
+    if bound_failed and experiment.interface == "ME" and h is not None:
+        found = inference.identify_fixed_step(result, experiment, h, worst)
+        if found is not None:
+            return Check("diagnosis", "info", f"{found.method} at h = {found.step:g} reproduces the file to "
+                         f"{found.agreement:.1e}: the importer's solver is {found.method} with a fixed step "
+                         f"(error {theta_growth})", {"cause": "fixed step", "method": found.method, "step": found.step})
+    if bound_failed:
+        fit = inference.fit_parameters(ref.t, {k: result.values[k] for k in errors}, experiment)
+        allowed = checks.CS_FACTOR * experiment.tolerance
+        if fit is not None and fit.differences(experiment) and fit.residual <= min(allowed, 1e-3 * worst):
+            return Check("diagnosis", "info", f"theta and omega fit the exact solution for "
+                         f"{', '.join(fit.differences(experiment))} to {fit.residual:.1e}: the importer set different "
+                         "parameters or start values", {"cause": "parameters", "theta0": fit.theta0,
+                                                         "omega0": fit.omega0, "L": fit.L})
+    if experiment.interface == "ME" and fmu is not None and "theta" in errors:
+        theta_error = float(np.max(np.abs(errors["theta"])))
+        errs = inference.cvode_errors(fmu, result, experiment, CVODE_TOLERANCES)
+        tol = inference.effective_tolerance(theta_error, CVODE_TOLERANCES, errs)
+        figures = {"cause": "tolerance", "cvode_tolerances": CVODE_TOLERANCES, "cvode_errors": errs,
+                   "effective_tolerance": tol}
+        if tol is None:
+            side = "smaller" if theta_error < min(errs) else "larger"
+            return Check("diagnosis", "info", f"theta error {theta_error:.1e} ({theta_growth}) is {side} than "
+                         f"CVODE's at every tolerance from 1e-3 to 1e-12", figures)
+        stated = experiment.tolerance
+        decade = f"~{10 ** round(np.log10(tol)):.0e}".replace("e-0", "e-")
+        if tol > 10 * stated:
+            because = ("not the experiment's" if not experiment.tolerance_stated else "not the stated")
+            return Check("diagnosis", "info", f"theta error {theta_error:.1e} fits CVODE at rtol {decade}, {because} "
+                         f"{stated:g}: the importer did not pass the experiment's tolerance to its solver", figures)
+        return Check("diagnosis", "info", f"theta error {theta_error:.1e} ({theta_growth}) fits CVODE at rtol "
+                     f"{decade} (tolerance {stated:g})", figures)
+    if bound_failed:
+        return Check("diagnosis", "info", f"no known cause reproduces the error (largest {worst:.1e}, {theta_growth})",
+                     {"cause": None})
+    return None
+
+
+def _largest_resolution(result: Result) -> float:
+    """The largest print resolution of the value columns, relative to max(1, |value|)."""
+    return max((float(np.max(result.resolution[n] / np.maximum(1.0, np.abs(v)))) for n, v in result.values.items()),
+               default=0.0)
+
+
+def judge(data: Any, *, start: list[str] | dict[str, float | str] | None = None,
+          interface: Literal["CS", "ME"] = "CS", instance: str | None = None, step: float | None = None,
+          fmu: Path | None = None) -> Verdict:
+    """Judge an importer's result of Pendulum.fmu against the exact solution.
+
+    Parameters
+    ----------
+    data : str, Path, pandas.DataFrame, numpy structured array or mapping
+        The result: a CSV or Parquet file, or a table (see :mod:`pendulum_fmu.judge.reading`).
+    start : list of "NAME=VALUE" or dict, optional
+        theta, omega, L, g, solver, tolerance as the run set them; the rest are the model
+        description's defaults.
+    interface : {"CS", "ME"}
+        Co-Simulation (the bound of the FMU's certificate) or Model Exchange.
+    instance : str, optional
+        Which instance's columns, when the result holds several.
+    step : float, optional
+        The communication step the run was asked for (default: inferred from the times).
+    fmu : Path, optional
+        The FMU whose model description gives the defaults (and, for Model Exchange, runs
+        CVODE to infer a tolerance).
+
+    Returns
+    -------
+    Verdict
+
+    Raises
+    ------
+    ReadError
+        The input cannot be read (one line).
+    UsageError
+        A bad ``start``, ``interface`` or ``fmu``.
+    """
+    result = read_result(data, instance)
+    if result.rows < 2:
+        raise ReadError(f"{result.source}: {result.rows} row: a result needs at least two")
+    experiment, where = make_experiment(start, interface, fmu)
+    found: list[Check] = [_reading_check(result), _experiment_check(experiment, where)]
+    grid, h = checks.time_grid(result, step)
+    found.append(grid)
+    ref = checks.reference(result, experiment)
+    exact_check, fitted = _exact_columns(result, ref, experiment,
+                                         h if grid.status == "fail" else None)
+    found.append(exact_check)
+    errors = checks.state_errors(result, ref)
+    found += [checks.error_check(result, ref, name, e) for name, e in errors.items()]
+    found.append(checks.isolated_values(result, ref, errors))
+    bound = checks.bound_check(result, ref, experiment, errors)
+    found.append(bound)
+    runner = fmu if fmu is not None else (Path(where) if where.endswith(".fmu") else None)
+    diagnosis = _diagnosis(result, ref, experiment, errors, bound.status == "fail", fitted, h, runner)
+    if diagnosis is not None:
+        found.append(diagnosis)
+    failed = [c for c in found if c.status == "fail"]
+    if failed:
+        known = diagnosis is not None and diagnosis.figures.get("cause") is not None
+        reason = diagnosis.line if known and diagnosis is not None else failed[0].line
+        line = f"FAIL ({', '.join(c.name for c in failed)}): {reason}"
+    else:
+        line = f"PASS: {bound.line}" if bound.status == "pass" else f"PASS: {exact_check.line}"
+    return Verdict(not failed, line, tuple(found), experiment, result.source, dict(result.columns), result.instance)

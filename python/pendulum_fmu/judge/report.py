@@ -1,0 +1,108 @@
+"""The verdict for people (one line per check), for CI (JSON) and as a figure (PNG)."""
+
+from __future__ import annotations
+
+import json
+import math
+import os
+import tempfile
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from pendulum_fmu.judge.verdict import Verdict
+
+
+def lines(verdict: Verdict) -> list[str]:
+    """One line per check (``name  STATUS  what``), then the verdict."""
+    out = [f"{c.name:<16s}{c.status.upper():<6s}{c.line}" for c in verdict.checks]
+    out.append(f"{'verdict':<16s}{verdict.line}")
+    return out
+
+
+def _replace_atomically(path: Path, write: Any) -> None:
+    """Write through a temporary file in the same folder, then rename: never half a file."""
+    path.parent.mkdir(parents=True, exist_ok=True)
+    handle, temporary = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=path.suffix)
+    os.close(handle)
+    try:
+        write(Path(temporary))
+        os.replace(temporary, path)
+    finally:
+        if os.path.exists(temporary):
+            os.unlink(temporary)
+
+
+def _plain(value: Any) -> Any:
+    """JSON-safe: non-finite floats as strings, numpy scalars as Python numbers."""
+    if isinstance(value, dict):
+        return {str(k): _plain(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [_plain(v) for v in value]
+    if isinstance(value, np.generic):
+        value = value.item()
+    if isinstance(value, float) and not math.isfinite(value):
+        return str(value)
+    return value
+
+
+def write_json(verdict: Verdict, path: Path) -> None:
+    """The verdict as JSON (``Verdict.to_dict``), written whole or not at all."""
+    text = json.dumps(_plain(verdict.to_dict()), indent=2) + "\n"
+    _replace_atomically(path, lambda p: p.write_text(text))
+
+
+def write_plot(verdict: Verdict, data: Any, path: Path) -> None:
+    """|theta - exact| and |omega - exact| over time on a log scale, with the bound drawn
+    (and the exact columns' differences when they are off).
+
+    Parameters
+    ----------
+    verdict : Verdict
+        The judged result's verdict (its experiment fixes the reference and the bound).
+    data : Any
+        The same input the verdict was made from (re-read for the series).
+    path : Path
+        The PNG to write.
+    """
+    import matplotlib  # noqa: PLC0415
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt  # noqa: PLC0415
+
+    from pendulum_fmu.judge import checks  # noqa: PLC0415
+    from pendulum_fmu.judge.reading import read_result  # noqa: PLC0415
+
+    result = read_result(data, verdict.instance)
+    ref = checks.reference(result, verdict.experiment)
+    errors = checks.state_errors(result, ref)
+    fig, axes = plt.subplots(len(errors) or 1, 1, figsize=(9, 3.2 * max(1, len(errors))), sharex=True, squeeze=False)
+    tiny = 1e-17
+    for ax, (name, error) in zip(axes[:, 0], errors.items()):
+        ax.semilogy(result.time, np.maximum(np.abs(error), tiny), lw=1, label=f"|{name} - {name}_exact|")
+        me = verdict.experiment.interface == "ME"
+        factor = "1000 tol" if me else "100 tol"
+        scale = "max(1, |theta_e|)" if name == "theta" else "max(w0, |omega_e|)"
+        ax.semilogy(result.time, checks.bound(name, ref, verdict.experiment), "k--", lw=1.2,
+                    label=f"bound {factor} {scale}" + (" A(t)" if me else ""))
+        exact_name = f"{name}_exact"
+        mismatch = checks.exact_mismatch(result, ref, verdict.experiment).get(exact_name)
+        if mismatch is not None and np.any(mismatch[0] > mismatch[1]):
+            ax.semilogy(result.time, np.maximum(mismatch[0], tiny), color="tab:red", lw=1,
+                        label=f"|{exact_name} column - pendulum_fmu.exact|")
+        ax.set_ylabel(f"{name} error ({'rad' if name == 'theta' else 'rad/s'})")
+        ax.grid(True, which="major", alpha=0.3)
+        ax.set_ylim(bottom=tiny)
+        ax.legend(loc="lower right", fontsize=8)
+    if not errors:
+        axes[0, 0].text(0.5, 0.5, "no theta or omega column", ha="center", transform=axes[0, 0].transAxes)
+    axes[-1, 0].set_xlabel("time (s)")
+    verdict_word = "PASS" if verdict.passed else "FAIL"
+    e = verdict.experiment
+    fig.suptitle(f"{Path(verdict.source).name}: {verdict_word}  ({e.interface}, tol {e.tolerance:g}, "
+                 f"theta0 {math.degrees(e.theta0):.4g} deg, L {e.L:g} m, g {e.g:g})", fontsize=10)
+    fig.tight_layout()
+    _replace_atomically(path, lambda p: fig.savefig(p, dpi=110, format="png"))
+    plt.close(fig)
+

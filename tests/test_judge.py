@@ -1,0 +1,278 @@
+"""``pendulum-fmu judge`` on fmpy's runs of both FMUs and on the same results edited by hand:
+the judge passes what is right and fails, with the right reason, what is not."""
+
+from __future__ import annotations
+
+import json
+import math
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+from fmpy import simulate_fmu
+from fmpy.util import write_csv
+
+from pendulum_fmu.judge import ReadError, judge
+from pendulum_fmu.judge.reading import read_result
+from pendulum_fmu.judge.report import write_plot
+
+OUTPUTS = ["theta", "omega", "theta_exact", "omega_exact"]
+THETA0 = math.radians(80.0)
+
+
+def fmpy_run(fmu: Path, **options: object) -> np.ndarray:
+    """10 s at 0.01 s, the four outputs."""
+    options.setdefault("stop_time", 10.0)
+    options.setdefault("output_interval", 0.01)
+    return simulate_fmu(str(fmu), output=OUTPUTS, **options)  # type: ignore[arg-type]
+
+
+@pytest.fixture(scope="module")
+def cs_run(fmu_path: Path) -> np.ndarray:
+    return fmpy_run(fmu_path, start_values={"theta": THETA0})
+
+
+def judge_cli(*args: str) -> subprocess.CompletedProcess[str]:
+    return subprocess.run([sys.executable, "-m", "pendulum_fmu", "judge", *args], capture_output=True, text=True,
+                          timeout=120, check=False)
+
+
+# --- what must pass ----------------------------------------------------------------------------
+
+def test_fmpy_cs_passes_both_fmus(fmu_any: Path, tmp_path: Path) -> None:
+    run = fmpy_run(fmu_any, start_values={"theta": THETA0})
+    write_csv(tmp_path / "cs.csv", run)
+    verdict = judge(tmp_path / "cs.csv", start=["theta=80deg"])
+    assert verdict.passed, verdict.line
+    assert [c.name for c in verdict.checks if c.status == "pass"] == ["time grid", "exact columns", "isolated values",
+                                                                       "bound"]
+    # the largest error the judge reports is the file's own theta - theta_exact (the FMU's exact output)
+    assert verdict.check("theta error").figures["largest"] == pytest.approx(
+        float(np.max(np.abs(run["theta"] - run["theta_exact"]))), rel=1e-6, abs=1e-15)
+    assert verdict.check("exact columns").figures["largest"]["theta_exact"] <= 1e-15
+
+
+@pytest.mark.parametrize("tolerance", [1e-6, 1e-8, 1e-10])
+def test_fmpy_cvode_passes_at_its_stated_tolerance(fmu_path: Path, tolerance: float) -> None:
+    run = fmpy_run(fmu_path, fmi_type="ModelExchange", relative_tolerance=tolerance, start_values={"theta": THETA0})
+    verdict = judge(run, start=["theta=80deg", f"tolerance={tolerance}"], interface="ME")
+    assert verdict.passed, verdict.line
+    assert verdict.check("bound").figures["worst_ratio"] < 1.0
+    diagnosis = verdict.check("diagnosis")
+    assert diagnosis.figures["cause"] == "tolerance"
+    # CVODE's own error matches CVODE at the same tolerance to within a decade
+    assert abs(math.log10(diagnosis.figures["effective_tolerance"] / tolerance)) < 1.0, diagnosis.line
+
+
+# --- what must fail, and why -------------------------------------------------------------------
+
+def test_euler_model_exchange_fails_as_explicit_euler(fmu_any: Path) -> None:
+    run = fmpy_run(fmu_any, fmi_type="ModelExchange", solver="Euler", step_size=0.01, start_values={"theta": THETA0})
+    verdict = judge(run, start=["theta=80deg"], interface="ME")
+    assert not verdict.passed
+    assert verdict.check("bound").status == "fail"
+    diagnosis = verdict.check("diagnosis")
+    assert diagnosis.figures == {"cause": "fixed step", "method": "explicit Euler", "step": 0.01}
+    assert "explicit Euler at h = 0.01" in verdict.line
+
+
+def test_cvode_at_1e_4_fails_as_tolerance_not_passed(fmu_path: Path) -> None:
+    """What C fmusim does with --solver cvode: rtol 1e-4 whatever the experiment says (1e-8)."""
+    run = fmpy_run(fmu_path, fmi_type="ModelExchange", relative_tolerance=1e-4, start_values={"theta": THETA0})
+    verdict = judge(run, start=["theta=80deg"], interface="ME")
+    assert not verdict.passed
+    diagnosis = verdict.check("diagnosis")
+    assert 10 ** -4.5 < diagnosis.figures["effective_tolerance"] < 10 ** -3.5
+    assert "not the experiment's 1e-08: the importer did not pass the experiment's tolerance" in verdict.line
+
+
+@pytest.mark.parametrize("column", ["theta", "theta_exact", "omega"])
+def test_one_value_changed_by_1e_6_fails(cs_run: np.ndarray, tmp_path: Path, column: str) -> None:
+    edited = cs_run.copy()
+    edited[column][437] += 1e-6
+    write_csv(tmp_path / "edited.csv", edited)
+    verdict = judge(tmp_path / "edited.csv", start=["theta=80deg"])
+    assert not verdict.passed
+    if column.endswith("_exact"):
+        assert verdict.check("exact columns").figures["rows"] == [438]
+    else:
+        check = verdict.check("isolated values")
+        assert check.status == "fail" and check.figures["rows"] == [438]
+        assert check.figures["jump"] == pytest.approx(1e-6, rel=1e-3)
+    assert "mangled" in verdict.line
+    # the untouched file passes: the edit alone made the difference
+    assert judge(cs_run, start=["theta=80deg"]).passed
+
+
+def test_changed_length_fails_and_the_judge_finds_it(fmu_path: Path) -> None:
+    run = fmpy_run(fmu_path, start_values={"theta": THETA0, "L": 1.25})
+    verdict = judge(run, start=["theta=80deg"])
+    assert not verdict.passed
+    fit = verdict.check("exact columns").figures["fit"]
+    assert fit["L"] == pytest.approx(1.25, rel=1e-9)
+    assert fit["theta0"] == pytest.approx(THETA0, rel=1e-12)
+    assert "L = 1.25 (not 1)" in verdict.line
+    # without the exact columns, theta and omega themselves give L away
+    bare = judge({"time": run["time"], "theta": run["theta"], "omega": run["omega"]}, start=["theta=80deg"])
+    assert not bare.passed and "L = 1.25 (not 1)" in bare.line
+    # judged with the L the run used, it passes
+    assert judge(run, start=["theta=80deg", "L=1.25"]).passed
+
+
+def test_drifting_times_fail(cs_run: np.ndarray) -> None:
+    drifted = cs_run.copy()
+    drifted["time"] *= 1 + 1e-7
+    verdict = judge(drifted, start=["theta=80deg"])
+    grid = verdict.check("time grid")
+    assert grid.status == "fail"
+    assert grid.figures["largest_deviation"] == pytest.approx(1e-6, rel=1e-6)
+    assert "the times are written wrong" in verdict.check("exact columns").line
+
+
+def test_summed_times_pass_with_their_drift_reported(cs_run: np.ndarray) -> None:
+    """Ecos's clock: t += h, 1000 times (9.999999999999831 at the end), within rounding."""
+    from pendulum_fmu import exact
+
+    summed = cs_run.copy()
+    summed["time"] = np.concatenate(([0.0], np.cumsum(np.full(summed.size - 1, 0.01))))
+    assert summed["time"][-1] == 9.999999999999831
+    summed["theta_exact"], summed["omega_exact"] = exact(THETA0, 0.0, 1.0, 9.81, summed["time"])
+    verdict = judge(summed, start=["theta=80deg"])
+    assert verdict.passed, verdict.line
+    assert 1e-14 < abs(verdict.check("time grid").figures["largest_deviation"]) < 1e-12
+
+
+def test_non_monotone_times_fail(cs_run: np.ndarray) -> None:
+    swapped = cs_run.copy()
+    swapped["time"][[10, 11]] = swapped["time"][[11, 10]]
+    check = judge(swapped, start=["theta=80deg"]).check("time grid")
+    assert check.status == "fail" and "not monotone" in check.line and check.figures["first_backstep_row"] == 12
+
+
+def test_a_print_too_coarse_for_the_bound_fails_as_such(cs_run: np.ndarray, tmp_path: Path) -> None:
+    """Six significant digits (C's %g) cannot show 1e-6: the judge says so."""
+    lines = ["time,theta,omega"] + [f"{t:g},{a:g},{b:g}" for t, a, b in zip(cs_run["time"], cs_run["theta"],
+                                                                          cs_run["omega"])]
+    (tmp_path / "g.csv").write_text("\n".join(lines) + "\n")
+    verdict = judge(tmp_path / "g.csv", start=["theta=80deg"])
+    assert not verdict.passed
+    assert verdict.check("diagnosis").figures["cause"] == "print precision"
+
+
+# --- reading ---------------------------------------------------------------------------------
+
+def _table(run: np.ndarray, names: list[str], quote: bool, delimiter: str = ",") -> str:
+    header = delimiter.join(f'"{n}"' if quote else n for n in names)
+    rows = [delimiter.join(repr(float(run[c][k])) for c in ["time", *OUTPUTS]) for k in range(run.size)]
+    return "\n".join([header, *rows]) + "\n"
+
+
+@pytest.mark.parametrize(("names", "quote", "delimiter"), [
+    (["time", "theta", "omega", "theta_exact", "omega_exact"], True, ","),
+    (["time", "theta", "omega", "theta_exact", "omega_exact"], False, ","),
+    (["Time", "pend.theta", "pend.omega", "pend.theta_exact", "pend.omega_exact"], False, ","),
+    (["time", "pend::theta", "pend::omega", "pend::theta_exact", "pend::omega_exact"], False, ", "),
+    (["Time", "theta [3 REAL OUTPUT]", "omega [5 REAL OUTPUT]", "theta_exact [7 REAL OUTPUT]",
+      "omega_exact [8 REAL OUTPUT]"], False, ","),
+    (["time", "theta", "omega", "theta_exact", "omega_exact"], True, ";"),
+    (["t", "theta", "omega", "theta_exact", "omega_exact"], False, "\t"),
+])
+def test_the_usual_csv_dialects_read_alike(cs_run: np.ndarray, tmp_path: Path, names: list[str], quote: bool,
+                                           delimiter: str) -> None:
+    (tmp_path / "r.csv").write_text(_table(cs_run, names, quote, delimiter))
+    result = read_result(tmp_path / "r.csv")
+    assert set(result.values) == set(OUTPUTS)
+    for name in OUTPUTS:
+        assert np.array_equal(result.values[name], cs_run[name])
+    assert judge(tmp_path / "r.csv", start=["theta=80deg"]).passed
+
+
+def test_parquet_and_dataframe(cs_run: np.ndarray, tmp_path: Path) -> None:
+    import pandas as pd
+    import pyarrow as pa
+    import pyarrow.parquet as pq
+
+    frame = pd.DataFrame({name: cs_run[name] for name in ["time", *OUTPUTS]})
+    pq.write_table(pa.Table.from_pandas(frame), tmp_path / "r.parquet")
+    for data in (frame, tmp_path / "r.parquet"):
+        verdict = judge(data, start=["theta=80deg"])
+        assert verdict.passed, verdict.line
+
+
+def test_any_subset_of_columns(cs_run: np.ndarray) -> None:
+    only_exact = judge({"time": cs_run["time"], "theta_exact": cs_run["theta_exact"]}, start=["theta=80deg"])
+    assert only_exact.passed and only_exact.check("bound").status == "info"
+    only_omega = judge({"time": cs_run["time"], "omega": cs_run["omega"]}, start=["theta=80deg"])
+    assert only_omega.passed and only_omega.check("bound").figures["variable"] == "omega"
+
+
+@pytest.mark.parametrize(("text", "message"), [
+    ("", "empty"),
+    ("time,theta\n", "a header and no rows"),
+    ("a,b\n1,2\n", "no time column"),
+    ("time,x\n0,1\n", "none of theta"),
+    ("time,theta\n0,1\n0.01,oops\n", "row 3, column 'theta': not a number"),
+    ("time,theta,omega\n0,1\n", "row 2 has 2 fields"),
+    ("time,theta\n0,1\n", "1 row: a result needs at least two"),
+    ("time,a.theta,b.theta\n0,1,1\n0.1,1,1\n", "several instances"),
+])
+def test_unreadable_input_is_one_line_and_exit_2(tmp_path: Path, text: str, message: str) -> None:
+    (tmp_path / "bad.csv").write_text(text)
+    with pytest.raises(ReadError, match=message):
+        judge(tmp_path / "bad.csv")
+    done = judge_cli(str(tmp_path / "bad.csv"))
+    assert done.returncode == 2
+    assert done.stdout == "" and len(done.stderr.strip().splitlines()) == 1 and message in done.stderr
+
+
+def test_semicolons_with_decimal_commas(cs_run: np.ndarray, tmp_path: Path) -> None:
+    rows = [";".join(repr(float(cs_run[c][k])).replace(".", ",") for c in ["time", "theta"]) for k in range(cs_run.size)]
+    (tmp_path / "de.csv").write_text("\n".join(["time;theta", *rows]) + "\n")
+    result = read_result(tmp_path / "de.csv")
+    assert np.array_equal(result.values["theta"], cs_run["theta"])
+
+
+def test_nan_values_fail_and_nan_times_fail(cs_run: np.ndarray) -> None:
+    broken = cs_run.copy()
+    broken["theta"][3] = np.nan
+    verdict = judge(broken, start=["theta=80deg"])
+    assert not verdict.passed and verdict.check("theta error").status == "fail"
+    broken = cs_run.copy()
+    broken["time"][0] = np.nan
+    assert judge(broken, start=["theta=80deg"]).check("time grid").status == "fail"
+
+
+def test_binary_and_missing_files_exit_2(tmp_path: Path) -> None:
+    (tmp_path / "x.bin").write_bytes(b"\xff\xfe\x00\x81garbage")
+    for path in (tmp_path / "x.bin", tmp_path / "missing.csv"):
+        done = judge_cli(str(path))
+        assert done.returncode == 2 and len(done.stderr.strip().splitlines()) == 1 and "Traceback" not in done.stderr
+
+
+# --- the command line ---------------------------------------------------------------------------
+
+def test_cli_exit_codes_json_and_plot(cs_run: np.ndarray, fmu_path: Path, tmp_path: Path) -> None:
+    write_csv(tmp_path / "good.csv", cs_run)
+    done = judge_cli(str(tmp_path / "good.csv"), "--start", "theta=80deg", "--json", str(tmp_path / "v.json"),
+                     "--plot", str(tmp_path / "v.png"))
+    assert done.returncode == 0, done.stdout + done.stderr
+    lines = done.stdout.strip().splitlines()
+    assert [line.split()[0] for line in lines] == ["read", "experiment", "time", "exact", "theta", "omega",
+                                                    "isolated", "bound", "verdict"]
+    assert lines[-1].split()[1] == "PASS:"
+    report = json.loads((tmp_path / "v.json").read_text())
+    assert report["passed"] is True and report["experiment"]["theta0"] == pytest.approx(THETA0)
+    assert (tmp_path / "v.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    done = judge_cli(str(tmp_path / "good.csv"))  # judged at the default 75 deg: a different start value
+    assert done.returncode == 1 and "theta = 1.396263402 (not 1.308996939)" in done.stdout
+    done = judge_cli(str(tmp_path / "good.csv"), "--start", "L=-1")
+    assert done.returncode == 2 and "argument --start" in done.stderr
+
+
+def test_plot_of_a_failing_run_draws_the_bound(fmu_path: Path, tmp_path: Path) -> None:
+    run = fmpy_run(fmu_path, fmi_type="ModelExchange", solver="Euler", step_size=0.01)
+    verdict = judge(run, interface="ME")
+    write_plot(verdict, run, tmp_path / "euler.png")
+    assert (tmp_path / "euler.png").stat().st_size > 20000
