@@ -698,8 +698,12 @@ void pendulum_exact_sin_cos(const PendulumExact *ex, double t, double *sin_theta
             sign = ex->direction;
         }
     }
-    /* sin theta = 2 sin cos, cos theta = cos^2 - sin^2 of the half angle: both keep the relative
-     * accuracy of the elliptic functions where theta nears a multiple of pi */
+    /* sin theta = 2 sin cos, cos theta = cos^2 - sin^2 of the half angle, the pair scaled to
+     * unit length first (a rounding common to both, e.g. of the denominator, drops out): both
+     * keep the relative accuracy of the elliptic functions where theta nears a multiple of pi */
+    const double h = hypot(x, y);
+    x /= h;
+    y /= h;
     *sin_theta = sign * (2.0 * y * x);
     *cos_theta = (x - y) * (x + y);
 }
