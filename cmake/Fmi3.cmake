@@ -2,26 +2,11 @@
 # from the same model core as the FMI 2.0 one (CORE_SOURCES: every source but fmi2_*.c) and
 # the thin FMI 3.0 layer fmu_src/fmi3_*.c. Included by CMakeLists.txt after the FMI 2.0 FMU.
 #
-# The FMI 3.0 headers are the standard's, taken at build time from the installed fmpy package
-# (its c-code folder); without them the FMI 3.0 FMU is not built and CMake says why.
-option(PENDULUM_FMI3 "Build the FMI 3.0 Pendulum.fmu (needs fmpy's FMI 3.0 headers)" ON)
+# The FMI 3.0 declarations are the project's own, written from the standard (fmu_src/fmi3_api.h,
+# as fmu_src/fmi2_api.h for FMI 2.0): a plain CMake build makes both FMUs, fmpy is a test
+# dependency only.
+option(PENDULUM_FMI3 "Build the FMI 3.0 Pendulum.fmu" ON)
 if(NOT PENDULUM_FMI3)
-  return()
-endif()
-
-find_program(PENDULUM_PYTHON NAMES python3 python HINTS ${CMAKE_CURRENT_SOURCE_DIR}/.venv/bin)
-set(FMI3_HEADER_DIR "" CACHE PATH "Folder of fmi3Functions.h (default: fmpy's c-code)")
-if(NOT FMI3_HEADER_DIR AND PENDULUM_PYTHON)
-  execute_process(
-    COMMAND ${PENDULUM_PYTHON} -c "import fmpy, os; print(os.path.join(os.path.dirname(fmpy.__file__), 'c-code'))"
-    OUTPUT_VARIABLE fmpy_c_code OUTPUT_STRIP_TRAILING_WHITESPACE ERROR_QUIET RESULT_VARIABLE fmpy_found)
-  if(fmpy_found EQUAL 0 AND EXISTS ${fmpy_c_code}/fmi3Functions.h)
-    set(FMI3_HEADER_DIR ${fmpy_c_code})
-  endif()
-endif()
-if(NOT FMI3_HEADER_DIR OR NOT EXISTS ${FMI3_HEADER_DIR}/fmi3Functions.h)
-  message(WARNING "FMI 3.0 Pendulum.fmu not built: no fmi3Functions.h (install fmpy: pip install fmpy, "
-                  "or set FMI3_HEADER_DIR)")
   return()
 endif()
 
@@ -30,7 +15,7 @@ set(FMI3_SOURCES ${CORE_SOURCES} ${FMI3_LAYER_SOURCES})
 set(FMI3_DIR ${CMAKE_CURRENT_BINARY_DIR}/fmi3)
 
 add_library(Pendulum_fmi3 SHARED ${FMI3_SOURCES})
-target_include_directories(Pendulum_fmi3 PRIVATE fmu_src ${GENERATED_DIR} ${FMI3_HEADER_DIR})
+target_include_directories(Pendulum_fmi3 PRIVATE fmu_src ${GENERATED_DIR})
 target_compile_options(Pendulum_fmi3 PRIVATE ${WARNING_FLAGS})
 set_target_properties(Pendulum_fmi3 PROPERTIES PREFIX "" OUTPUT_NAME Pendulum C_VISIBILITY_PRESET hidden
                       LIBRARY_OUTPUT_DIRECTORY ${FMI3_DIR}/lib)
@@ -50,7 +35,7 @@ endforeach()
 file(WRITE ${FMI3_DIR}/buildDescription.xml.new
   "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
   "<fmiBuildDescription fmiVersion=\"3.0\">\n"
-  "  <BuildConfiguration modelIdentifier=\"Pendulum\" description=\"C sources; the FMI 3.0 headers come from the importer\">\n"
+  "  <BuildConfiguration modelIdentifier=\"Pendulum\" description=\"C sources; the FMI 3.0 declarations are in fmi3_api.h\">\n"
   "    <SourceFileSet language=\"C99\">\n"
   "${build_files}"
   "    </SourceFileSet>\n"
@@ -68,10 +53,8 @@ set(FMI3_LINUX_BINARY $<TARGET_FILE:Pendulum_fmi3>)
 set(FMI3_OTHER_BINARIES "")
 set(FMI3_BINARY_DEPENDS "")
 if(PENDULUM_PLATFORMS)
-  # the standard's headers as system headers: their K&R-style declarations of two callback
-  # types would trip clang's -Wstrict-prototypes
   set(fmi3_cross_common NAME Pendulum SOURCES ${FMI3_SOURCES}
-      INCLUDES ${PROJECT_SOURCE_DIR}/fmu_src ${GENERATED_DIR} FLAGS -isystem ${FMI3_HEADER_DIR}
+      INCLUDES ${PROJECT_SOURCE_DIR}/fmu_src ${GENERATED_DIR}
       DEPENDS ${FMU_HEADERS} ${GENERATED_DIR}/pendulum_vrs.h)
   set(fmi3_cross_targets
       x86_64-linux ${ZIG_LINUX_X86_64} so

@@ -658,3 +658,52 @@ double pendulum_exact_period(const PendulumExact *ex)
 {
     return ex->period;   /* computed in init: 4K/w0, 2K/(sqrt(m) w0), or +inf */
 }
+
+void pendulum_exact_sin_cos(const PendulumExact *ex, double t, double *sin_theta, double *cos_theta)
+{
+    double y, x;   /* sin and cos of the half angle (up to a common sign), or of am v (rotation) */
+    double sign = 1.0;
+
+    if (t == ex->t0 || (ex->regime == PENDULUM_SEPARATRIX && ex->direction == 0.0)) {
+        *sin_theta = sin(ex->theta0);   /* the initial state as given (libm reduces it exactly) */
+        *cos_theta = cos(ex->theta0);
+        return;
+    }
+    if (!pendulum_exact_resolvable(ex, t)) {
+        *sin_theta = *cos_theta = NAN;
+        return;
+    }
+    if (ex->regime == PENDULUM_SEPARATRIX) {
+        /* theta = 2 pi j + 2 d gd(u): sin(gd u) = tanh u, cos(gd u) = sech u */
+        const EllipticDD tau = elliptic_two_sum(t, -ex->t0);
+        const double u = ex->scale * tau.hi + ((ex->scale * tau.lo + ex->scale_lo * tau.hi) + ex->u0);
+        y = tanh(u);
+        x = 1.0 / cosh(u);
+        sign = ex->direction;
+    } else {
+        EllipticDD n;
+        double S, C, E, D;
+        const double f = phase_quarters(ex, t, &n);
+        elliptic_sncndn_homogeneous(&ex->ell, f * ex->K_hi, &S, &C, &E, &D);   /* sn r = S/D, ... */
+        const int quarter = (elliptic_quarter_of(n.hi) + elliptic_quarter_of(n.lo)) & 3;
+        const double turn = 1.0 - (double)(quarter & 2);   /* -1 for n = 2, 3 mod 4 */
+        if (ex->regime == PENDULUM_LIBRATION) {
+            /* sin(theta/2) = k sn u, cos(theta/2) = dn u with sn(K + r) = cd r, dn(K + r) = k'/dn r */
+            y = (quarter & 1) ? turn * ex->k * (C / E) : turn * ex->k * (S / D);
+            x = (quarter & 1) ? ex->kc * (D / E) : E / D;
+        } else {
+            /* theta = 2 pi j + 2 d am v: sin(am v) = sn v, cos(am v) = cn v, cn(K + r) = -k' sd r */
+            y = (quarter & 1) ? turn * (C / E) : turn * (S / D);
+            x = (quarter & 1) ? -turn * ex->kc * (S / E) : turn * (C / D);
+            sign = ex->direction;
+        }
+    }
+    /* sin theta = 2 sin cos, cos theta = cos^2 - sin^2 of the half angle, the pair scaled to
+     * unit length first (a rounding common to both, e.g. of the denominator, drops out): both
+     * keep the relative accuracy of the elliptic functions where theta nears a multiple of pi */
+    const double h = hypot(x, y);
+    x /= h;
+    y /= h;
+    *sin_theta = sign * (2.0 * y * x);
+    *cos_theta = (x - y) * (x + y);
+}

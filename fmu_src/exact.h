@@ -77,6 +77,13 @@ int pendulum_exact_resolvable(const PendulumExact *ex, double t);
  * At t == t0 exactly (theta0, omega0) as given. NaN where pendulum_exact_resolvable is 0. */
 void pendulum_exact_eval(const PendulumExact *ex, double t, double *theta, double *omega);
 
+/* sin(theta(t)) and cos(theta(t)) of the exact solution, formed from the Jacobi functions of
+ * the half angle (libration: sin(theta/2) = k sn u, cos(theta/2) = dn u; rotation: sin and
+ * cos of am v = sn v, cn v; separatrix: tanh u, sech u), not from the rounded theta: near the
+ * top and after many turns they keep their own relative accuracy. At t == t0 (and at rest on
+ * the top) sin and cos of theta0 as given; NaN where pendulum_exact_resolvable is 0. */
+void pendulum_exact_sin_cos(const PendulumExact *ex, double t, double *sin_theta, double *cos_theta);
+
 /* Compares a numerical state (theta, omega) at some time with the exact motion, qualitatively:
  * NULL if it is the same kind of motion, else what went wrong, as a phrase:
  * "carried the libration over the top" (exact libration, |theta - its centre| > pi + 0.5),

@@ -74,7 +74,7 @@ void fmi2FreeInstance(fmi2Component c) {
     Fmi2Instance *inst = c;
     if (inst != NULL) {
         fmi2CallbackFreeMemory release = inst->callbacks.freeMemory;
-        instance_release_name(&inst->core);
+        instance_release(&inst->core);
         release(inst);
     }
 }

@@ -2,7 +2,7 @@
  * onto the shared instance (instance.h): instantiation, life cycle, variables of each type,
  * FMU states, directional and adjoint derivatives, and the refusals of what this model
  * does not have (clocks, Configuration Mode, variable dependencies at run time).
- * The headers are FMI 3.0's own, from the installed fmpy package (cmake/Fmi3.cmake). */
+ * The FMI 3.0 declarations are the project's own, written from the standard (fmi3_api.h). */
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -79,7 +79,7 @@ fmi3Instance fmi3InstantiateScheduledExecution(fmi3String instanceName, fmi3Stri
 void fmi3FreeInstance(fmi3Instance instance) {
     Fmi3Instance *inst = instance;
     if (inst != NULL) {
-        instance_release_name(&inst->core);
+        instance_release(&inst->core);
         free(inst);
     }
 }
@@ -90,15 +90,11 @@ fmi3Status fmi3SetDebugLogging(fmi3Instance instance, fmi3Boolean loggingOn, siz
                                                   categories);
 }
 
-/* FMI 3.0 folds 2.0's fmi2SetupExperiment into fmi3EnterInitializationMode. */
+/* FMI 3.0 folds 2.0's fmi2SetupExperiment into fmi3EnterInitializationMode: one call, one check. */
 fmi3Status fmi3EnterInitializationMode(fmi3Instance instance, fmi3Boolean toleranceDefined, fmi3Float64 tolerance,
                                        fmi3Float64 startTime, fmi3Boolean stopTimeDefined, fmi3Float64 stopTime) {
-    Status status = instance_setup_experiment(instance, "fmi3EnterInitializationMode", toleranceDefined, tolerance,
-                                              startTime, stopTimeDefined, stopTime);
-    if (status != STATUS_OK) {
-        return (fmi3Status)status;
-    }
-    return (fmi3Status)instance_enter_initialization(instance, "fmi3EnterInitializationMode");
+    return (fmi3Status)instance_enter_initialization_with(instance, "fmi3EnterInitializationMode", toleranceDefined,
+                                                          tolerance, startTime, stopTimeDefined, stopTime);
 }
 
 fmi3Status fmi3ExitInitializationMode(fmi3Instance instance) {
@@ -109,12 +105,10 @@ fmi3Status fmi3Terminate(fmi3Instance instance) { return (fmi3Status)instance_te
 
 fmi3Status fmi3Reset(fmi3Instance instance) { return (fmi3Status)instance_reset(instance, "fmi3Reset"); }
 
-/* Scalar variables only: a Get/Set call has one value per value reference. */
-static int scalar_counts(fmi3Instance instance, const char *function, unsigned modes, size_t nvr, size_t n_values) {
-    if (!instance_allowed(instance, function, modes)) {
-        return 0;
-    }
-    if (n_values != nvr) {
+/* Scalar variables only: a Get/Set call has one value per value reference. The mode (and
+ * the call's logCalls line) is checked once, by the instance_* call that does the work. */
+static int scalar_counts(fmi3Instance instance, const char *function, size_t nvr, size_t n_values) {
+    if (instance != NULL && n_values != nvr) {
         instance_fail(instance, function, "nValues %zu differs from nValueReferences %zu: every variable is a scalar",
                       n_values, nvr);
         return 0;
@@ -124,7 +118,7 @@ static int scalar_counts(fmi3Instance instance, const char *function, unsigned m
 
 fmi3Status fmi3GetFloat64(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr, fmi3Float64 values[],
                           size_t nValues) {
-    if (!scalar_counts(instance, "fmi3GetFloat64", GET_MODES, nvr, nValues)) {
+    if (!scalar_counts(instance, "fmi3GetFloat64", nvr, nValues)) {
         return fmi3Error;
     }
     return (fmi3Status)instance_get_reals(instance, "fmi3GetFloat64", vr, nvr, values);
@@ -132,7 +126,7 @@ fmi3Status fmi3GetFloat64(fmi3Instance instance, const fmi3ValueReference vr[], 
 
 fmi3Status fmi3SetFloat64(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr,
                           const fmi3Float64 values[], size_t nValues) {
-    if (!scalar_counts(instance, "fmi3SetFloat64", SET_MODES, nvr, nValues)) {
+    if (!scalar_counts(instance, "fmi3SetFloat64", nvr, nValues)) {
         return fmi3Error;
     }
     return (fmi3Status)instance_set_reals(instance, "fmi3SetFloat64", vr, nvr, values);
@@ -154,7 +148,7 @@ static int of_type(fmi3Instance instance, const char *function, fmi3ValueReferen
 static int integers_allowed(fmi3Instance instance, const char *function, unsigned modes, const fmi3ValueReference vr[],
                             size_t nvr, const void *values, size_t n_values, int enumeration) {
     size_t i;
-    if (!scalar_counts(instance, function, modes, nvr, n_values) ||
+    if (!scalar_counts(instance, function, nvr, n_values) ||
         !instance_arrays_allowed(instance, function, modes, vr, nvr, values)) {
         return 0;
     }

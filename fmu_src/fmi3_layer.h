@@ -3,7 +3,7 @@
 #ifndef PENDULUM_FMI3_LAYER_H
 #define PENDULUM_FMI3_LAYER_H
 
-#include "fmi3Functions.h"
+#include "fmi3_api.h"
 #include "instance.h"
 
 typedef struct {

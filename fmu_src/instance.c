@@ -38,7 +38,8 @@ int instance_setup(Instance *inst, const char *name, InterfaceType type, int fmi
     return 0;
 }
 
-void instance_release_name(Instance *inst) {
+void instance_release(Instance *inst) {
+    instance_release_states(inst);
     if (inst->name != NULL) {
         inst->host.release(inst, inst->name);
         inst->name = NULL;

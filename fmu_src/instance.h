@@ -28,6 +28,7 @@ typedef enum {
 } LogCategory;
 
 typedef struct Instance Instance;
+typedef struct StateNode StateNode; /* an FMU state handed out (instance_state.c) */
 
 /* What the FMI layer supplies: its host's logger and memory, behind one signature. */
 typedef struct {
@@ -43,6 +44,8 @@ struct Instance {
     char *name;
     InstanceHost host;
     int log_enabled[LOG_CATEGORY_COUNT];
+    StateNode *states;       /* the FMU states this instance handed out and has not freed:
+                                the registry FreeFMUstate checks a pointer against */
 };
 
 /* Instantiation checks shared by every Instantiate: NULL, or why the instance is refused. */
@@ -52,8 +55,8 @@ const char *instance_refusal(const char *name, const char *token);
  * switches and the start values. Returns 0, or -1 when out of memory. */
 int instance_setup(Instance *inst, const char *name, InterfaceType type, int fmi_version, int logging_on);
 
-/* Frees the name; the layer frees the instance itself. */
-void instance_release_name(Instance *inst);
+/* Frees the name and the FMU states still live; the layer frees the instance itself. */
+void instance_release(Instance *inst);
 
 /* Logs through the host's logger if the category is enabled. */
 void instance_log(const Instance *inst, Status status, LogCategory category, const char *format, ...)
@@ -90,6 +93,10 @@ Status instance_set_debug_logging(Instance *inst, const char *function, int logg
 Status instance_setup_experiment(Instance *inst, const char *function, int tolerance_defined, double tolerance,
                                  double start_time, int stop_time_defined, double stop_time);
 Status instance_enter_initialization(Instance *inst, const char *function);
+/* Both in one call, checked and logged once (FMI 3.0's fmi3EnterInitializationMode). */
+Status instance_enter_initialization_with(Instance *inst, const char *function, int tolerance_defined,
+                                          double tolerance, double start_time, int stop_time_defined,
+                                          double stop_time);
 Status instance_exit_initialization(Instance *inst, const char *function);
 Status instance_terminate(Instance *inst, const char *function);
 Status instance_reset(Instance *inst, const char *function);
@@ -125,7 +132,10 @@ Status instance_do_step(Instance *inst, const char *function, double point, doub
 /* --- FMU states (instance_state.c) --------------------------------------------------------- */
 Status instance_get_state(Instance *inst, const char *function, void **state);
 Status instance_set_state(Instance *inst, const char *function, const void *state);
+/* Frees *state only if it is one of this instance's live states (the registry), else refuses it. */
 Status instance_free_state(Instance *inst, const char *function, void **state);
+/* Frees every state still live (from instance_release). */
+void instance_release_states(Instance *inst);
 Status instance_serialized_state_size(Instance *inst, const char *function, const void *state, size_t *size);
 Status instance_serialize_state(Instance *inst, const char *function, const void *state, char bytes[], size_t size);
 Status instance_deserialize_state(Instance *inst, const char *function, const char bytes[], size_t size,

@@ -9,11 +9,9 @@
 /* FMI 3.0 requires an independent variable: `time`, value reference 0 (not in FMI 2.0). */
 #define VR_TIME_FMI3 0u
 
-Status instance_setup_experiment(Instance *inst, const char *function, int tolerance_defined, double tolerance,
-                                 double start_time, int stop_time_defined, double stop_time) {
-    if (!instance_allowed(inst, function, MODE_INSTANTIATED)) {
-        return STATUS_ERROR;
-    }
+/* The experiment's checks and settings, after the caller's check of the mode. */
+static Status take_experiment(Instance *inst, const char *function, int tolerance_defined, double tolerance,
+                              double start_time, int stop_time_defined, double stop_time) {
     if (tolerance_defined && !(isfinite(tolerance) && tolerance > 0.0 && tolerance < 1.0)) {
         return instance_fail(inst, function, "tolerance %g must be in (0, 1)", tolerance);
     }
@@ -29,12 +27,34 @@ Status instance_setup_experiment(Instance *inst, const char *function, int toler
     return STATUS_OK;
 }
 
+Status instance_setup_experiment(Instance *inst, const char *function, int tolerance_defined, double tolerance,
+                                 double start_time, int stop_time_defined, double stop_time) {
+    if (!instance_allowed(inst, function, MODE_INSTANTIATED)) {
+        return STATUS_ERROR;
+    }
+    return take_experiment(inst, function, tolerance_defined, tolerance, start_time, stop_time_defined, stop_time);
+}
+
 Status instance_enter_initialization(Instance *inst, const char *function) {
     if (!instance_allowed(inst, function, MODE_INSTANTIATED)) {
         return STATUS_ERROR;
     }
     inst->data.mode = MODE_INITIALIZATION;
     return STATUS_OK;
+}
+
+Status instance_enter_initialization_with(Instance *inst, const char *function, int tolerance_defined,
+                                          double tolerance, double start_time, int stop_time_defined,
+                                          double stop_time) {
+    Status status;
+    if (!instance_allowed(inst, function, MODE_INSTANTIATED)) {
+        return STATUS_ERROR;
+    }
+    status = take_experiment(inst, function, tolerance_defined, tolerance, start_time, stop_time_defined, stop_time);
+    if (status == STATUS_OK) {
+        inst->data.mode = MODE_INITIALIZATION;
+    }
+    return status;
 }
 
 Status instance_exit_initialization(Instance *inst, const char *function) {

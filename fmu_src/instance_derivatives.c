@@ -36,35 +36,51 @@ static double dK_dp(double p, double p1, double K) {
     return K * (0.5 * p - sum) / (2.0 * p * p1);
 }
 
-/* Partial derivatives of the period by (L, g, theta, omega) in Initialization Mode. */
+/* Partial derivatives of the period by (L, g, theta, omega) in Initialization Mode, each
+ * written as a sum of terms of one sign wherever the derivative itself has no zero, so that
+ * each keeps its relative accuracy (docs/derivatives.md). With a = g/L = w0^2, T depends on
+ * L and g only through a: dT/dL = -(a/L) dT/da, dT/dg = (1/L) dT/da.
+ *   Libration, T = 4 K(m) / w0, m = s^2 + q^2, q^2 = omega^2 / (4 a), s = sin(theta/2):
+ *     a dT/da = -T (q^2 K'(m) / K + 1/2)                (both terms of one sign)
+ *   Rotation, T = 2 K(p) / R, R = sqrt(m) w0 = sqrt(a s^2 + omega^2/4), p = 1/m = a / R^2:
+ *     a dT/da = (p / R) (2 K'(p) (omega/2)^2 / R^2 - K s^2)
+ *   (dT/dm dm/dL + T/(2L) cancelled there: both terms ~T/L, their sum ~p T/L, so in fast
+ *   rotation it lost digits in proportion to m = (omega/(2 w0))^2). The two rotation terms
+ *   differ in sign; they meet where K s^2 = 2 K'(p) (omega/2)^2 / R^2, near theta = +-pi/2
+ *   in fast rotation (K'/K -> 1/4): a true zero of dT/da as theta0 varies, where only the
+ *   absolute accuracy ~1e-16 (p/R) K is to be had. */
 static const char *period_partials(const ModelData *data, double d_period[4]) {
     PendulumExact ex;
-    double w0, K, dT_dm, dm[4];
+    double K, a_dT_da, dm[2];
     if (pendulum_exact_init_gl(&ex, data->theta, data->omega, data->g, data->L, data->time) != 0) {
         return "the exact solution cannot be set up for these start values";
     }
     if (ex.regime == PENDULUM_SEPARATRIX || !isfinite(ex.period)) {
         return "the period is infinite on the separatrix: it has no derivative";
     }
-    w0 = sqrt(data->g / data->L);
     K = ex.K_hi + ex.K_lo;
     if (ex.regime == PENDULUM_LIBRATION) {
-        dT_dm = 4.0 / w0 * dK_dp(ex.m, ex.m1, K); /* T = 4 K(m) / w0 */
+        const double w0 = sqrt(data->g / data->L), dK = dK_dp(ex.m, ex.m1, K), dT_dm = 4.0 / w0 * dK;
+        const double q2 = data->omega * data->omega * data->L / (4.0 * data->g);
+        a_dT_da = -ex.period * (q2 * dK / K + 0.5);
+        /* dm by theta and omega */
+        dm[0] = 0.5 * sin(data->theta);
+        dm[1] = data->omega * data->L / (2.0 * data->g);
+        d_period[2] = dT_dm * dm[0];
+        d_period[3] = dT_dm * dm[1];
     } else {
-        /* T = 2 K(p) / (sqrt(m) w0), p = 1/m = k^2, 1 - p = kc^2 */
-        double p = ex.k * ex.k, p1 = ex.kc * ex.kc;
-        dT_dm = -2.0 / (w0 * ex.m * sqrt(ex.m)) * (dK_dp(p, p1, K) / ex.m + 0.5 * K);
+        /* R = ex.scale, p = k^2 of the parameter 1/m, 1 - p = k'^2 */
+        const double R = ex.scale, p = ex.k * ex.k, p1 = ex.kc * ex.kc, dK = dK_dp(p, p1, K);
+        const double half_omega = 0.5 * fabs(data->omega), s = sin(0.5 * data->theta);
+        const double share = (half_omega / R) * (half_omega / R); /* (omega/2)^2 / R^2 = 1 - p s^2 */
+        const double common = dK * p + 0.5 * K;                  /* K'(p) p + K/2 > 0 */
+        a_dT_da = p / R * (2.0 * dK * share - K * s * s);
+        /* dT/dtheta = -(sin theta p / R) (K' p + K/2), dT/domega = -(omega / R^3) (K' p + K/2) */
+        d_period[2] = -(sin(data->theta) * p / R) * common;
+        d_period[3] = -(data->omega / R / R / R) * common;
     }
-    /* dm by L, g, theta, omega */
-    dm[0] = data->omega * data->omega / (4.0 * data->g);
-    dm[1] = -data->omega * data->omega * data->L / (4.0 * data->g * data->g);
-    dm[2] = 0.5 * sin(data->theta);
-    dm[3] = data->omega * data->L / (2.0 * data->g);
-    /* plus T's own dependence on 1/w0 = sqrt(L/g) */
-    d_period[0] = dT_dm * dm[0] + ex.period / (2.0 * data->L);
-    d_period[1] = dT_dm * dm[1] - ex.period / (2.0 * data->g);
-    d_period[2] = dT_dm * dm[2];
-    d_period[3] = dT_dm * dm[3];
+    d_period[0] = -a_dT_da / data->L;
+    d_period[1] = a_dT_da / data->g;
     return NULL;
 }
 
@@ -185,7 +201,7 @@ static double cos_derivative(const double d[4], int n) {
 Status instance_output_derivatives(Instance *inst, const char *function, const ValueReference vr[], size_t nvr,
                                    const int order[], double value[]) {
     ModelData *data;
-    double a, d[4], d_exact[4], theta_exact = 0.0, omega_exact = 0.0;
+    double a, d[4], d_exact[4], theta_exact = 0.0, omega_exact = 0.0, sin_exact = 0.0, cos_exact = 1.0;
     int have_exact;
     size_t i;
     if (!instance_allowed_for(inst, function, INTERFACE_CO_SIMULATION, MODE_STEP_COMPLETE)) {
@@ -200,8 +216,14 @@ Status instance_output_derivatives(Instance *inst, const char *function, const V
     have_exact = pendulum_exact_resolvable(&data->exact, data->time);
     if (have_exact) {
         pendulum_exact_eval(&data->exact, data->time, &theta_exact, &omega_exact);
+        /* sin and cos of theta_exact from the elliptic functions themselves: -(g/L) sin of the
+         * rounded theta_exact is only absolutely accurate near the top and after many turns */
+        pendulum_exact_sin_cos(&data->exact, data->time, &sin_exact, &cos_exact);
     }
-    theta_derivatives(a, theta_exact, omega_exact, d_exact);
+    d_exact[0] = theta_exact;
+    d_exact[1] = omega_exact;
+    d_exact[2] = -a * sin_exact;
+    d_exact[3] = -a * cos_exact * omega_exact;
     for (i = 0; i < nvr; i++) {
         const int n = order[i];
         if (n < 1 || n > MAX_OUTPUT_DERIVATIVE_ORDER) {
@@ -220,7 +242,7 @@ Status instance_output_derivatives(Instance *inst, const char *function, const V
             }
             value[i] = vr[i] == VR_THETA_EXACT ? d_exact[n]
                        : n < 3                 ? d_exact[n + 1]
-                                               : a * sin(d_exact[0]) * (d_exact[1] * d_exact[1] + a * cos(d_exact[0]));
+                                               : a * sin_exact * (omega_exact * omega_exact + a * cos_exact);
             break;
         default:
             return instance_fail(inst, function, "%s (value reference %u) is not a continuous output",

@@ -4,7 +4,14 @@
  * bytes. The header carries a magic text, a format version, the payload size and an
  * FNV-1a checksum, so a blob from another build, a truncated or a corrupted one is refused.
  * Byte order and layout are the platform's: a blob moves between processes and instances
- * of the same binary, not between platforms. */
+ * of the same binary, not between platforms.
+ *
+ * Every state an instance hands out is a node of its registry (a list through the nodes
+ * themselves, so the registry costs no allocation of its own, and none in the step loop):
+ * FreeFMUstate, and GetFMUstate / DeSerializeFMUstate when asked to overwrite a state, take
+ * only a pointer found in it, compared by address before it is ever dereferenced. A freed
+ * state, another instance's, or the state itself passed where its address belongs (as one
+ * importer did) is refused with an error naming the pointer, and never freed or written. */
 #include <stdint.h>
 #include <string.h>
 
@@ -33,12 +40,60 @@ static uint64_t fnv1a64(const unsigned char *bytes, size_t size) {
     return hash;
 }
 
-static ModelData *allocate_state(Instance *inst, const char *function) {
-    ModelData *copy = inst->host.allocate(inst, sizeof *copy);
-    if (copy == NULL) {
-        instance_fail(inst, function, "out of memory");
+struct StateNode {
+    StateNode *next;
+    ModelData data; /* what the importer holds: the address of this member */
+};
+
+/* The live node whose data is at `state`, and the link that points to it; NULL if none. */
+static StateNode *find_live(Instance *inst, const void *state, StateNode ***link) {
+    StateNode **at;
+    for (at = &inst->states; *at != NULL; at = &(*at)->next) {
+        if ((const void *)&(*at)->data == state) {
+            if (link != NULL) {
+                *link = at;
+            }
+            return *at;
+        }
     }
-    return copy;
+    return NULL;
+}
+
+static Status not_live(Instance *inst, const char *function, const void *state) {
+    return instance_fail(inst, function, "%p is not an FMU state of this instance that is still live (freed "
+                         "already, another instance's, or not a state: pass the address of the state variable); "
+                         "it is left alone", state);
+}
+
+/* The state to write: *state itself when it is a live state of this instance (FMI 2.0 2.1.8:
+ * a non-NULL *state is a state to be overwritten), a new registered one when it is NULL;
+ * NULL (with the error logged) otherwise. */
+static ModelData *state_to_write(Instance *inst, const char *function, void *const *state) {
+    StateNode *node;
+    if (*state != NULL) {
+        node = find_live(inst, *state, NULL);
+        if (node == NULL) {
+            not_live(inst, function, *state);
+            return NULL;
+        }
+        return &node->data;
+    }
+    node = inst->host.allocate(inst, sizeof *node);
+    if (node == NULL) {
+        instance_fail(inst, function, "out of memory");
+        return NULL;
+    }
+    node->next = inst->states;
+    inst->states = node;
+    return &node->data;
+}
+
+void instance_release_states(Instance *inst) {
+    while (inst->states != NULL) {
+        StateNode *node = inst->states;
+        inst->states = node->next;
+        inst->host.release(inst, node);
+    }
 }
 
 Status instance_get_state(Instance *inst, const char *function, void **state) {
@@ -49,8 +104,7 @@ Status instance_get_state(Instance *inst, const char *function, void **state) {
     if (state == NULL) {
         return instance_fail(inst, function, "state is NULL");
     }
-    /* FMI 2.0 2.1.8: a non-NULL *state is a state of this FMU to be overwritten. */
-    copy = *state != NULL ? (ModelData *)*state : allocate_state(inst, function);
+    copy = state_to_write(inst, function, state);
     if (copy == NULL) {
         return STATUS_ERROR;
     }
@@ -84,7 +138,13 @@ Status instance_free_state(Instance *inst, const char *function, void **state) {
         return instance_fail(inst, function, "state is NULL");
     }
     if (*state != NULL) {
-        inst->host.release(inst, *state);
+        StateNode **link = NULL;
+        StateNode *node = find_live(inst, *state, &link);
+        if (node == NULL) {
+            return not_live(inst, function, *state);
+        }
+        *link = node->next;
+        inst->host.release(inst, node);
         *state = NULL;
     }
     return STATUS_OK;
@@ -153,7 +213,7 @@ Status instance_deserialize_state(Instance *inst, const char *function, const ch
     if (problem != NULL) {
         return instance_fail(inst, function, "the blob is refused: %s", problem);
     }
-    copy = *state != NULL ? (ModelData *)*state : allocate_state(inst, function);
+    copy = state_to_write(inst, function, state);
     if (copy == NULL) {
         return STATUS_ERROR;
     }

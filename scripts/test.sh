@@ -10,7 +10,7 @@ cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Debug -DPENDULUM_SANITIZE=ON > /
 cmake --build build-sanitize --parallel "$jobs" > /dev/null
 ctest --test-dir build-sanitize --output-on-failure
 echo "== valgrind memcheck of the FMI harness"
-for harness in test_fmi_api test_fmi_threads test_fmi3_api; do
+for harness in test_fmi_api test_fmi_threads test_fmi3_api test_fmi_conformance test_fmi3_conformance; do
     valgrind --quiet --error-exitcode=1 --leak-check=full --errors-for-leak-kinds=all \
         "build/tests/c/$harness"
 done

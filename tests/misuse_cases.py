@@ -146,6 +146,19 @@ def _me_nan_state(fmu: str) -> None:
     model.setContinuousStates(*_array([math.nan, 0.0]))
 
 
+def _free_state_itself(fmu: str) -> None:
+    """The FMU state itself passed to FreeFMUstate where its address belongs (as one importer
+    did): refused with an error naming the pointer, never freed."""
+    from ctypes import POINTER, c_void_p, cast
+    slave = _initialized(fmu)
+    if isinstance(slave, Fmi3Calls):
+        state = slave.instance.getFMUState()
+        slave.instance.fmi3FreeFMUState(slave.instance.component, cast(state, POINTER(c_void_p)))
+    else:
+        state = slave.getFMUstate()
+        slave.fmi2FreeFMUstate(slave.component, cast(state, POINTER(c_void_p)))
+
+
 def _array(values: list[float]) -> tuple[object, int]:
     from ctypes import c_double
     return (c_double * len(values))(*values), len(values)
@@ -172,6 +185,7 @@ CASES: dict[str, Callable[[str], None]] = {
     "bad_tolerance": _bad_tolerance,
     "wrong_guid": _wrong_guid,
     "me_nan_state": _me_nan_state,
+    "free_state_itself": _free_state_itself,
 }
 
 if __name__ == "__main__":

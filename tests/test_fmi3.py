@@ -169,3 +169,14 @@ def test_start_values_of_the_binary_match_its_xml(fmu3_path: Path) -> None:
         checked += 1
     assert checked == 5
     instance.freeInstance()
+
+
+def test_project_header_declares_exactly_the_standards_functions() -> None:
+    """fmu_src/fmi3_api.h (the project's own declarations, written from the standard) declares
+    the same 75 functions as the standard's fmi3Functions.h that fmpy installs."""
+    standard = (Path(fmpy.__file__).parent / "c-code" / "fmi3Functions.h").read_text()
+    declared = set(re.findall(r"#define (fmi3\w+)\s+fmi3FullName", standard))
+    ours = (Path(__file__).resolve().parents[1] / "fmu_src" / "fmi3_api.h").read_text()
+    exported = re.findall(r"FMI3_EXPORT\s+[\w\s\*]*?\b(fmi3\w+)\(", ours)
+    assert len(exported) == len(set(exported)) == 75
+    assert set(exported) == declared

@@ -77,3 +77,18 @@ def test_same_guid_experiment_and_log_categories(both: tuple[ModelDescription, M
         assert getattr(fmi3.defaultExperiment, attribute) == getattr(fmi2.defaultExperiment, attribute)
     assert [c.name for c in fmi3.logCategories] == [c.name for c in fmi2.logCategories]
     assert {u.name for u in fmi3.unitDefinitions} == {u.name for u in fmi2.unitDefinitions}
+
+
+def test_default_step_is_the_seed_studys_communication_step(
+        both: tuple[ModelDescription, ModelDescription]) -> None:
+    """stepSize is one POINTS_PER_PERIOD-th of the exact period of the start state (mpmath), so
+    container tools that read it step as the seed study does."""
+    from pendulum_fmu.study.seed import POINTS_PER_PERIOD  # noqa: PLC0415
+    import mpmath as mp  # noqa: PLC0415
+    for md in both:
+        start = {v.name: float(v.start) for v in md.modelVariables if v.name in ("theta", "L", "g")}
+        with mp.workdps(40):
+            m = mp.sin(mp.mpf(start["theta"]) / 2) ** 2
+            period = 4 * mp.ellipk(m) / mp.sqrt(mp.mpf(start["g"]) / mp.mpf(start["L"]))
+        assert md.defaultExperiment.stepSize is not None
+        assert float(md.defaultExperiment.stepSize) == float(period / POINTS_PER_PERIOD)

@@ -37,6 +37,7 @@ EXPECTED_LOG = {
     "bad_tolerance": "tolerance -1 must be in (0, 1)",
     "wrong_guid": "does not match this FMU's",
     "me_nan_state": "fmi2SetContinuousStates: states (nan, 0) must be finite",
+    "free_state_itself": "is not an FMU state of this instance that is still live",
 }
 
 

@@ -1,6 +1,6 @@
 /* fuzz_api_fmi3.c: the fuzzer's calls in FMI 3.0 (fuzz_api.h). The solver (an Enumeration) is
  * an Int64, the statistics Int32, as the FMI 3.0 model description declares them. */
-#include "fmi3Functions.h"
+#include "fmi3_api.h"
 #include "fuzz_api.h"
 #include "pendulum_vrs.h"
 

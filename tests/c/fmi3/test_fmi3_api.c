@@ -9,7 +9,7 @@
 #include <string.h>
 
 #include "../check.h"
-#include "fmi3Functions.h"
+#include "fmi3_api.h"
 #include "pendulum_vrs.h"
 
 /* One check, named by what it checks (check.h counts it and prints the failures). */
