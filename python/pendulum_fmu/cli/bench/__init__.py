@@ -3,7 +3,7 @@
 ``exact`` and ``solvers`` are modules of their own with a ``main(argv)``; the command line
 hands them the rest of the arguments untouched. To add one, add a line to
 :data:`FORWARDED` (it appears as soon as its module exists) or a module with
-``configure``/``run`` like :mod:`pendulum_fmu.cli.bench_sweep`.
+``configure``/``run`` like :mod:`pendulum_fmu.cli.bench.sweep`.
 """
 
 from __future__ import annotations
@@ -15,7 +15,7 @@ import sys
 
 from types import ModuleType
 
-from pendulum_fmu.cli import bench_accuracy, bench_exact, bench_speed, bench_sweep
+from pendulum_fmu.cli.bench import accuracy, exact, speed, sweep
 
 NAME = "bench"
 HELP = "benchmarks: exact evaluation, work-precision of the solvers, sweep throughput"
@@ -33,7 +33,7 @@ FORWARDED: dict[str, tuple[str, str]] = {
 }
 """Benchmark name -> (module with ``main(argv) -> int``, one-line help)."""
 
-PARSED: tuple[ModuleType, ...] = (bench_accuracy, bench_exact, bench_speed, bench_sweep)
+PARSED: tuple[ModuleType, ...] = (accuracy, exact, speed, sweep)
 """Benchmarks with ``NAME``, ``HELP``, ``DESCRIPTION``, ``EPILOG``, ``configure`` and ``run``."""
 
 
