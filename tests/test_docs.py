@@ -54,7 +54,7 @@ def run_program(name: str) -> str:
 
 
 # (program, what it prints, page, what the page says): each {n} of the page's text is the
-# number the program printed in the same place, written with thousands separators.
+# number the program printed in the same place (a count written with thousands separators).
 FIGURES = [
     ("test_fmi_edges",
      r"Co-Simulation: (\d+) forged blobs refused, (\d+) accepted.*\nModel Exchange: (\d+) forged blobs refused, "
@@ -70,6 +70,10 @@ FIGURES = [
      "`tests/c/fmi3/test_fmi3_api.c` ({0} checks)"),
     ("test_integrators", r"test_integrators: (\d+) checks passed", "solvers.md",
      "`tests/c/test_integrators.c`, {0} checks"),
+    ("test_solver_tolerance",
+     r"dopri5: worst .* = ([\d.]+)\nrk4: worst .* = ([\d.]+)\nrkn: worst .* = ([\d.]+)\n"
+     r"symplectic: worst .* = ([\d.]+)\n",
+     "solvers.md", "prints the worst error in units of tol: dopri5 {0}, rk4 {1}, rkn {2}, symplectic {3}"),
 ]
 
 
@@ -78,7 +82,7 @@ FIGURES = [
 def test_quoted_counts_are_the_programs_output(program: str, printed: str, page: str, said: str) -> None:
     match = re.search(printed, run_program(program))
     assert match is not None, f"{program} no longer prints /{printed}/"
-    expected = said.format(*(f"{int(n):,}" for n in match.groups()))
+    expected = said.format(*(f"{int(n):,}" if n.isdigit() else n for n in match.groups()))
     assert expected in words((DOCS / page).read_text(encoding="utf-8")), \
         f"docs/{page} should say {expected!r}, as {program} prints"
 

@@ -28,7 +28,7 @@ def _help(parser: argparse.ArgumentParser) -> str:
 
 def reference() -> str:
     """The Markdown of the reference: one section per command, its ``--help`` verbatim."""
-    os.environ["COLUMNS"] = "100"  # argparse wraps at the terminal width; the page at 100
+    os.environ["COLUMNS"] = "80"  # argparse wraps at the terminal width; the page shows 80 columns
     from pendulum_fmu.bench.solvers import build_parser as solvers_parser
     from pendulum_fmu.cli.main import build_parser
 
