@@ -108,8 +108,8 @@ def test_rebuilt_from_its_build_description_gives_the_same_results(fmu3_path: Pa
     start = {"theta": math.radians(80.0)}
     original = _run(fmu3_path, start)
     rebuilt = _run(unzipped, start)
-    for name in OUTPUTS:
-        assert np.allclose(rebuilt[name], original[name], rtol=0, atol=1e-12), name
+    for name in OUTPUTS:  # bit for bit: contraction is off in both
+        assert np.array_equal(rebuilt[name], original[name]), (name, np.max(np.abs(rebuilt[name] - original[name])))
 
 
 FMI3_BINARIES = {"x86_64-linux": "Pendulum.so", "x86_64-windows": "Pendulum.dll",
