@@ -22,7 +22,7 @@ from fmpy import extract, read_model_description, simulate_fmu
 from fmpy.fmi3 import FMU3Slave
 from fmpy.validation import validate_fmu
 
-from fmu_rebuild import rebuild_from_sources
+from fmu_rebuild import included_closure, rebuild_from_sources
 from pendulum_fmu.bench.reference import closed_form, exact_frequency, max_abs_diff
 
 SOLVERS = {"dopri5": 1, "rk4": 2, "rkn": 3, "symplectic": 4}
@@ -68,7 +68,17 @@ def test_archive_layout(fmu3_path: Path) -> None:
     names = set(zipfile.ZipFile(fmu3_path).namelist())
     assert {"modelDescription.xml", "binaries/x86_64-linux/Pendulum.so", "sources/buildDescription.xml",
             "documentation/index.html", "documentation/math.html"} <= names
-    assert not any(name.startswith("sources/fmi2_") for name in names)
+    assert "sources/fmi2_api.h" not in names and "sources/fmi3_layer.h" in names
+
+
+def test_sources_carry_only_what_the_build_reads(fmu3_path: Path) -> None:
+    """sources/ holds buildDescription.xml, the C files it lists and the headers they include."""
+    with zipfile.ZipFile(fmu3_path) as archive:
+        build = ElementTree.fromstring(archive.read("sources/buildDescription.xml"))
+        listed = [f.get("name") for f in build.iter("SourceFile")]
+        carried = {n for n in archive.namelist() if n.startswith("sources/") and not n.endswith("/")}
+        read = included_closure(archive, listed)
+    assert carried == read | {"sources/buildDescription.xml"}
 
 
 @pytest.mark.parametrize("solver", sorted(SOLVERS))

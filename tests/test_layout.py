@@ -253,6 +253,15 @@ def test_fmu_src_units_have_no_call_circle() -> None:
     assert circles(symbol_graph(objects)) == []
 
 
-@pytest.mark.xfail(strict=True, reason="fmu_src/ is one folder of prefixes until the commit 'fmu_src in rooms'")
 def test_fmu_src_has_no_prefix_named_file_group() -> None:
     assert prefix_groups(FMU_SRC, (".c", ".h")) == []
+
+
+@pytest.mark.parametrize("layer", ["fmi2", "fmi3"])
+def test_fmu_src_file_names_are_unique_within_an_fmu(layer: str) -> None:
+    """A source FMU's sources/ is flat and every room is an include directory: no two files
+    one FMU compiles (the shared rooms and its own FMI layer) may share a name."""
+    other = "fmi3" if layer == "fmi2" else "fmi2"
+    names = [p.name for p in FMU_SRC.glob("*/*") if p.suffix in (".c", ".h") and p.parent.name != other]
+    assert len(names) > 20, "fmu_src was not found"
+    assert sorted(n for n in set(names) if names.count(n) > 1) == []

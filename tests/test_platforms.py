@@ -36,7 +36,7 @@ BINARIES = {"linux64": "Pendulum.so", "win64": "Pendulum.dll", "darwin64": "Pend
 
 def fmi2_functions() -> set[str]:
     """The functions fmi2_api.h declares exported: the independent list to check against."""
-    header = (REPO_ROOT / "fmu_src/fmi2_api.h").read_text()
+    header = (REPO_ROOT / "fmu_src/fmi2/fmi2_api.h").read_text()
     names = set(re.findall(r"FMI2_EXPORT[^;(]*?\b(fmi2\w+)\s*\(", header))
     assert len(names) == 44, sorted(names)
     return names

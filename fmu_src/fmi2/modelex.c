@@ -1,5 +1,5 @@
-/* fmi2_modelex.c: the FMI 2.0 Model Exchange functions (section 3.2), translated onto the
- * shared instance (instance_motion.c). */
+/* fmi2/modelex.c: the FMI 2.0 Model Exchange functions (section 3.2), translated onto the
+ * shared instance (instance/motion.c). */
 #include "fmi2_api.h"
 #include "instance.h"
 

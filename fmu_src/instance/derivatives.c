@@ -1,4 +1,4 @@
-/* instance_derivatives.c: exact partial derivatives (directional and adjoint, FMI 2.0 3.2.1 /
+/* instance/derivatives.c: exact partial derivatives (directional and adjoint, FMI 2.0 3.2.1 /
  * FMI 3.0 3.2.7.2) and exact time derivatives of the outputs (FMI 2.0 4.2.1, FMI 3.0 4.2.1),
  * for both FMI versions, from the equation theta' = omega, omega' = -a sin(theta), a = g/L.
  *

@@ -10,7 +10,7 @@
 #include <math.h>
 
 #include "integrator.h"
-#include "integrator_methods.h"
+#include "methods.h"
 
 /* nodes c_i */
 #define C2 (1.0 / 5.0)

@@ -1,4 +1,4 @@
-/* fmi3_absent.c: the FMI 3.0 functions of features this model does not have (clocks,
+/* fmi3/absent.c: the FMI 3.0 functions of features this model does not have (clocks,
  * Scheduled Execution, Configuration Mode, run-time variable dependencies, discrete-state
  * evaluation): each is refused with its reason, as the capability flags declare. */
 #include "fmi3_layer.h"

@@ -1,4 +1,4 @@
-/* integrator_methods.h: private interface between integrator.c (init, dispatch) and the
+/* solvers/methods.h: private interface between integrator.c (init, dispatch) and the
  * per-method files. Not part of the FMU's API.
  *
  * Each method provides

@@ -1,4 +1,4 @@
-/* instance_calls.c: the life cycle (setup, initialization, termination, reset) and the
+/* instance/calls.c: the life cycle (setup, initialization, termination, reset) and the
  * variable access of an instance, shared by both FMI versions. */
 #include <limits.h>
 #include <math.h>

@@ -35,7 +35,7 @@
 #include <math.h>
 
 #include "integrator.h"
-#include "integrator_methods.h"
+#include "methods.h"
 
 #define SYMP_STAGES 15
 #define SYMP_PHASE_C 4.75e-6

@@ -5,7 +5,7 @@
 #include <string.h>
 
 #include "integrator.h"
-#include "integrator_methods.h"
+#include "methods.h"
 
 /* The adaptive methods never go below this tolerance (about 45 ulp of 1): tighter
  * requests only make the step-size controller chase rounding noise. */

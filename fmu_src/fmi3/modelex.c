@@ -1,5 +1,5 @@
-/* fmi3_modelex.c: the FMI 3.0 Model Exchange functions (section 3.2), translated onto the
- * shared instance (instance_motion.c). */
+/* fmi3/modelex.c: the FMI 3.0 Model Exchange functions (section 3.2), translated onto the
+ * shared instance (instance/motion.c). */
 #include "fmi3_layer.h"
 
 fmi3Instance fmi3InstantiateModelExchange(fmi3String instanceName, fmi3String instantiationToken,

@@ -42,7 +42,7 @@ typedef struct {
     int interface;              /* an InterfaceType: a state of one interface is refused by
                                    an instance of the other */
     int hard_case_reported;     /* 1 once a step has warned that the numerical solution went
-                                   qualitatively wrong (instance_motion.c) */
+                                   qualitatively wrong (instance/motion.c) */
     double L, g;                /* parameters */
     int solver;                 /* SolverKind */
     double tolerance;           /* relative tolerance of the Co-Simulation solver */

@@ -1,5 +1,5 @@
-/* fmi3_cosim.c: the FMI 3.0 Co-Simulation functions (section 4.2), translated onto the shared
- * instance (instance_motion.c, instance_derivatives.c). The FMU has no event mode in
+/* fmi3/cosim.c: the FMI 3.0 Co-Simulation functions (section 4.2), translated onto the shared
+ * instance (instance/motion.c, instance/derivatives.c). The FMU has no event mode in
  * Co-Simulation, no intermediate update and no early return (README, FMI 3.0). */
 #include "fmi3_layer.h"
 

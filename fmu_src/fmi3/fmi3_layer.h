@@ -1,4 +1,4 @@
-/* fmi3_layer.h: the FMI 3.0 instance, the shared one (instance.h) plus the host's logger,
+/* fmi3/fmi3_layer.h: the FMI 3.0 instance, the shared one (instance.h) plus the host's logger,
  * and the instantiation shared by Model Exchange and Co-Simulation. */
 #ifndef PENDULUM_FMI3_LAYER_H
 #define PENDULUM_FMI3_LAYER_H

@@ -1,4 +1,4 @@
-/* fmi2_common.c: the FMI 2.0 functions shared by Model Exchange and Co-Simulation (FMI 2.0
+/* fmi2/common.c: the FMI 2.0 functions shared by Model Exchange and Co-Simulation (FMI 2.0
  * section 2.1), translated onto the shared instance (instance.h): instantiation with the
  * host's callbacks, life cycle, variables, FMU states and directional derivatives. */
 #include <string.h>

@@ -1,4 +1,4 @@
-/* instance_motion.c: how an instance moves in time, for both FMI versions: the Model
+/* instance/motion.c: how an instance moves in time, for both FMI versions: the Model
  * Exchange calls (two continuous states theta, omega; no event indicators, no time events)
  * and the Co-Simulation step. The step integrates with the solver chosen by the parameter
  * `solver` at the experiment's tolerance; the solver keeps its own steps, so the

@@ -1,5 +1,5 @@
 /* instance.h: one FMU instance and every FMI call's work, written once for both FMI
- * versions. The fmi2_*.c and fmi3_*.c layers only translate types and arguments: each
+ * versions. The layers in fmi2/ and fmi3/ only translate types and arguments: each
  * instance_* call below takes the name of the FMI function it serves (for its messages),
  * checks the calling sequence and the arguments, logs a refusal with its reason, and returns
  * a Status whose numbers are those of fmi2Status and fmi3Status. */
@@ -84,7 +84,7 @@ int instance_allowed_for(Instance *inst, const char *function, InterfaceType typ
 #define SET_MODES (MODE_INSTANTIATED | MODE_INITIALIZATION | MODE_EVENT | MODE_CONTINUOUS_TIME | \
                    MODE_STEP_COMPLETE)
 
-/* --- life cycle and variables (instance_calls.c) ------------------------------------------ */
+/* --- life cycle and variables (instance/calls.c) ------------------------------------------ */
 Status instance_set_debug_logging(Instance *inst, const char *function, int logging_on, size_t n,
                                   const char *const categories[]);
 Status instance_setup_experiment(Instance *inst, const char *function, int tolerance_defined, double tolerance,
@@ -106,7 +106,7 @@ int instance_arrays_allowed(Instance *inst, const char *function, unsigned modes
 Status instance_no_variables(Instance *inst, const char *function, unsigned modes, const ValueReference vr[],
                              size_t nvr, const void *values);
 
-/* --- Model Exchange and Co-Simulation (instance_motion.c) ---------------------------------- */
+/* --- Model Exchange and Co-Simulation (instance/motion.c) ---------------------------------- */
 #define N_STATES 2
 Status instance_enter_event_mode(Instance *inst, const char *function);
 Status instance_enter_continuous_time_mode(Instance *inst, const char *function);
@@ -122,7 +122,7 @@ Status instance_get_event_indicators(Instance *inst, const char *function, doubl
 /* A communication step from `point` by `step` (FMI 2.0 4.2.2, FMI 3.0 4.2.1). */
 Status instance_do_step(Instance *inst, const char *function, double point, double step);
 
-/* --- FMU states (instance_state.c) --------------------------------------------------------- */
+/* --- FMU states (instance/state.c) --------------------------------------------------------- */
 Status instance_get_state(Instance *inst, const char *function, void **state);
 Status instance_set_state(Instance *inst, const char *function, const void *state);
 Status instance_free_state(Instance *inst, const char *function, void **state);
@@ -131,7 +131,7 @@ Status instance_serialize_state(Instance *inst, const char *function, const void
 Status instance_deserialize_state(Instance *inst, const char *function, const char bytes[], size_t size,
                                   void **state);
 
-/* --- partial derivatives (instance_derivatives.c) ------------------------------------------ */
+/* --- partial derivatives (instance/derivatives.c) ------------------------------------------ */
 /* Directional (sensitivity = J seed) or, with adjoint = 1, adjoint (sensitivity = seed^T J)
  * derivatives of the unknowns by the knowns, J exact from the equations. */
 Status instance_partials(Instance *inst, const char *function, int adjoint, const ValueReference unknowns[],

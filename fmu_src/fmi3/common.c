@@ -1,4 +1,4 @@
-/* fmi3_common.c: the FMI 3.0 functions of every interface (FMI 3.0 section 2.3), translated
+/* fmi3/common.c: the FMI 3.0 functions of every interface (FMI 3.0 section 2.3), translated
  * onto the shared instance (instance.h): instantiation, life cycle, variables of each type,
  * FMU states, directional and adjoint derivatives, and the refusals of what this model
  * does not have (clocks, Configuration Mode, variable dependencies at run time).

@@ -22,7 +22,7 @@
 #include <math.h>
 
 #include "integrator.h"
-#include "integrator_methods.h"
+#include "methods.h"
 
 /* tol per unit of rate t, scaled for the global error over ten periods */
 #define RK4_TOL_FACTOR 0.25

@@ -1,4 +1,4 @@
-/* instance_state.c: FMU states for rollback (FMI 2.0 section 2.1.8, FMI 3.0 section 2.2.6.4),
+/* instance/state.c: FMU states for rollback (FMI 2.0 section 2.1.8, FMI 3.0 section 2.2.6.4),
  * shared by both versions. A state is a copy of the
  * instance's ModelData (plain data); its serialized form is a header followed by those
  * bytes. The header carries a magic text, a format version, the payload size and an

@@ -1,4 +1,4 @@
-/* fmi2_api.h: the FMI 2.0 C interface, written from the definitions of the FMI 2.0.x
+/* fmi2/fmi2_api.h: the FMI 2.0 C interface, written from the definitions of the FMI 2.0.x
  * standard, section 2.1 (fmi2TypesPlatform.h, fmi2FunctionTypes.h, fmi2Functions.h).
  * This FMU is a shared library without a function prefix (FMI 2.0, 2.1.1), so the
  * exported names are the plain fmi2XXX names; only they are visible (FMI2_EXPORT). */

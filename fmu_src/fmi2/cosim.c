@@ -1,5 +1,5 @@
-/* fmi2_cosim.c: the FMI 2.0 Co-Simulation functions (section 4.2), translated onto the shared
- * instance (instance_motion.c, instance_derivatives.c); the status calls are 2.0's own. */
+/* fmi2/cosim.c: the FMI 2.0 Co-Simulation functions (section 4.2), translated onto the shared
+ * instance (instance/motion.c, instance/derivatives.c); the status calls are 2.0's own. */
 #include "fmi2_api.h"
 #include "instance.h"
 

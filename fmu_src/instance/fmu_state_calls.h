@@ -1,5 +1,5 @@
 /* fmu_state_calls.h: the six FMU-state functions of an FMI layer, defined once for both
- * versions: each forwards to instance_state.c with its own name for the messages. FMI 2.0
+ * versions: each forwards to instance/state.c with its own name for the messages. FMI 2.0
  * and 3.0 differ only in names and types (fmi2GetFMUstate / fmi3GetFMUState, ...). */
 #ifndef PENDULUM_FMU_STATE_CALLS_H
 #define PENDULUM_FMU_STATE_CALLS_H

@@ -41,7 +41,7 @@
 #include <math.h>
 
 #include "integrator.h"
-#include "integrator_methods.h"
+#include "methods.h"
 
 #define RKN_STAGES 17
 /* error estimate of order 10 (local error h^11): controller exponent q = 11 */
