@@ -113,7 +113,7 @@ def build_fmu(platforms: bool = False) -> Path | None:
 
 
 def host_library_folder() -> str:
-    """The platform folder of the host's ``pendulum_exact`` library (pendulum_fmu.fmu.exact_lib's naming)."""
+    """The platform folder of the host's ``pendulum_exact`` library (pendulum_fmu.fmu.library's naming)."""
     machine = platform.machine().lower()
     if sys.platform.startswith("win"):
         return "win64"

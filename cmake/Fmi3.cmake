@@ -1,21 +1,21 @@
 # Builds the FMI 3.0 Pendulum.fmu (Co-Simulation + Model Exchange) at build/fmi3/Pendulum.fmu
-# from the same model core as the FMI 2.0 one (CORE_SOURCES: every source but fmi2_*.c) and
-# the thin FMI 3.0 layer fmu_src/fmi3_*.c. Included by CMakeLists.txt after the FMI 2.0 FMU.
+# from the same model core as the FMI 2.0 one (CORE_SOURCES: every source but fmu_src/fmi2/) and
+# the thin FMI 3.0 layer fmu_src/fmi3/. Included by CMakeLists.txt after the FMI 2.0 FMU.
 #
-# The FMI 3.0 declarations are the project's own, written from the standard (fmu_src/fmi3_api.h,
-# as fmu_src/fmi2_api.h for FMI 2.0): a plain CMake build makes both FMUs, fmpy is a test
+# The FMI 3.0 declarations are the project's own, written from the standard (fmu_src/fmi3/fmi3_api.h,
+# as fmu_src/fmi2/fmi2_api.h for FMI 2.0): a plain CMake build makes both FMUs, fmpy is a test
 # dependency only.
 option(PENDULUM_FMI3 "Build the FMI 3.0 Pendulum.fmu" ON)
 if(NOT PENDULUM_FMI3)
   return()
 endif()
 
-file(GLOB FMI3_LAYER_SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/fmu_src/fmi3_*.c)
+file(GLOB FMI3_LAYER_SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/fmu_src/fmi3/*.c)
 set(FMI3_SOURCES ${CORE_SOURCES} ${FMI3_LAYER_SOURCES})
 set(FMI3_DIR ${CMAKE_CURRENT_BINARY_DIR}/fmi3)
 
 add_library(Pendulum_fmi3 SHARED ${FMI3_SOURCES})
-target_include_directories(Pendulum_fmi3 PRIVATE fmu_src ${GENERATED_DIR})
+target_include_directories(Pendulum_fmi3 PRIVATE ${FMU_INCLUDE_DIRS} ${GENERATED_DIR})
 target_compile_options(Pendulum_fmi3 PRIVATE ${WARNING_FLAGS})
 set_target_properties(Pendulum_fmi3 PROPERTIES PREFIX "" OUTPUT_NAME Pendulum C_VISIBILITY_PRESET hidden
                       LIBRARY_OUTPUT_DIRECTORY ${FMI3_DIR}/lib)
@@ -54,7 +54,7 @@ set(FMI3_OTHER_BINARIES "")
 set(FMI3_BINARY_DEPENDS "")
 if(PENDULUM_PLATFORMS)
   set(fmi3_cross_common NAME Pendulum SOURCES ${FMI3_SOURCES}
-      INCLUDES ${PROJECT_SOURCE_DIR}/fmu_src ${GENERATED_DIR}
+      INCLUDES ${FMU_INCLUDE_DIRS} ${GENERATED_DIR}
       DEPENDS ${FMU_HEADERS} ${GENERATED_DIR}/pendulum_vrs.h)
   set(fmi3_cross_targets
       x86_64-linux ${ZIG_LINUX_X86_64} so
@@ -78,8 +78,7 @@ endif()
 
 set(FMI3_FMU_DIR ${FMI3_DIR}/fmu)
 set(FMI3_FMU_FILE ${FMI3_DIR}/Pendulum.fmu)
-file(GLOB FMI3_HEADERS ${CMAKE_CURRENT_SOURCE_DIR}/fmu_src/*.h)
-list(FILTER FMI3_HEADERS EXCLUDE REGEX "fmi2_api\\.h$")
+fmu_room_headers(FMI3_HEADERS ${FMI3_SOURCES})
 add_custom_command(
   OUTPUT ${FMI3_FMU_FILE}
   COMMAND ${CMAKE_COMMAND} -E rm -rf ${FMI3_FMU_DIR}

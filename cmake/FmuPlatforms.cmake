@@ -50,7 +50,7 @@ set(FMU_CROSS_TARGETS
     darwin-arm64 ${ZIG_MACOS_ARM64}
     # for the tests only: the arm64 code (flags as darwin-arm64) on Linux, run under qemu,
     aarch64-linux ${ZIG_LINUX_ARM64})
-set(fmu_cross_common NAME Pendulum SOURCES ${FMU_SOURCES} INCLUDES ${PROJECT_SOURCE_DIR}/fmu_src ${GENERATED_DIR}
+set(fmu_cross_common NAME Pendulum SOURCES ${FMU_SOURCES} INCLUDES ${FMU_INCLUDE_DIRS} ${GENERATED_DIR}
     DEPENDS ${FMU_HEADERS} ${GENERATED_DIR}/pendulum_vrs.h)
 set(FMU_BINARY_DEPENDS "")
 while(FMU_CROSS_TARGETS)
@@ -78,7 +78,7 @@ set(FMU_OTHER_BINARIES
 # package loads>, where setup.py picks them up.
 set(exact_cross_common NAME pendulum_exact
     SOURCES ${PROJECT_SOURCE_DIR}/exact_lib/pendulum_exact_lib.c ${CORE_SOURCES}
-    INCLUDES ${PROJECT_SOURCE_DIR}/fmu_src ${GENERATED_DIR}
+    INCLUDES ${FMU_INCLUDE_DIRS} ${GENERATED_DIR}
     DEPENDS ${FMU_HEADERS} ${GENERATED_DIR}/pendulum_vrs.h ${PROJECT_SOURCE_DIR}/exact_lib/pendulum_exact_lib.h)
 foreach(platform IN ITEMS LINUX_X86_64 WINDOWS_X86_64 MACOS_X86_64 MACOS_ARM64)
   cross_shared_library(exact_${platform} TARGET ${ZIG_${platform}} SUBDIR exact-${platform} ${exact_cross_common})

@@ -12,7 +12,7 @@ set(REFERENCE_INTERVALS 1000)
 set(REFERENCE_DIR ${CMAKE_CURRENT_BINARY_DIR}/reference/org.fmi-standard.fmi-ls-ref)
 
 add_executable(write_reference_result reference/write_reference_result.c)
-target_include_directories(write_reference_result PRIVATE fmu_src)
+target_include_directories(write_reference_result PRIVATE ${FMU_INCLUDE_DIRS})
 target_compile_options(write_reference_result PRIVATE ${WARNING_FLAGS})
 target_link_libraries(write_reference_result PRIVATE pendulum_core)
 

@@ -3,6 +3,8 @@ does (FMI 2.0: the SourceFiles of modelDescription.xml; FMI 3.0: sources/buildDe
 
 from __future__ import annotations
 
+import posixpath
+import re
 import shutil
 import zipfile
 from pathlib import Path
@@ -32,3 +34,26 @@ def rebuild_from_sources(fmu: Path, tmp_path: Path) -> Path:
     (tmp_path / "cmake-build").mkdir()
     build_platform_binary(unzipped, build_dir=tmp_path / "cmake-build")
     return unzipped
+
+
+INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.MULTILINE)
+
+
+def included_closure(archive: zipfile.ZipFile, sources: list[str]) -> set[str]:
+    """The files of ``archive`` that compiling ``sources`` (names under ``sources/``) reads.
+
+    A quoted include is looked up beside the including file, then in ``sources/`` (the
+    include directory fmpy gives the compiler), as a C compiler does.
+    """
+    names = set(archive.namelist())
+    todo = [f"sources/{name}" for name in sources]
+    seen: set[str] = set()
+    while todo:
+        name = todo.pop()
+        if name in seen or name not in names:
+            continue
+        seen.add(name)
+        for included in INCLUDE.findall(archive.read(name).decode("utf-8", errors="replace")):
+            beside = posixpath.normpath(posixpath.join(posixpath.dirname(name), included))
+            todo.append(beside if beside in names else f"sources/{included}")
+    return seen

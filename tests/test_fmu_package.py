@@ -12,6 +12,7 @@ from fmpy import read_model_description
 from fmpy.fmi2 import FMU2Slave
 from fmpy.validation import validate_fmu
 
+from fmu_rebuild import included_closure
 from pendulum_fmu.fmu.build import REPO_ROOT
 
 
@@ -30,6 +31,18 @@ def test_archive_holds_xml_binary_sources_and_documentation(fmu_path: Path) -> N
     assert expected <= names
     # every C file shipped is one the XML lists, so a rebuild compiles exactly those
     assert {n for n in names if n.endswith(".c")} == {f"sources/{name}" for name in listed}
+
+
+def test_sources_carry_only_what_the_build_reads(fmu_path: Path) -> None:
+    """Every file in sources/ is a listed C file or a header one of them includes (so no
+    FMI 3.0 layer in the FMI 2.0 FMU), and every header they include is there."""
+    with zipfile.ZipFile(fmu_path) as archive:
+        root = ElementTree.fromstring(archive.read("modelDescription.xml"))
+        listed = [f.get("name") for f in root.findall("CoSimulation/SourceFiles/File")]
+        carried = {n for n in archive.namelist() if n.startswith("sources/") and not n.endswith("/")}
+        read = included_closure(archive, listed)
+    assert carried == read
+    assert "sources/layer.h" not in carried
 
 
 def test_only_fmi_functions_are_exported(fmu_path: Path, tmp_path: Path) -> None:

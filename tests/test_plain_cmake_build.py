@@ -1,6 +1,6 @@
 """Both FMUs from a plain CMake build, as an importer's "build from sources" or a packager runs
 it: ``cmake -S . -B build && cmake --build build`` with a Python on PATH that has no fmpy. The
-FMI 3.0 declarations are the project's own (fmu_src/fmi3_api.h); fmpy is a test dependency only.
+FMI 3.0 declarations are the project's own (fmu_src/fmi3/fmi3_api.h); fmpy is a test dependency only.
 """
 
 from __future__ import annotations

@@ -25,12 +25,12 @@ _EXPORTS: dict[str, str] = {
     "FmuRunner": "fmu.runner", "Trajectory": "fmu.runner",
     "SweepGrid": "sweep.grid", "SweepPoint": "sweep.grid", "run_sweep": "sweep.run",
     "UsageError": "errors", "SimulationError": "errors", "BuildError": "errors",
-    "locate_fmu": "fmu.locate", "exact": "fmu.exact_lib",
+    "locate_fmu": "fmu.locate", "exact": "fmu.library",
 }
 
 if TYPE_CHECKING:
     from pendulum_fmu.errors import BuildError, SimulationError, UsageError
-    from pendulum_fmu.fmu.exact_lib import exact
+    from pendulum_fmu.fmu.library import exact
     from pendulum_fmu.fmu.locate import locate_fmu
     from pendulum_fmu.fmu.runner import FmuRunner, Trajectory
     from pendulum_fmu.spec import SOLVERS, Method, Pendulum, TimeGrid

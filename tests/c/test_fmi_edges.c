@@ -168,7 +168,7 @@ static void test_unreachable_step_refused_at_once(void)
     fmi2FreeInstance(cs);
 }
 
-/* Mirror of instance_state.c's header and checksum, to forge blobs as an attacker would. */
+/* Mirror of instance/state.c's header and checksum, to forge blobs as an attacker would. */
 typedef struct {
     char magic[8];
     uint32_t format_version;

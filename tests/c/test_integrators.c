@@ -1,7 +1,7 @@
-/* test_integrators.c: checks of the time integrators (fmu_src/integrator.h) against the
+/* test_integrators.c: checks of the time integrators (fmu_src/solvers/integrator.h) against the
  * exact solution of theta'' + w0^2 sin(theta) = 0 released at rest.
  *
- * The reference is computed here, independently of fmu_src/exact.c (so that the two
+ * The reference is computed here, independently of fmu_src/math/exact.c (so that the two
  * cross-check each other instead of sharing a bug): theta(t) = 2 atan2(k cn(w0 t | m), k'),
  * omega(t) = -2 k k' w0 sn/dn, k = sin(theta0/2), k' = cos(theta0/2), m = k^2
  * (documentation/math.html), with K from the AGM and sn, cn, dn by the descending Landen scheme

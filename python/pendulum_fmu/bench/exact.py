@@ -154,7 +154,7 @@ def time_library(amplitude_deg: float, n: int, repeats: int = 3, seed: int = 1) 
 
     The same times as :func:`time_scipy`: uniform over 50 periods, from rest, w0 = 1.
     """
-    from pendulum_fmu.fmu.exact_lib import exact
+    from pendulum_fmu.fmu.library import exact
 
     theta0 = math.radians(amplitude_deg)
     half = theta0 / 2.0

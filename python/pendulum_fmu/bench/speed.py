@@ -33,7 +33,7 @@ from pathlib import Path
 
 import numpy as np
 
-from pendulum_fmu.fmu.exact_lib import exact
+from pendulum_fmu.fmu.library import exact
 from pendulum_fmu.fmu.runner import FmuRunner, reference_period
 from pendulum_fmu.spec import Method, Pendulum, TimeGrid
 

@@ -51,13 +51,3 @@ def run(args: argparse.Namespace) -> int:
     print(f"\nwritten to {args.out} (open report.html)")
     return 0
 
-
-def main(argv: list[str] | None = None) -> int:
-    """``python -m pendulum_fmu.cli.study [options]``: the same as ``pendulum-fmu study``."""
-    from pendulum_fmu.cli.main import main as cli_main
-
-    return cli_main(["study", *(sys.argv[1:] if argv is None else argv)])
-
-
-if __name__ == "__main__":
-    raise SystemExit(main())

@@ -55,7 +55,7 @@ def fit_parameters(t: np.ndarray, columns: dict[str, np.ndarray], experiment: Ex
     """
     from scipy.optimize import least_squares  # noqa: PLC0415
 
-    from pendulum_fmu.fmu.exact_lib import exact  # noqa: PLC0415
+    from pendulum_fmu.fmu.library import exact  # noqa: PLC0415
 
     thetas = [v for k, v in columns.items() if k.startswith("theta")]
     omegas = [v for k, v in columns.items() if k.startswith("omega")]
@@ -171,7 +171,7 @@ def cvode_errors(fmu: Path, result: Result, experiment: Experiment, tolerances: 
     on the file's output grid."""
     from fmpy import simulate_fmu  # noqa: PLC0415
 
-    from pendulum_fmu.fmu.exact_lib import exact  # noqa: PLC0415
+    from pendulum_fmu.fmu.library import exact  # noqa: PLC0415
 
     start, stop = experiment.start_time, float(result.time[-1])
     interval = (stop - float(result.time[0])) / max(1, result.rows - 1)

@@ -7,7 +7,7 @@ from typing import Any, Literal
 
 import numpy as np
 
-from pendulum_fmu.fmu.exact_lib import exact
+from pendulum_fmu.fmu.library import exact
 from pendulum_fmu.judge import checks, inference
 from pendulum_fmu.judge.experiment import make_experiment
 from pendulum_fmu.judge.reading import ReadError, Result, describe_digits, read_result

@@ -1,0 +1,156 @@
+/* instance.h: one FMU instance and every FMI call's work, written once for both FMI
+ * versions. The layers in fmi2/ and fmi3/ only translate types and arguments: each
+ * instance_* call below takes the name of the FMI function it serves (for its messages),
+ * checks the calling sequence and the arguments, logs a refusal with its reason, and returns
+ * a Status whose numbers are those of fmi2Status and fmi3Status. */
+#ifndef PENDULUM_INSTANCE_H
+#define PENDULUM_INSTANCE_H
+
+#include <stddef.h>
+
+#include "model.h"
+
+/* fmi2Status and fmi3Status share these numbers (FMI 2.0 2.1.3, FMI 3.0 2.2.3). */
+typedef enum {
+    STATUS_OK = 0,
+    STATUS_WARNING = 1,
+    STATUS_DISCARD = 2,
+    STATUS_ERROR = 3,
+    STATUS_FATAL = 4
+} Status;
+
+/* Log categories as declared in both model descriptions' <LogCategories>. */
+typedef enum {
+    LOG_STATUS_ERROR = 0,
+    LOG_STATUS_WARNING = 1,
+    LOG_CALLS = 2,
+    LOG_CATEGORY_COUNT = 3
+} LogCategory;
+
+typedef struct Instance Instance;
+typedef struct StateNode StateNode; /* an FMU state handed out (instance_state.c) */
+
+/* What the FMI layer supplies: its host's logger and memory, behind one signature. */
+typedef struct {
+    void (*log)(const Instance *inst, Status status, const char *category, const char *message);
+    void *(*allocate)(const Instance *inst, size_t size); /* zeroed memory, or NULL */
+    void (*release)(const Instance *inst, void *memory);
+} InstanceHost;
+
+struct Instance {
+    ModelData data;
+    InterfaceType type;
+    int fmi_version;         /* 2 or 3: the names of modes in messages, FMI 3.0's `time` */
+    char *name;
+    InstanceHost host;
+    int log_enabled[LOG_CATEGORY_COUNT];
+    StateNode *states;       /* the FMU states this instance handed out and has not freed:
+                                the registry FreeFMUstate checks a pointer against */
+};
+
+/* Instantiation checks shared by every Instantiate: NULL, or why the instance is refused. */
+const char *instance_refusal(const char *name, const char *token);
+
+/* Fills a zeroed Instance (allocated by the layer, host set): copies the name, sets the log
+ * switches and the start values. Returns 0, or -1 when out of memory. */
+int instance_setup(Instance *inst, const char *name, InterfaceType type, int fmi_version, int logging_on);
+
+/* Frees the name and the FMU states still live; the layer frees the instance itself. */
+void instance_release(Instance *inst);
+
+/* Logs through the host's logger if the category is enabled. */
+void instance_log(const Instance *inst, Status status, LogCategory category, const char *format, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 4, 5)))
+#endif
+    ;
+
+/* Puts the instance into MODE_ERROR after logging why; returns STATUS_ERROR. */
+Status instance_fail(Instance *inst, const char *function, const char *format, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
+
+/* 1 if inst is non-NULL and in one of the allowed modes; otherwise logs "<function>: not
+ * allowed in state <mode>" (for a live instance) and returns 0. */
+int instance_allowed(Instance *inst, const char *function, unsigned allowed_modes);
+
+/* The same for a function of one interface only: an instance of the other refuses it. */
+int instance_allowed_for(Instance *inst, const char *function, InterfaceType type, unsigned allowed_modes);
+
+/* Modes in which each group of calls is allowed (both versions' state tables). */
+#define ANY_MODE (MODE_INSTANTIATED | MODE_INITIALIZATION | MODE_EVENT | MODE_CONTINUOUS_TIME | \
+                  MODE_STEP_COMPLETE | MODE_TERMINATED | MODE_ERROR)
+#define ANY_LIVE_MODE (ANY_MODE & ~MODE_ERROR)
+#define GET_MODES (ANY_MODE & ~MODE_INSTANTIATED)
+#define SET_MODES (MODE_INSTANTIATED | MODE_INITIALIZATION | MODE_EVENT | MODE_CONTINUOUS_TIME | \
+                   MODE_STEP_COMPLETE)
+
+/* --- life cycle and variables (instance/calls.c) ------------------------------------------ */
+Status instance_set_debug_logging(Instance *inst, const char *function, int logging_on, size_t n,
+                                  const char *const categories[]);
+Status instance_setup_experiment(Instance *inst, const char *function, int tolerance_defined, double tolerance,
+                                 double start_time, int stop_time_defined, double stop_time);
+Status instance_enter_initialization(Instance *inst, const char *function);
+/* Both in one call, checked and logged once (FMI 3.0's fmi3EnterInitializationMode). */
+Status instance_enter_initialization_with(Instance *inst, const char *function, int tolerance_defined,
+                                          double tolerance, double start_time, int stop_time_defined,
+                                          double stop_time);
+Status instance_exit_initialization(Instance *inst, const char *function);
+Status instance_terminate(Instance *inst, const char *function);
+Status instance_reset(Instance *inst, const char *function);
+Status instance_get_reals(Instance *inst, const char *function, const ValueReference vr[], size_t nvr, double value[]);
+Status instance_set_reals(Instance *inst, const char *function, const ValueReference vr[], size_t nvr,
+                          const double value[]);
+/* Integer and Enumeration variables; the layer converts to and from its integer type. */
+Status instance_get_integer(Instance *inst, const char *function, ValueReference vr, long *value);
+Status instance_set_integer(Instance *inst, const char *function, ValueReference vr, long value);
+/* Checks the arrays of a Get/Set call: vr and values non-NULL when nvr > 0. */
+int instance_arrays_allowed(Instance *inst, const char *function, unsigned modes, const ValueReference vr[],
+                            size_t nvr, const void *values);
+/* Get/Set of a type the model has no variable of: every value reference is unknown. */
+Status instance_no_variables(Instance *inst, const char *function, unsigned modes, const ValueReference vr[],
+                             size_t nvr, const void *values);
+
+/* --- Model Exchange and Co-Simulation (instance/motion.c) ---------------------------------- */
+#define N_STATES 2
+Status instance_enter_event_mode(Instance *inst, const char *function);
+Status instance_enter_continuous_time_mode(Instance *inst, const char *function);
+Status instance_new_discrete_states(Instance *inst, const char *function, int any_pointer_null);
+Status instance_completed_integrator_step(Instance *inst, const char *function, int *enter_event_mode,
+                                          int *terminate_simulation);
+Status instance_set_time(Instance *inst, const char *function, double time);
+Status instance_set_states(Instance *inst, const char *function, const double x[], size_t nx);
+Status instance_get_state_derivatives(Instance *inst, const char *function, double derivatives[], size_t nx);
+Status instance_get_states(Instance *inst, const char *function, double x[], size_t nx);
+Status instance_get_nominals(Instance *inst, const char *function, double nominals[], size_t nx);
+Status instance_get_event_indicators(Instance *inst, const char *function, double indicators[], size_t ni);
+/* A communication step from `point` by `step` (FMI 2.0 4.2.2, FMI 3.0 4.2.1). */
+Status instance_do_step(Instance *inst, const char *function, double point, double step);
+
+/* --- FMU states (instance/state.c) --------------------------------------------------------- */
+Status instance_get_state(Instance *inst, const char *function, void **state);
+Status instance_set_state(Instance *inst, const char *function, const void *state);
+/* Frees *state only if it is one of this instance's live states (the registry), else refuses it. */
+Status instance_free_state(Instance *inst, const char *function, void **state);
+/* Frees every state still live (from instance_release). */
+void instance_release_states(Instance *inst);
+Status instance_serialized_state_size(Instance *inst, const char *function, const void *state, size_t *size);
+Status instance_serialize_state(Instance *inst, const char *function, const void *state, char bytes[], size_t size);
+Status instance_deserialize_state(Instance *inst, const char *function, const char bytes[], size_t size,
+                                  void **state);
+
+/* --- partial derivatives (instance/derivatives.c) ------------------------------------------ */
+/* Directional (sensitivity = J seed) or, with adjoint = 1, adjoint (sensitivity = seed^T J)
+ * derivatives of the unknowns by the knowns, J exact from the equations. */
+Status instance_partials(Instance *inst, const char *function, int adjoint, const ValueReference unknowns[],
+                         size_t n_unknowns, const ValueReference knowns[], size_t n_knowns, const double seed[],
+                         double sensitivity[]);
+/* The highest order instance_output_derivatives gives (maxOutputDerivativeOrder). */
+#define MAX_OUTPUT_DERIVATIVE_ORDER 3
+/* Time derivatives of the Co-Simulation outputs at the current communication point. */
+Status instance_output_derivatives(Instance *inst, const char *function, const ValueReference vr[], size_t nvr,
+                                   const int order[], double value[]);
+
+#endif
