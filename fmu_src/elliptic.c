@@ -50,13 +50,13 @@ EllipticDD elliptic_dd_mul(EllipticDD x, EllipticDD y)
 
 EllipticDD elliptic_dd_div(EllipticDD x, EllipticDD y)
 {
-    /* Long division: three quotient digits q1 + q2 + q3, each from the remainder so far. */
-    double q1 = x.hi / y.hi;
-    EllipticDD r = elliptic_dd_add(x, elliptic_dd_neg(elliptic_dd_mul(y, elliptic_dd(q1))));
-    double q2 = r.hi / y.hi;
-    r = elliptic_dd_add(r, elliptic_dd_neg(elliptic_dd_mul(y, elliptic_dd(q2))));
-    double q3 = r.hi / y.hi;
-    return elliptic_dd_add(fast_two_sum(q1, q2), elliptic_dd(q3));
+    /* Dekker's div2: q1 = x.hi / y.hi, the remainder x - q1 y with q1 y.hi exact (two-product;
+     * x.hi - p.hi is exact by Sterbenz), then q2 = remainder / y.hi. Relative error a few
+     * 2^-104 (Dekker 1971, section 8). */
+    const double q1 = x.hi / y.hi;
+    const EllipticDD p = elliptic_two_prod(q1, y.hi);
+    const double remainder = (((x.hi - p.hi) - p.lo) + x.lo) - q1 * y.lo;
+    return fast_two_sum(q1, remainder / y.hi);
 }
 
 EllipticDD elliptic_dd_sqrt(EllipticDD x)
@@ -84,10 +84,35 @@ EllipticDD elliptic_dd_sqrt(EllipticDD x)
     return fast_two_sum(s, correction);
 }
 
-/* x / d for a double d. */
-static EllipticDD dd_div_d(EllipticDD x, double d)
+/* Coefficients of the Maclaurin series of sin and cos (A&S 4.3.65-66), generated with mpmath
+ * at 300 bits: SIN_DD[j - 1] = (-1)^j / (2j + 1)!, COS_DD[j - 1] = (-1)^j / (2j)! for
+ * j = 1..7 in double-double, the tails j = 8..14 in double. */
+static const EllipticDD SIN_DD[7] = {
+    {-0x1.5555555555555p-3, -0x1.5555555555555p-57},  {0x1.1111111111111p-7, 0x1.1111111111111p-63},
+    {-0x1.a01a01a01a01ap-13, -0x1.a01a01a01a01ap-73}, {0x1.71de3a556c734p-19, -0x1.c154f8ddc6c00p-73},
+    {-0x1.ae64567f544e4p-26, 0x1.c062e06d1f209p-80},  {0x1.6124613a86d09p-33, 0x1.f28e0cc748ebep-87},
+    {-0x1.ae7f3e733b81fp-41, -0x1.1d8656b0ee8cbp-97}};
+static const double SIN_TAIL[7] = {0x1.952c77030ad4ap-49, -0x1.2f49b46814157p-57, 0x1.71b8ef6dcf572p-66,
+                                   -0x1.761b41316381ap-75, 0x1.3f3ccdd165fa9p-84, -0x1.d1ab1c2dccea3p-94,
+                                   0x1.259f98b4358adp-103};
+static const EllipticDD COS_DD[7] = {
+    {-0x1.0000000000000p-1, 0.0},                      {0x1.5555555555555p-5, 0x1.5555555555555p-59},
+    {-0x1.6c16c16c16c17p-10, 0x1.f49f49f49f49fp-65},  {0x1.a01a01a01a01ap-16, 0x1.a01a01a01a01ap-76},
+    {-0x1.27e4fb7789f5cp-22, -0x1.cbbc05b4fa99ap-76}, {0x1.1eed8eff8d898p-29, -0x1.2aec959e14c06p-83},
+    {-0x1.93974a8c07c9dp-37, -0x1.05d6f8a2efd1fp-92}};
+static const double COS_TAIL[7] = {0x1.ae7f3e733b81fp-45, -0x1.6827863b97d97p-53, 0x1.e542ba4020225p-62,
+                                   -0x1.0ce396db7f853p-70, 0x1.f2cf01972f578p-80, -0x1.88e85fc6a4e5ap-89,
+                                   0x1.0a18a2635085dp-98};
+
+/* c + x y for double-doubles, with the sloppy sum (one renormalisation): Horner's step when
+ * |x y| is well below |c| (here |x y| <= 0.31 |c|), relative error a few 2^-104. */
+static EllipticDD dd_mul_add(EllipticDD c, EllipticDD x, EllipticDD y)
 {
-    return elliptic_dd_div(x, elliptic_dd(d));
+    EllipticDD p = elliptic_two_prod(x.hi, y.hi);
+    p.lo += x.hi * y.lo + x.lo * y.hi;
+    EllipticDD s = elliptic_two_sum(c.hi, p.hi);
+    s.lo += c.lo + p.lo;
+    return fast_two_sum(s.hi, s.lo);
 }
 
 void elliptic_dd_sincos(EllipticDD x, EllipticDD *sin_x, EllipticDD *cos_x)
@@ -98,26 +123,32 @@ void elliptic_dd_sincos(EllipticDD x, EllipticDD *sin_x, EllipticDD *cos_x)
     }
     /* x = n pi/2 + y, |y| <= pi/4: y = x - n (pi/2)_hi - n (pi/2)_lo - n (pi/2)_lolo, the
      * products n (pi/2)_hi and n (pi/2)_lo exact (two-product), n small. */
-    double n = nearbyint(x.hi / HALF_PI_HI);
-    EllipticDD y = elliptic_dd_add(x, elliptic_dd_neg(elliptic_two_prod(n, HALF_PI_HI)));
-    y = elliptic_dd_add(y, elliptic_dd_neg(elliptic_two_prod(n, HALF_PI_LO)));
-    y = elliptic_dd_add(y, elliptic_dd(-n * HALF_PI_LOLO));
-
-    /* Maclaurin series (A&S 4.3.65, 4.3.66), terms from the previous one:
-     * sin: t_{j+1} = -t_j y^2 / ((2j+2)(2j+3)),  cos: t_{j+1} = -t_j y^2 / ((2j+1)(2j+2)). */
-    EllipticDD y2 = elliptic_dd_mul(y, y);
-    EllipticDD sin_y = y, cos_y = elliptic_dd(1.0);
-    EllipticDD term_s = y, term_c = elliptic_dd(1.0);
-    for (int j = 0; j < 40; ++j) {
-        double a = 2.0 * j + 1.0;
-        term_s = dd_div_d(elliptic_dd_mul(term_s, y2), -(a + 1.0) * (a + 2.0));
-        term_c = dd_div_d(elliptic_dd_mul(term_c, y2), -a * (a + 1.0));
-        sin_y = elliptic_dd_add(sin_y, term_s);
-        cos_y = elliptic_dd_add(cos_y, term_c);
-        if (fabs(term_s.hi) <= 1e-34 * fabs(sin_y.hi) && fabs(term_c.hi) <= 1e-34) {
-            break;
-        }
+    const double n = nearbyint(x.hi / HALF_PI_HI);
+    EllipticDD y = x;
+    if (n != 0.0) {
+        y = elliptic_dd_add(x, elliptic_dd_neg(elliptic_two_prod(n, HALF_PI_HI)));
+        y = elliptic_dd_add(y, elliptic_dd_neg(elliptic_two_prod(n, HALF_PI_LO)));
+        y = elliptic_dd_add(y, elliptic_dd(-n * HALF_PI_LOLO));
     }
+
+    /* sin y = y + y y2 P(y2), cos y = 1 + y2 Q(y2), y2 = y^2 <= 0.62, P and Q by Horner:
+     * the terms of degree >= 8 in y2 (below 5.6e-16 of the leading 1/6 and 1/2) in double,
+     * the seven leading ones in double-double. The first omitted terms (y2^14 / 31!, 30!) are
+     * below 1e-35 relative. */
+    const EllipticDD y2 = elliptic_dd_mul(y, y);
+    const double z = y2.hi;
+    double tail_s = SIN_TAIL[6], tail_c = COS_TAIL[6];
+    for (int j = 5; j >= 0; --j) {
+        tail_s = SIN_TAIL[j] + z * tail_s;
+        tail_c = COS_TAIL[j] + z * tail_c;
+    }
+    EllipticDD p = elliptic_dd(tail_s), q = elliptic_dd(tail_c);
+    for (int j = 6; j >= 0; --j) {
+        p = dd_mul_add(SIN_DD[j], y2, p);
+        q = dd_mul_add(COS_DD[j], y2, q);
+    }
+    const EllipticDD sin_y = elliptic_dd_add(y, elliptic_dd_mul(elliptic_dd_mul(y, y2), p));
+    const EllipticDD cos_y = elliptic_dd_add(elliptic_dd(1.0), elliptic_dd_mul(y2, q));
 
     /* sin(y + n pi/2), cos(y + n pi/2) by the quadrant n mod 4. */
     const int quadrant = (int)(n - 4.0 * floor(0.25 * n));   /* n mod 4, no integer overflow */
@@ -167,18 +198,29 @@ EllipticDD elliptic_K_dd(EllipticDD m1)
     }
     EllipticDD a = elliptic_dd(1.0);
     EllipticDD b = elliptic_dd_sqrt(m1);
-    /* Same AGM in double-double; stop when |a - b| <= 1e-17 a: the final mean is then
-     * within ~1e-35 a of the limit. */
+    /* Same AGM in double-double until x = (a - b)/(a + b) <= 2^-26, then the mean of the
+     * close pair from its series: AGM(c (1 + x), c (1 - x)) = c (1 - x^2/4 - 5 x^4/64 - ...)
+     * with c = (a + b)/2 (the Taylor series of AGM(1 + x, 1 - x) = 1 / 2F1(1/2, 1/2; 1; x^2),
+     * DLMF 19.8.5 with 19.5.1; coefficients checked with mpmath). The omitted terms are below
+     * 11/256 x^6 < 2^-160; the correction (below 2^-54 of c) has the relative error of a
+     * double (a.hi - b.hi is exact, Sterbenz), ~2^-106 of c: one AGM step fewer than
+     * running the means down to |a - b| ~ 1e-17. */
+    EllipticDD agm = elliptic_dd(NAN);
     for (int i = 0; i < 64; ++i) {
-        EllipticDD diff = elliptic_dd_add(a, elliptic_dd_neg(b));
-        if (fabs(diff.hi) <= 1e-17 * a.hi) {
+        const EllipticDD sum = elliptic_dd_add(a, b);
+        const double diff = (a.hi - b.hi) + (a.lo - b.lo);
+        const double x = diff / sum.hi;
+        if (fabs(x) <= 0x1p-26) {
+            const double x2 = x * x;
+            const double correction = x2 * (0.25 + x2 * (5.0 / 64.0));
+            const EllipticDD c = {0.5 * sum.hi, 0.5 * sum.lo};
+            agm = elliptic_dd_add(c, elliptic_dd(-c.hi * correction));
             break;
         }
-        EllipticDD a_next = elliptic_dd_mul(elliptic_dd_add(a, b), elliptic_dd(0.5));
+        EllipticDD a_next = {0.5 * sum.hi, 0.5 * sum.lo};
         b = elliptic_dd_sqrt(elliptic_dd_mul(a, b));
         a = a_next;
     }
-    EllipticDD agm = elliptic_dd_mul(elliptic_dd_add(a, b), elliptic_dd(0.5));
     EllipticDD half_pi = fast_two_sum(HALF_PI_HI, HALF_PI_LO);
     return elliptic_dd_div(half_pi, agm);   /* K = (pi/2) / AGM */
 }
