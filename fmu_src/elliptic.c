@@ -84,25 +84,27 @@ EllipticDD elliptic_dd_sqrt(EllipticDD x)
     return fast_two_sum(s, correction);
 }
 
-/* Coefficients of the Maclaurin series of sin and cos (A&S 4.3.65-66), generated with mpmath
- * at 300 bits: SIN_DD[j - 1] = (-1)^j / (2j + 1)!, COS_DD[j - 1] = (-1)^j / (2j)! for
- * j = 1..7 in double-double, the tails j = 8..14 in double. */
-static const EllipticDD SIN_DD[7] = {
-    {-0x1.5555555555555p-3, -0x1.5555555555555p-57},  {0x1.1111111111111p-7, 0x1.1111111111111p-63},
+/* Coefficients of the Maclaurin series of sin and cos (A&S 4.3.65-66) in double-double,
+ * generated with mpmath at 300 bits: SIN_COEF[j - 1] = (-1)^j / (2j + 1)!,
+ * COS_COEF[j - 1] = (-1)^j / (2j)!, j = 1..14. */
+static const EllipticDD SIN_COEF[14] = {
+    {-0x1.5555555555555p-3, -0x1.5555555555555p-57}, {0x1.1111111111111p-7, 0x1.1111111111111p-63},
     {-0x1.a01a01a01a01ap-13, -0x1.a01a01a01a01ap-73}, {0x1.71de3a556c734p-19, -0x1.c154f8ddc6c00p-73},
-    {-0x1.ae64567f544e4p-26, 0x1.c062e06d1f209p-80},  {0x1.6124613a86d09p-33, 0x1.f28e0cc748ebep-87},
-    {-0x1.ae7f3e733b81fp-41, -0x1.1d8656b0ee8cbp-97}};
-static const double SIN_TAIL[7] = {0x1.952c77030ad4ap-49, -0x1.2f49b46814157p-57, 0x1.71b8ef6dcf572p-66,
-                                   -0x1.761b41316381ap-75, 0x1.3f3ccdd165fa9p-84, -0x1.d1ab1c2dccea3p-94,
-                                   0x1.259f98b4358adp-103};
-static const EllipticDD COS_DD[7] = {
-    {-0x1.0000000000000p-1, 0.0},                      {0x1.5555555555555p-5, 0x1.5555555555555p-59},
-    {-0x1.6c16c16c16c17p-10, 0x1.f49f49f49f49fp-65},  {0x1.a01a01a01a01ap-16, 0x1.a01a01a01a01ap-76},
+    {-0x1.ae64567f544e4p-26, 0x1.c062e06d1f209p-80}, {0x1.6124613a86d09p-33, 0x1.f28e0cc748ebep-87},
+    {-0x1.ae7f3e733b81fp-41, -0x1.1d8656b0ee8cbp-97}, {0x1.952c77030ad4ap-49, 0x1.ac981465ddc6cp-103},
+    {-0x1.2f49b46814157p-57, -0x1.2650f61dbdcb4p-112}, {0x1.71b8ef6dcf572p-66, -0x1.d043ae40c4647p-120},
+    {-0x1.761b41316381ap-75, 0x1.3423c7d91404fp-130}, {0x1.3f3ccdd165fa9p-84, -0x1.58ddadf344487p-139},
+    {-0x1.d1ab1c2dccea3p-94, -0x1.054d0c78aea14p-149}, {0x1.259f98b4358adp-103, 0x1.eaf8c39dd9bc5p-157},
+};
+static const EllipticDD COS_COEF[14] = {
+    {-0x1.0000000000000p-1, 0x0.0p+0}, {0x1.5555555555555p-5, 0x1.5555555555555p-59},
+    {-0x1.6c16c16c16c17p-10, 0x1.f49f49f49f49fp-65}, {0x1.a01a01a01a01ap-16, 0x1.a01a01a01a01ap-76},
     {-0x1.27e4fb7789f5cp-22, -0x1.cbbc05b4fa99ap-76}, {0x1.1eed8eff8d898p-29, -0x1.2aec959e14c06p-83},
-    {-0x1.93974a8c07c9dp-37, -0x1.05d6f8a2efd1fp-92}};
-static const double COS_TAIL[7] = {0x1.ae7f3e733b81fp-45, -0x1.6827863b97d97p-53, 0x1.e542ba4020225p-62,
-                                   -0x1.0ce396db7f853p-70, 0x1.f2cf01972f578p-80, -0x1.88e85fc6a4e5ap-89,
-                                   0x1.0a18a2635085dp-98};
+    {-0x1.93974a8c07c9dp-37, -0x1.05d6f8a2efd1fp-92}, {0x1.ae7f3e733b81fp-45, 0x1.1d8656b0ee8cbp-101},
+    {-0x1.6827863b97d97p-53, -0x1.eec01221a8b0bp-107}, {0x1.e542ba4020225p-62, 0x1.ea72b4afe3c2fp-120},
+    {-0x1.0ce396db7f853p-70, 0x1.aebcdbd20331cp-124}, {0x1.f2cf01972f578p-80, -0x1.9ada5fcc1ab14p-135},
+    {-0x1.88e85fc6a4e5ap-89, 0x1.71c37ebd16540p-143}, {0x1.0a18a2635085dp-98, 0x1.b9e2e28e1aa54p-153},
+};
 
 /* c + x y for double-doubles, with the sloppy sum (one renormalisation): Horner's step when
  * |x y| is well below |c| (here |x y| <= 0.31 |c|), relative error a few 2^-104. */
@@ -131,21 +133,29 @@ void elliptic_dd_sincos(EllipticDD x, EllipticDD *sin_x, EllipticDD *cos_x)
         y = elliptic_dd_add(y, elliptic_dd(-n * HALF_PI_LOLO));
     }
 
-    /* sin y = y + y y2 P(y2), cos y = 1 + y2 Q(y2), y2 = y^2 <= 0.62, P and Q by Horner:
-     * the terms of degree >= 8 in y2 (below 5.6e-16 of the leading 1/6 and 1/2) in double,
-     * the seven leading ones in double-double. The first omitted terms (y2^14 / 31!, 30!) are
-     * below 1e-35 relative. */
+    /* sin y = y + y y2 P(y2), cos y = 1 + y2 Q(y2), y2 = y^2 <= 0.62, P(y2) = sum_j
+     * SIN_COEF[j - 1] y2^(j - 1), Q likewise, j = 1..14 (the first omitted terms, y2^14 / 31!
+     * and / 30!, are below 1e-35 relative). By Horner, the terms from j = J on in double,
+     * the J - 1 leading ones in double-double. J is the least with |c_J| y2^J <= 1e-16 for
+     * both series: the double tail (relative error ~2 eps) then moves sin y by at most
+     * 1.2 y2 2 eps |c_J| y2^(J - 1) <= 2^-104 relative, and cos y (>= 0.707) likewise. At
+     * |y| = pi/4, J = 9; at 10 degrees (y = 0.087), J = 4; for |y| < 1e-8, J = 1. */
     const EllipticDD y2 = elliptic_dd_mul(y, y);
     const double z = y2.hi;
-    double tail_s = SIN_TAIL[6], tail_c = COS_TAIL[6];
-    for (int j = 5; j >= 0; --j) {
-        tail_s = SIN_TAIL[j] + z * tail_s;
-        tail_c = COS_TAIL[j] + z * tail_c;
+    int J = 1;
+    for (double power = z; J < 14 && !(fabs(SIN_COEF[J - 1].hi) * power <= 1e-16
+                                        && fabs(COS_COEF[J - 1].hi) * power <= 1e-16); ++J) {
+        power *= z;
+    }
+    double tail_s = SIN_COEF[13].hi, tail_c = COS_COEF[13].hi;
+    for (int j = 12; j >= J - 1; --j) {
+        tail_s = SIN_COEF[j].hi + z * tail_s;
+        tail_c = COS_COEF[j].hi + z * tail_c;
     }
     EllipticDD p = elliptic_dd(tail_s), q = elliptic_dd(tail_c);
-    for (int j = 6; j >= 0; --j) {
-        p = dd_mul_add(SIN_DD[j], y2, p);
-        q = dd_mul_add(COS_DD[j], y2, q);
+    for (int j = J - 2; j >= 0; --j) {
+        p = dd_mul_add(SIN_COEF[j], y2, p);
+        q = dd_mul_add(COS_COEF[j], y2, q);
     }
     const EllipticDD sin_y = elliptic_dd_add(y, elliptic_dd_mul(elliptic_dd_mul(y, y2), p));
     const EllipticDD cos_y = elliptic_dd_add(elliptic_dd(1.0), elliptic_dd_mul(y2, q));

@@ -33,6 +33,8 @@
 #define PENDULUM_ELLIPTIC_H
 
 #include <math.h>
+#include <stdint.h>
+#include <string.h>
 
 /* ---------------------------------------------------------------------------------------
  * Double-double arithmetic: a value is hi + lo with |lo| <= ulp(hi)/2 (Dekker, Numer. Math.
@@ -92,11 +94,55 @@ static inline EllipticDD elliptic_two_prod(double a, double b)
     return r;
 }
 
+/* Biased exponent field of x (0 for zero and subnormals, 0x7ff for inf and NaN). */
+static inline int elliptic_biased_exponent(double x)
+{
+    uint64_t bits;
+    memcpy(&bits, &x, sizeof bits);
+    return (int)((bits >> 52) & 0x7ff);
+}
+
+/* x 2^e, the value of ldexp(x, e): a multiplication by the power of two built from its bits
+ * (exact, or one rounding for a subnormal result, as ldexp) when 2^e is a normal double,
+ * else ldexp itself. Avoids a libm call in the set-up. */
+static inline double elliptic_ldexp(double x, int e)
+{
+    if (e >= -1022 && e <= 1023) {
+        const uint64_t bits = (uint64_t)(e + 1023) << 52;
+        double power;
+        memcpy(&power, &bits, sizeof power);
+        return x * power;
+    }
+    return ldexp(x, e);
+}
+
+/* The exponent frexp would give (x = f 2^e, 1/2 <= |f| < 1), from the bits for a normal x. */
+static inline int elliptic_frexp_exponent(double x)
+{
+    const int biased = elliptic_biased_exponent(x);
+    if (biased != 0 && biased != 0x7ff) {
+        return biased - 1022;
+    }
+    int exponent = 0;
+    (void)frexp(x, &exponent);
+    return exponent;
+}
+
 /* The leading 26 significant bits of x (truncated), so that head * n is exact for |n| < 2^27
- * and x - head is exact with at most 27 significant bits. Formed with frexp/ldexp/trunc, all
- * exact, so that no floating-point contraction can spoil it (unlike Veltkamp's split). */
+ * and x - head is exact with at most 27 significant bits. For a normal x the low 27 bits of
+ * the significand are cleared; otherwise formed with frexp/ldexp/trunc. Both are exact, so
+ * no floating-point contraction can spoil it (unlike Veltkamp's split). */
 static inline double elliptic_head26(double x)
 {
+    const int biased = elliptic_biased_exponent(x);
+    if (biased != 0 && biased != 0x7ff) {
+        uint64_t bits;
+        memcpy(&bits, &x, sizeof bits);
+        bits &= ~(((uint64_t)1 << 27) - 1);
+        double head;
+        memcpy(&head, &bits, sizeof head);
+        return head;
+    }
     int exponent;
     const double fraction = frexp(x, &exponent);
     return ldexp(trunc(ldexp(fraction, 26)), exponent - 26);

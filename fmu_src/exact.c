@@ -60,8 +60,8 @@ static EllipticDD subtract_turns(EllipticDD x, double j)
 /* x * 2^exponent for a double-double (exact unless it overflows or underflows). */
 static EllipticDD dd_ldexp(EllipticDD x, int exponent)
 {
-    x.hi = ldexp(x.hi, exponent);
-    x.lo = ldexp(x.lo, exponent);
+    x.hi = elliptic_ldexp(x.hi, exponent);
+    x.lo = elliptic_ldexp(x.lo, exponent);
     return x;
 }
 
@@ -282,7 +282,207 @@ static int m1_near_separatrix(double theta0, double turns, double half_speed, El
     return 0;
 }
 
-/* The solution for w0 in double-double (w0.hi > 0 finite); see pendulum_exact_init. */
+/* What the set-up knows about the initial state once the angle is reduced and the speeds are
+ * scaled (the named steps of exact_init_dd below pass it along). */
+typedef struct {
+    double turns;         /* theta0 = 2 pi turns + th */
+    EllipticDD th;        /* th in (-pi, pi] */
+    EllipticDD s, c;      /* sin(th/2), cos(th/2) >= 0 */
+    int exponent;         /* common power of two of the rates: w_n = w0 2^-exponent, ... */
+    EllipticDD w_n;       /* w0 2^-exponent */
+    double hs_n;          /* |omega0|/2 2^-exponent, exact */
+    EllipticDD c_w;       /* c w_n */
+    EllipticDD gap;       /* c w_n - hs_n = w_n (c - |q|): the sign of m1 */
+    EllipticDD m1_fine;   /* m1 in triple-double precision (when fine) */
+    int fine;             /* 1 when m1_fine holds m1 (within 2^-30 of the separatrix speed) */
+} InitialState;
+
+/* Step 1. theta0 = 2 pi j + th, th in (-pi, pi] (double-double), and sin, cos of th/2. One
+ * subtraction of whole turns does it for |theta0| < 2^50 (j < 2^48, j 2 pi exact in three
+ * parts); beyond, the reduction with 1/(2 pi) to 1248 bits (Payne-Hanek, above) for every
+ * finite double. For |theta0| <= 3.2 nothing is subtracted and th/2 is exact. */
+static void reduce_initial_angle(double theta0, InitialState *st)
+{
+    double turns = 0.0;
+    EllipticDD th = elliptic_dd(theta0);
+    if (fabs(theta0) >= 0x1p50) {
+        th = reduce_large_angle(theta0, &turns);
+    }
+    for (int round = 0; round < 8 && !(fabs(th.hi) <= 3.2); ++round) {
+        const double j = nearbyint(th.hi / (2.0 * PI_HI));
+        th = subtract_turns(th, j);
+        turns += j;
+    }
+    EllipticDD half = {0.5 * th.hi, 0.5 * th.lo};   /* exact */
+    EllipticDD s, c;
+    elliptic_dd_sincos(half, &s, &c);
+    if (c.hi < 0.0 || (c.hi == 0.0 && th.hi < 0.0)) {
+        /* th just outside (-pi, pi]: move it by one turn; th/2 moves by pi, s and c change sign. */
+        double shift = th.hi > 0.0 ? 1.0 : -1.0;
+        turns += shift;
+        th = subtract_turns(th, shift);
+        s = elliptic_dd_neg(s);
+        c = elliptic_dd_neg(c);
+    }
+    st->turns = turns;
+    st->th = th;
+    st->s = s;
+    st->c = c;
+}
+
+/* Step 2. The side of the separatrix. Only the ratio q = |omega0| / (2 w0) enters m and m1,
+ * so w0 and |omega0|/2 are scaled by a common power of two that puts the larger in [1/2, 1):
+ * the double-double products below then stay far from overflow (Dekker's split needs
+ * |x| < 2^996) for any inputs. Rates come back to seconds by the inverse power of two.
+ * The sign of m1 = cos^2(th/2) - q^2 is that of w0 c - |omega0|/2; within 2^-30 of the
+ * separatrix speed m1 itself is formed in triple-double (above): its sign decides the
+ * regime and its digits the period. */
+static void locate_separatrix(double theta0, double omega0, EllipticDD w0, double g, double L,
+                              InitialState *st)
+{
+    const double half_speed = 0.5 * fabs(omega0);          /* |omega0| / 2, exact */
+    const int exponent = elliptic_frexp_exponent(fmax(w0.hi, half_speed));
+    st->exponent = exponent;
+    st->w_n = dd_ldexp(w0, -exponent);
+    st->hs_n = elliptic_ldexp(half_speed, -exponent);
+    st->c_w = elliptic_dd_mul(st->c, st->w_n);
+    st->gap = dd_sub(st->c_w, elliptic_dd(st->hs_n));
+    st->m1_fine = elliptic_dd(0.0);
+    st->fine = 0;
+    if (fabs(st->gap.hi) < 0x1p-30 * st->hs_n) {
+        const EllipticDD num = g > 0.0 ? elliptic_dd(g) : elliptic_two_prod(w0.hi, w0.hi);
+        st->fine = m1_near_separatrix(theta0, st->turns, half_speed, num, g > 0.0 ? L : 1.0,
+                                      &st->m1_fine) == 0;
+    }
+}
+
+/* Step 3a. Libration (m1 > 0): w_n >= 1/2 here, q = |omega0| / (2 w0) <= c <= 1.
+ * Returns 0, 1 when m1 underflowed (the caller treats it as the separatrix), -1 on failure.
+ * *rate_n is the rate of u scaled by 2^-exponent. */
+static int init_libration(PendulumExact *e, double omega0, EllipticDD w0, const InitialState *st,
+                          EllipticDD *rate_n)
+{
+    const EllipticDD s = st->s, c = st->c;
+    const int from_rest = omega0 == 0.0;
+    /* From rest q = 0 and m1 = c^2; else m1 = (c - q)(c + q) = (gap / w_n)(c + q). */
+    const EllipticDD q = from_rest ? elliptic_dd(0.0) : elliptic_dd_div(elliptic_dd(st->hs_n), st->w_n);
+    EllipticDD m1;
+    if (st->fine) {
+        m1 = st->m1_fine;
+    } else if (from_rest) {
+        m1 = elliptic_dd_mul(c, c);
+    } else {
+        m1 = elliptic_dd_mul(elliptic_dd_div(st->gap, st->w_n), elliptic_dd_add(c, q));
+    }
+    if (!(m1.hi > 0.0)) {
+        return 1;
+    }
+    e->regime = PENDULUM_LIBRATION;
+    const double k = hypot(s.hi, q.hi);        /* sqrt(m) = sqrt(s^2 + q^2), no underflow */
+    const double m = fmin(k * k, 1.0);
+    if (elliptic_param_init(&e->ell, m, m1.hi, m1.lo) != 0) {
+        return -1;
+    }
+    e->m = m;
+    e->m1 = m1.hi;
+    e->k = k;
+    e->kc = e->ell.kc;
+    e->K_hi = e->ell.K_hi;
+    e->K_lo = e->ell.K_lo;
+    e->scale = w0.hi;
+    e->scale_lo = w0.lo;
+    *rate_n = st->w_n;
+    e->omega_half = k * w0.hi;
+    e->sqrt_k1 = k / (1.0 + e->ell.kc);   /* sqrt(k_1) = k / (1 + k'), no underflow of k^2 */
+    if (k == 0.0) {
+        e->u0 = 0.0;                          /* at rest at the bottom: theta = 0 */
+    } else if (from_rest) {
+        e->u0 = s.hi < 0.0 ? -e->K_hi : e->K_hi;   /* released at a turning point: u0 = +-K */
+    } else {
+        const double s_k = fabs(s.hi) / k, q_k = q.hi / k;
+        /* F(|phi0| | m) = (|s|/k) R_F((q/k)^2, c^2, 1) (DLMF 19.25.5, scaled). */
+        const double f = s_k * elliptic_RF(q_k * q_k, c.hi * c.hi, 1.0);
+        /* omega0 < 0: |phi0| = pi - atan2(|s|, |q|), F = 2K - F(pi - |phi0|). */
+        const double base = omega0 >= 0.0 ? f : (2.0 * e->K_hi - f) + 2.0 * e->K_lo;
+        e->u0 = s.hi < 0.0 ? -base : base;
+    }
+    return 0;
+}
+
+/* Step 3b. Rotation (m1 < 0, omega0 != 0). Ratios to |omega0|/2: rho = s/|q|, gamma = c/|q| < 1
+ * (hs_n > c w_n, and c >= ~1e-33, so hs_n is not tiny). */
+static int init_rotation(PendulumExact *e, double omega0, const InitialState *st, EllipticDD *rate_n)
+{
+    const EllipticDD s = st->s, c = st->c, w_n = st->w_n;
+    const double hs_n = st->hs_n;
+    e->regime = PENDULUM_ROTATION;
+    e->direction = omega0 > 0.0 ? 1.0 : -1.0;
+    const EllipticDD hs = elliptic_dd(hs_n);
+    EllipticDD rho = elliptic_dd_div(elliptic_dd_mul(s, w_n), hs);
+    EllipticDD one_plus_rho2 = elliptic_dd_add(elliptic_dd(1.0), elliptic_dd_mul(rho, rho));
+    EllipticDD mu1;
+    if (st->fine) {
+        /* mu1 = -m1 mu, mu = (w_n / hs)^2 / (1 + rho^2) */
+        const EllipticDD w_hs_dd = elliptic_dd_div(w_n, hs);
+        mu1 = elliptic_dd_mul(elliptic_dd_neg(st->m1_fine),
+                              elliptic_dd_div(elliptic_dd_mul(w_hs_dd, w_hs_dd), one_plus_rho2));
+    } else {
+        /* mu1 = -m1/m = (q^2 - c^2)/(q^2 + s^2) = (1 - gamma)(1 + gamma)/(1 + rho^2). */
+        const EllipticDD one_minus_gamma = elliptic_dd_div(elliptic_dd_neg(st->gap), hs);  /* (|q| - c)/|q| */
+        const EllipticDD gamma = elliptic_dd_div(st->c_w, hs);
+        mu1 = elliptic_dd_div(elliptic_dd_mul(one_minus_gamma, elliptic_dd_add(elliptic_dd(1.0), gamma)),
+                              one_plus_rho2);
+    }
+    /* mu = 1/m = 1/(q^2 (1 + rho^2)). */
+    const double w_hs = w_n.hi / hs_n;
+    const double mu = fmin(w_hs * w_hs / one_plus_rho2.hi, 1.0);
+    if (elliptic_param_init(&e->ell, mu, mu1.hi, mu1.lo) != 0) {
+        return -1;
+    }
+    /* sqrt(m) w0 = |q| w0 sqrt(1 + rho^2) = (|omega0|/2) sqrt(1 + rho^2). */
+    *rate_n = elliptic_dd_mul(hs, elliptic_dd_sqrt(one_plus_rho2));
+    const EllipticDD rate = dd_ldexp(*rate_n, st->exponent);
+    e->m = 1.0 / mu;
+    e->m1 = -mu1.hi / mu;
+    e->k = e->ell.k;
+    e->kc = e->ell.kc;
+    e->K_hi = e->ell.K_hi;
+    e->K_lo = e->ell.K_lo;
+    e->scale = rate.hi;
+    e->scale_lo = rate.lo;
+    e->omega_half = rate.hi;
+    /* v0 = F(th/2 | mu) for the mirrored motion (direction * th), DLMF 19.25.5. */
+    e->u0 = e->direction * s.hi * elliptic_RF(c.hi * c.hi, 1.0 / one_plus_rho2.hi, 1.0);
+    return 0;
+}
+
+/* Step 4. Rate and initial phase in quarter periods: rho = scale / K, x0 = u0 / K; the period
+ * 4K / w0 (libration) or 2K / rate (one revolution, rotation), all in double-double. A
+ * libration released from rest starts at a turning point, x0 = +-1 exactly. */
+static void set_quarter_rates(PendulumExact *e, EllipticDD rate_n, int exponent, int from_rest)
+{
+    const EllipticDD K = {e->K_hi, e->K_lo};
+    const EllipticDD rho = dd_ldexp(elliptic_dd_div(rate_n, K), exponent);
+    EllipticDD x0;
+    if (from_rest && e->regime == PENDULUM_LIBRATION && e->u0 != 0.0) {
+        x0 = elliptic_dd(e->u0 < 0.0 ? -1.0 : 1.0);
+    } else {
+        x0 = elliptic_dd_div(elliptic_dd(e->u0), K);
+    }
+    e->rho_hi = rho.hi;
+    e->rho_lo = rho.lo;
+    e->rho_head = elliptic_head26(rho.hi);
+    e->rho_tail = rho.hi - e->rho_head;
+    e->x0_hi = x0.hi;
+    e->x0_lo = x0.lo;
+    const double quarters_per_period = e->regime == PENDULUM_LIBRATION ? 4.0 : 2.0;
+    const EllipticDD quarters_K = {quarters_per_period * K.hi, quarters_per_period * K.lo};  /* exact */
+    e->period = elliptic_ldexp(elliptic_dd_div(quarters_K, rate_n).hi, -exponent);
+}
+
+/* The solution for w0 in double-double (w0.hi > 0 finite); see pendulum_exact_init. The
+ * steps: reduce the angle (1), find the side of the separatrix (2), the constants of the
+ * regime (3a, 3b or init_separatrix), the rates in quarter periods (4). */
 static int exact_init_dd(PendulumExact *ex, double theta0, double omega0, EllipticDD w0, double t0,
                          double g, double L)
 {
@@ -297,150 +497,27 @@ static int exact_init_dd(PendulumExact *ex, double theta0, double omega0, Ellipt
     e.omega0 = omega0;
     e.direction = 1.0;
 
-    /* theta0 = 2 pi j + th, th in (-pi, pi] (double-double). One subtraction of whole turns
-     * does it for |theta0| < 2^50 (j < 2^48, j 2 pi exact in three parts); beyond, the
-     * reduction with 1/(2 pi) to 1248 bits (Payne-Hanek, above) for every finite double. */
-    double turns = 0.0;
-    EllipticDD th = elliptic_dd(theta0);
-    if (fabs(theta0) >= 0x1p50) {
-        th = reduce_large_angle(theta0, &turns);
-    }
-    for (int round = 0; round < 8 && !(fabs(th.hi) <= 3.2); ++round) {
-        const double j = nearbyint(th.hi / (2.0 * PI_HI));
-        th = subtract_turns(th, j);
-        turns += j;
-    }
-    EllipticDD half = elliptic_dd_mul(th, elliptic_dd(0.5));
-    EllipticDD s, c;
-    elliptic_dd_sincos(half, &s, &c);
-    if (c.hi < 0.0 || (c.hi == 0.0 && th.hi < 0.0)) {
-        /* th just outside (-pi, pi]: move it by one turn; th/2 moves by pi, s and c change sign. */
-        double shift = th.hi > 0.0 ? 1.0 : -1.0;
-        turns += shift;
-        th = subtract_turns(th, shift);
-        s = elliptic_dd_neg(s);
-        c = elliptic_dd_neg(c);
-    }
-    e.theta_turns = turns;
-    e.theta_reduced = th.hi;
+    InitialState st;
+    reduce_initial_angle(theta0, &st);
+    e.theta_turns = st.turns;
+    e.theta_reduced = st.th.hi;
+    locate_separatrix(theta0, omega0, w0, g, L, &st);
+    const double side = st.fine ? st.m1_fine.hi : st.gap.hi;   /* the sign of m1 */
 
-    /* Only the ratio q = |omega0| / (2 w0) enters m and m1, so w0 and |omega0|/2 are scaled
-     * by a common power of two that puts the larger in [1/2, 1): the double-double products
-     * below then stay far from overflow (Dekker's split needs |x| < 2^996) for any inputs.
-     * Rates come back to seconds by the inverse power of two. */
-    const double half_speed = 0.5 * fabs(omega0);          /* |omega0| / 2, exact */
-    int exponent;
-    (void)frexp(fmax(w0.hi, half_speed), &exponent);
-    const EllipticDD w_n = dd_ldexp(w0, -exponent);
-    const double hs_n = ldexp(half_speed, -exponent);
-    /* Sign of m1 = cos^2(th/2) - q^2 is that of w0 c - |omega0|/2, formed exactly enough. */
-    const EllipticDD c_w = elliptic_dd_mul(c, w_n);
-    const EllipticDD gap = dd_sub(c_w, elliptic_dd(hs_n));         /* = w_n (c - |q|) */
-    EllipticDD rate_n;                                     /* rate of u, scaled by 2^-exponent */
-    /* Within 2^-30 of the separatrix speed, m1 itself in triple-double (above): its sign
-     * decides the regime and its digits the period. */
-    EllipticDD m1_fine = elliptic_dd(0.0);
-    int fine = 0;
-    if (fabs(gap.hi) < 0x1p-30 * hs_n) {
-        const EllipticDD num = g > 0.0 ? elliptic_dd(g) : elliptic_two_prod(w0.hi, w0.hi);
-        fine = m1_near_separatrix(theta0, turns, half_speed, num, g > 0.0 ? L : 1.0, &m1_fine) == 0;
-    }
-    const double side = fine ? m1_fine.hi : gap.hi;        /* the sign of m1 */
-
+    EllipticDD rate_n = elliptic_dd(0.0);
+    int status = 1;                        /* 1: the separatrix */
     if (side > 0.0) {
-        /* Libration: w_n >= 1/2 here, q = |omega0| / (2 w0) <= c <= 1. */
-        EllipticDD q = elliptic_dd_div(elliptic_dd(hs_n), w_n);
-        EllipticDD m1 = fine ? m1_fine : elliptic_dd_mul(elliptic_dd_div(gap, w_n), elliptic_dd_add(c, q));
-        if (m1.hi > 0.0) {
-            e.regime = PENDULUM_LIBRATION;
-            double k = hypot(s.hi, q.hi);        /* sqrt(m) = sqrt(s^2 + q^2), no underflow */
-            double m = fmin(k * k, 1.0);
-            if (elliptic_param_init(&e.ell, m, m1.hi, m1.lo) != 0) {
-                return -1;
-            }
-            e.m = m;
-            e.m1 = m1.hi;
-            e.k = k;
-            e.kc = e.ell.kc;
-            e.K_hi = e.ell.K_hi;
-            e.K_lo = e.ell.K_lo;
-            e.scale = w0.hi;
-            e.scale_lo = w0.lo;
-            rate_n = w_n;
-            e.omega_half = k * w0.hi;
-            e.sqrt_k1 = k / (1.0 + e.ell.kc);   /* sqrt(k_1) = k / (1 + k'), no underflow of k^2 */
-            if (k == 0.0) {
-                e.u0 = 0.0;                          /* at rest at the bottom: theta = 0 */
-            } else {
-                double s_k = fabs(s.hi) / k, q_k = q.hi / k;
-                /* F(|phi0| | m) = (|s|/k) R_F((q/k)^2, c^2, 1) (DLMF 19.25.5, scaled). */
-                double f = s_k * elliptic_RF(q_k * q_k, c.hi * c.hi, 1.0);
-                /* omega0 < 0: |phi0| = pi - atan2(|s|, |q|), F = 2K - F(pi - |phi0|). */
-                double base = omega0 >= 0.0 ? f : (2.0 * e.K_hi - f) + 2.0 * e.K_lo;
-                e.u0 = s.hi < 0.0 ? -base : base;
-            }
-        } else {
-            init_separatrix(&e, s, c, omega0, w0);   /* m1 underflowed: treat as m1 == 0 */
-        }
+        status = init_libration(&e, omega0, w0, &st, &rate_n);
     } else if (side < 0.0) {
-        /* Rotation (omega0 != 0 here). Ratios to |omega0|/2: rho = s/|q|, gamma = c/|q| < 1
-         * (hs_n > c w_n, and c >= ~1e-33, so hs_n is not tiny). */
-        e.regime = PENDULUM_ROTATION;
-        e.direction = omega0 > 0.0 ? 1.0 : -1.0;
-        const EllipticDD hs = elliptic_dd(hs_n);
-        EllipticDD rho = elliptic_dd_div(elliptic_dd_mul(s, w_n), hs);
-        EllipticDD one_plus_rho2 = elliptic_dd_add(elliptic_dd(1.0), elliptic_dd_mul(rho, rho));
-        EllipticDD one_minus_gamma = elliptic_dd_div(elliptic_dd_neg(gap), hs);  /* (|q| - c)/|q| */
-        EllipticDD gamma = elliptic_dd_div(c_w, hs);
-        /* mu1 = -m1/m = (q^2 - c^2)/(q^2 + s^2) = (1 - gamma)(1 + gamma)/(1 + rho^2). */
-        EllipticDD mu1 = elliptic_dd_div(
-            elliptic_dd_mul(one_minus_gamma, elliptic_dd_add(elliptic_dd(1.0), gamma)), one_plus_rho2);
-        if (fine) {
-            /* mu1 = -m1 mu, mu = (w_n / hs)^2 / (1 + rho^2) */
-            const EllipticDD w_hs_dd = elliptic_dd_div(w_n, hs);
-            mu1 = elliptic_dd_mul(elliptic_dd_neg(m1_fine),
-                                  elliptic_dd_div(elliptic_dd_mul(w_hs_dd, w_hs_dd), one_plus_rho2));
-        }
-        /* mu = 1/m = 1/(q^2 (1 + rho^2)). */
-        double w_hs = w_n.hi / hs_n;
-        double mu = fmin(w_hs * w_hs / one_plus_rho2.hi, 1.0);
-        if (elliptic_param_init(&e.ell, mu, mu1.hi, mu1.lo) != 0) {
-            return -1;
-        }
-        /* sqrt(m) w0 = |q| w0 sqrt(1 + rho^2) = (|omega0|/2) sqrt(1 + rho^2). */
-        rate_n = elliptic_dd_mul(hs, elliptic_dd_sqrt(one_plus_rho2));
-        EllipticDD rate = dd_ldexp(rate_n, exponent);
-        e.m = 1.0 / mu;
-        e.m1 = -mu1.hi / mu;
-        e.k = e.ell.k;
-        e.kc = e.ell.kc;
-        e.K_hi = e.ell.K_hi;
-        e.K_lo = e.ell.K_lo;
-        e.scale = rate.hi;
-        e.scale_lo = rate.lo;
-        e.omega_half = rate.hi;
-        /* v0 = F(th/2 | mu) for the mirrored motion (direction * th), DLMF 19.25.5. */
-        e.u0 = e.direction * s.hi * elliptic_RF(c.hi * c.hi, 1.0 / one_plus_rho2.hi, 1.0);
-    } else {
-        init_separatrix(&e, s, c, omega0, w0);
+        status = init_rotation(&e, omega0, &st, &rate_n);
     }
-    if (e.regime != PENDULUM_SEPARATRIX) {
-        /* Rate and initial phase in quarter periods: rho = scale / K, x0 = u0 / K; the period
-         * 4K / w0 (libration) or 2K / rate (one revolution, rotation), all in double-double. */
-        EllipticDD K;
-        K.hi = e.K_hi;
-        K.lo = e.K_lo;
-        EllipticDD rho = dd_ldexp(elliptic_dd_div(rate_n, K), exponent);
-        EllipticDD x0 = elliptic_dd_div(elliptic_dd(e.u0), K);
-        e.rho_hi = rho.hi;
-        e.rho_lo = rho.lo;
-        e.rho_head = elliptic_head26(rho.hi);
-        e.rho_tail = rho.hi - e.rho_head;
-        e.x0_hi = x0.hi;
-        e.x0_lo = x0.lo;
-        const double quarters_per_period = e.regime == PENDULUM_LIBRATION ? 4.0 : 2.0;
-        e.period = ldexp(elliptic_dd_div(elliptic_dd_mul(K, elliptic_dd(quarters_per_period)), rate_n).hi,
-                         -exponent);
+    if (status < 0) {
+        return -1;
+    }
+    if (status == 1) {
+        init_separatrix(&e, st.s, st.c, omega0, w0);   /* also when m1 underflowed */
+    } else {
+        set_quarter_rates(&e, rate_n, st.exponent, omega0 == 0.0);
     }
     memcpy(ex, &e, sizeof e); /* bytewise, padding included (see fmi2_state.c) */
     return 0;
@@ -465,13 +542,13 @@ int pendulum_exact_init_gl(PendulumExact *ex, double theta0, double omega0, doub
      * the one of those doubles, not of fl(sqrt(fl(g / L))) (whose two roundings moved states
      * within ~1e-16 of the separatrix to the other side). Scaled by powers of two so that
      * neither the quotient nor Dekker's split overflows or underflows. */
-    int eg, eL;
-    const double gm = frexp(g, &eg), Lm = frexp(L, &eL);
+    const int eg = elliptic_frexp_exponent(g), eL = elliptic_frexp_exponent(L);
+    const double gm = elliptic_ldexp(g, -eg), Lm = elliptic_ldexp(L, -eL);   /* frexp's fractions */
     int shift = eg - eL;                               /* g / L = (gm / Lm) 2^shift */
     if (shift & 1) {
         shift -= 1;                                    /* even, so that the root halves it */
     }
-    const EllipticDD ratio = elliptic_dd_div(elliptic_dd(ldexp(gm, eg - eL - shift)), elliptic_dd(Lm));
+    const EllipticDD ratio = elliptic_dd_div(elliptic_dd(elliptic_ldexp(gm, eg - eL - shift)), elliptic_dd(Lm));
     EllipticDD w0 = dd_ldexp(elliptic_dd_sqrt(ratio), shift / 2);
     if (!(w0.hi > 0.0) || !isfinite(w0.hi)) {
         return -1;                                     /* g / L overflows or underflows */
