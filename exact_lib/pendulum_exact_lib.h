@@ -12,13 +12,6 @@
 #define PENDULUM_EXACT_API __declspec(dllexport)
 #else
 #define PENDULUM_EXACT_API __attribute__((visibility("default")))
-/* The same for one initial state and parameters over n times: theta[i], omega[i] at t[i].
- * Returns 0, or n when the inputs are refused (all outputs NaN then); a non-finite t[i]
- * gives NaN at i and counts one, as does a t[i] too far from 0 to resolve the phase
- * (pendulum_exact_resolvable). */
-PENDULUM_EXACT_API size_t pendulum_exact_times(double theta0, double omega0, double L, double g, size_t n,
-                                               const double *t, double *theta, double *omega);
-
 #endif
 
 /* Version of this interface; a caller checks it before trusting the signature below. */

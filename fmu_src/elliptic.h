@@ -279,8 +279,8 @@ typedef struct {
  *   S' = (1 + kk) S D,  C' = C E,  E' = (1 - kk) D^2 + kk C^2,  D' = D^2 + kk S^2,
  * products and sums of positive numbers only (for 0 <= v <= K/2). Renormalised when D
  * grows past ELLIPTIC_HOMOGENEOUS_RESCALE. */
-static inline EllipticHomogeneous elliptic_landen_step(const EllipticParam *p, int index,
-                                                       EllipticHomogeneous h)
+static inline EllipticHomogeneous elliptic_landen_step_plain(const EllipticParam *p, int index,
+                                                             EllipticHomogeneous h)
 {
     const double kk = p->landen_k[index];
     const double d2 = h.D * h.D;
@@ -289,6 +289,19 @@ static inline EllipticHomogeneous elliptic_landen_step(const EllipticParam *p, i
     up.C = h.C * h.E;
     up.E = p->landen_1mk[index] * d2 + kk * h.C * h.C;
     up.D = d2 + kk * h.S * h.S;
+    return up;
+}
+
+/* The largest number of levels for which no step can need the renormalisation: from the
+ * bottom (D = 1, |S| <= D) each step gives D' = D^2 + k S^2 <= 2.01 D^2, so after n steps
+ * D <= 2.01^(2^n - 1) < 2^130 < ELLIPTIC_HOMOGENEOUS_RESCALE for n <= 7 (the lock-step
+ * evaluation of several points relies on it). */
+#define ELLIPTIC_LEVELS_WITHOUT_RESCALE 7
+
+static inline EllipticHomogeneous elliptic_landen_step(const EllipticParam *p, int index,
+                                                       EllipticHomogeneous h)
+{
+    EllipticHomogeneous up = elliptic_landen_step_plain(p, index, h);
     if (up.D > ELLIPTIC_HOMOGENEOUS_RESCALE) {
         const double inv = 1.0 / up.D;
         up.S *= inv;

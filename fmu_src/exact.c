@@ -38,6 +38,7 @@
 
 #include <math.h>
 #include <stddef.h>
+#include <stdint.h>
 #include <string.h>
 
 #define PI_HI   ELLIPTIC_PI_HI
@@ -705,6 +706,131 @@ void pendulum_exact_eval(const PendulumExact *ex, double t, double *theta, doubl
         *theta = ex->theta0 + add_half_turns(winding, angle - ex->theta_reduced);
     }
     *omega = om;
+}
+
+/* ---------------------------------------------------------------------------------------
+ * Several points in lock-step. pendulum_exact_eval spends most of its time waiting on
+ * divisions and on the chain of Landen steps of one point; EXACT_LANES points of the same
+ * libration run here stage by stage, each stage a short loop over the lanes (independent
+ * chains the processor overlaps, and loops the compiler may vectorise at the platform's
+ * baseline). Every lane performs the same operations in the same order as
+ * pendulum_exact_eval (the shared kernels of elliptic.h), so the results are bit for bit
+ * the scalar ones. A block with any point off the common path (t == t0, a phase beyond
+ * 2^50 quarter periods or not finite, a bottom argument past the series) and every motion
+ * other than a libration with at most ELLIPTIC_LEVELS_WITHOUT_RESCALE Landen levels and
+ * |theta_turns| < 2^50 go through pendulum_exact_eval.
+ * --------------------------------------------------------------------------------------- */
+#define EXACT_LANES 4
+
+/* n mod 4 for an integer-valued double |n| < 2^51, from the bits of n + 1.5 2^52 (whose last
+ * significand bits are those of 2^51 + n), as elliptic_quarter_of gives it. */
+static inline int quarter_of_small(double n)
+{
+    const double shifted = n + 0x1.8p52;
+    uint64_t bits;
+    memcpy(&bits, &shifted, sizeof bits);
+    return (int)(bits & 3);
+}
+
+/* 1 when the block of EXACT_LANES points went through, 0 when it needs the scalar path
+ * (nothing written then). */
+static int eval_libration_lanes(const PendulumExact *ex, const double *t, double *theta, double *omega)
+{
+    const EllipticParam *p = &ex->ell;
+    double tau_hi[EXACT_LANES], tau_lo[EXACT_LANES], x_hi[EXACT_LANES];
+    int common = 1;
+    for (int l = 0; l < EXACT_LANES; ++l) {
+        const EllipticDD tau = elliptic_two_sum(t[l], -ex->t0);
+        tau_hi[l] = tau.hi;
+        tau_lo[l] = tau.lo;
+        x_hi[l] = ex->rho_hi * tau.hi;
+        /* false for t == t0 and for a NaN or infinite phase */
+        common &= (t[l] != ex->t0) & (fabs(x_hi[l]) < 0x1p50);
+    }
+    if (!common) {
+        return 0;
+    }
+    /* phase_quarters, the branch below 2^50 quarter periods */
+    double v[EXACT_LANES], z[EXACT_LANES];
+    int quarter[EXACT_LANES];
+    int in_series = 1;
+    for (int l = 0; l < EXACT_LANES; ++l) {
+#ifdef FP_FAST_FMA
+        const double x_lo = fma(ex->rho_hi, tau_hi[l], -x_hi[l]);
+#else
+        const double tau_split = 134217729.0 * tau_hi[l];
+        const double tau_head = tau_split - (tau_split - tau_hi[l]), tau_tail = tau_hi[l] - tau_head;
+        const double x_lo = ((ex->rho_head * tau_head - x_hi[l]) + ex->rho_head * tau_tail
+                             + ex->rho_tail * tau_head) + ex->rho_tail * tau_tail;
+#endif
+        /* elliptic_nearest_integer: |x_hi + x0_hi| < 2^50 + 2 here */
+        const double quarters = (x_hi[l] + ex->x0_hi + 0x1.8p52) - 0x1.8p52;
+        const double fraction = ((x_hi[l] - quarters) + ex->x0_hi)
+                                + (x_lo + (ex->rho_hi * tau_lo[l] + ex->rho_lo * tau_hi[l]) + ex->x0_lo);
+        quarter[l] = quarter_of_small(quarters);
+        v[l] = fraction * ex->K_hi;
+        z[l] = fabs(v[l]) * p->bottom_scale;
+        in_series &= z[l] <= ELLIPTIC_SERIES_Z_MAX;
+    }
+    if (!in_series) {
+        return 0;
+    }
+    /* elliptic_sncndn_homogeneous_pair: the bottom level, the steps up to level 1, level 0 */
+    EllipticHomogeneous h1[EXACT_LANES], h0[EXACT_LANES];
+    for (int l = 0; l < EXACT_LANES; ++l) {
+        double sz, cz;
+        elliptic_sincos_series(z[l], &sz, &cz);
+        const double w = 0.25 * p->bottom_m * (z[l] - sz * cz);
+        h1[l].S = sz - w * cz;
+        h1[l].C = cz + w * sz;
+        h1[l].E = 1.0 - 0.5 * p->bottom_m * sz * sz;
+        h1[l].D = 1.0;
+    }
+    for (int i = p->levels - 1; i >= 1; --i) {
+        for (int l = 0; l < EXACT_LANES; ++l) {
+            h1[l] = elliptic_landen_step_plain(p, i, h1[l]);
+        }
+    }
+    for (int l = 0; l < EXACT_LANES; ++l) {
+        h0[l] = elliptic_landen_step_plain(p, 0, h1[l]);
+        if (v[l] < 0.0) {
+            h1[l].S = -h1[l].S;
+            h0[l].S = -h0[l].S;
+        }
+    }
+    /* the quarter's formulas of pendulum_exact_eval */
+    const EllipticDD half_turns = elliptic_dd_add(elliptic_dd(2.0 * ex->theta_turns), elliptic_dd(0.0));
+    const int whole = half_turns.hi == 0.0 && half_turns.lo == 0.0;
+    const EllipticDD turn = elliptic_two_prod(half_turns.hi, PI_HI);
+    const double turn_lo = half_turns.hi * PI_LO;
+    for (int l = 0; l < EXACT_LANES; ++l) {
+        const double odd = (double)(quarter[l] & 1), even = 1.0 - odd;
+        const double sign = 1.0 - (double)(quarter[l] & 2);
+        const double y1 = even * h1[l].S + odd * h1[l].C, x1 = even * h1[l].D + odd * h1[l].E;
+        const double angle = 4.0 * elliptic_atan_unit(sign * ex->sqrt_k1 * y1, x1);
+        const double cn_num = even * h0[l].C - odd * (ex->kc * h0[l].S), den = even * h0[l].D + odd * h0[l].E;
+        omega[l] = 2.0 * (sign * ex->omega_half * (cn_num / den));
+        theta[l] = whole ? angle : turn.hi + (turn.lo + (turn_lo + (half_turns.lo * PI_HI + angle)));
+    }
+    return 1;
+}
+
+void pendulum_exact_eval_many(const PendulumExact *ex, size_t n, const double *t, double *theta, double *omega)
+{
+    size_t i = 0;
+    if (ex->regime == PENDULUM_LIBRATION && ex->ell.levels <= ELLIPTIC_LEVELS_WITHOUT_RESCALE
+        && fabs(ex->theta_turns) < 0x1p50) {
+        for (; i + EXACT_LANES <= n; i += EXACT_LANES) {
+            if (!eval_libration_lanes(ex, t + i, theta + i, omega + i)) {
+                for (size_t j = i; j < i + EXACT_LANES; ++j) {
+                    pendulum_exact_eval(ex, t[j], &theta[j], &omega[j]);
+                }
+            }
+        }
+    }
+    for (; i < n; ++i) {
+        pendulum_exact_eval(ex, t[i], &theta[i], &omega[i]);
+    }
 }
 
 const char *pendulum_exact_qualitative_miss(const PendulumExact *ex, double theta, double omega)
