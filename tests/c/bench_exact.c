@@ -19,7 +19,12 @@
  *     batch_best=... batch_median=... gsl_best=... gsl_median=... init_best=... init_median=...
  *     gsl_over_eval=... eval_over_batch=... instructions: see docs/speed-exact.md
  * (gsl_* are "nan" without GSL). ns_per_eval is the best eval time (the field older parsers
- * read). The checksum keeps the compiler from dropping the work. */
+ * read). The checksum keeps the compiler from dropping the work.
+ *
+ * bench_exact --count KIND N amplitude_deg runs one kind once over N points and prints
+ * nothing else but its checksum: for counting instructions per point with valgrind, as the
+ * difference of two runs (docs/speed-exact.md):
+ *   valgrind --tool=callgrind --callgrind-out-file=/dev/null bench_exact --count init 20000 90 */
 #include "exact.h"
 
 #include <math.h>
@@ -126,8 +131,53 @@ static double time_kind(int kind, Case *c)
     return 1e9 * elapsed / (double)n;
 }
 
+/* --count KIND N amplitude_deg */
+static int count_one(int argc, char **argv)
+{
+    if (argc != 5) {
+        fprintf(stderr, "bench_exact: usage: bench_exact --count eval|batch|gsl|init N amplitude_deg\n");
+        return 2;
+    }
+    int kind = -1;
+    for (int k = 0; k < KINDS; ++k) {
+        kind = strcmp(argv[2], KIND_NAMES[k]) == 0 ? k : kind;
+    }
+    Case c;
+    c.amplitude_deg = strtod(argv[4], NULL);
+    c.theta0 = c.amplitude_deg * (3.14159265358979323846 / 180.0);
+    c.n = strtol(argv[3], NULL, 10);
+    c.checksum = 0.0;
+    if (kind < 0 || c.n <= 0 || pendulum_exact_init(&c.ex, c.theta0, 0.0, 1.0, 0.0) != 0) {
+        fprintf(stderr, "bench_exact: bad --count arguments\n");
+        return 2;
+    }
+    double *times = malloc((size_t)c.n * sizeof *times);
+    c.theta = malloc((size_t)c.n * sizeof *c.theta);
+    c.omega = malloc((size_t)c.n * sizeof *c.omega);
+    if (times == NULL || c.theta == NULL || c.omega == NULL) {
+        fprintf(stderr, "bench_exact: out of memory\n");
+        return 2;
+    }
+    unsigned long long rng = 0x9E3779B97F4A7C15ULL;
+    const double horizon = 50.0 * pendulum_exact_period(&c.ex);
+    for (long i = 0; i < c.n; ++i) {
+        times[i] = horizon * next_uniform(&rng);
+    }
+    c.times = times;
+    (void)time_kind(kind, &c);
+    printf("bench_exact --count %s n=%ld amplitude_deg=%.10g checksum=%.17g\n", KIND_NAMES[kind], c.n,
+           c.amplitude_deg, c.checksum);
+    free(times);
+    free(c.theta);
+    free(c.omega);
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
+    if (argc > 1 && strcmp(argv[1], "--count") == 0) {
+        return count_one(argc, argv);
+    }
     const long n = argc > 1 ? strtol(argv[1], NULL, 10) : 200000L;
     static const double default_amplitudes[] = {10.0, 90.0, 170.0, 179.9999};
     const int n_amp = argc > 2 ? argc - 2 : (int)(sizeof default_amplitudes / sizeof default_amplitudes[0]);
