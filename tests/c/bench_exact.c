@@ -11,7 +11,8 @@
  *   init   a new state and one evaluation: pendulum_exact_init for N different release
  *          angles around the amplitude (theta0 (1 + 1e-9 j)), each evaluated once at one of
  *          the times.
- * The kinds are timed in interleaved rounds (ROUNDS rounds, each timing every kind and
+ * Times are processor time of the process (clock()), so that waiting for a core on a shared
+ * machine does not count. The kinds are timed in interleaved rounds (ROUNDS rounds, each timing every kind and
  * amplitude once), so that a change of machine load hits all of them alike; each figure is
  * reported as the best and the median over the rounds. One line per amplitude,
  * machine-readable (key=value, space separated, ns per point):
@@ -44,11 +45,11 @@
 enum { KIND_EVAL, KIND_BATCH, KIND_GSL, KIND_INIT };
 static const char *const KIND_NAMES[KINDS] = {"eval", "batch", "gsl", "init"};
 
+/* Processor time of this process (C clock(): CPU time on POSIX), not wall time: the machine
+ * may be shared, and time spent waiting for a core is not the code's. */
 static double now_seconds(void)
 {
-    struct timespec ts;
-    timespec_get(&ts, TIME_UTC);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+    return (double)clock() / (double)CLOCKS_PER_SEC;
 }
 
 /* xorshift64* (Vigna 2016): uniform doubles in [0, 1). */
