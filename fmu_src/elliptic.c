@@ -117,34 +117,40 @@ static EllipticDD dd_mul_add(EllipticDD c, EllipticDD x, EllipticDD y)
     return fast_two_sum(s.hi, s.lo);
 }
 
-void elliptic_dd_sincos(EllipticDD x, EllipticDD *sin_x, EllipticDD *cos_x)
-{
-    if (!isfinite(x.hi)) {
-        *sin_x = *cos_x = elliptic_dd(NAN);
-        return;
-    }
-    /* x = n pi/2 + y, |y| <= pi/4: y = x - n (pi/2)_hi - n (pi/2)_lo - n (pi/2)_lolo, the
-     * products n (pi/2)_hi and n (pi/2)_lo exact (two-product), n small. */
-    const double n = nearbyint(x.hi / HALF_PI_HI);
-    EllipticDD y = x;
-    if (n != 0.0) {
-        y = elliptic_dd_add(x, elliptic_dd_neg(elliptic_two_prod(n, HALF_PI_HI)));
-        y = elliptic_dd_add(y, elliptic_dd_neg(elliptic_two_prod(n, HALF_PI_LO)));
-        y = elliptic_dd_add(y, elliptic_dd(-n * HALF_PI_LOLO));
-    }
+#define WANT_SIN 1
+#define WANT_COS 2
 
-    /* sin y = y + y y2 P(y2), cos y = 1 + y2 Q(y2), y2 = y^2 <= 0.62, P(y2) = sum_j
-     * SIN_COEF[j - 1] y2^(j - 1), Q likewise, j = 1..14 (the first omitted terms, y2^14 / 31!
-     * and / 30!, are below 1e-35 relative). By Horner, the terms from j = J on in double,
-     * the J - 1 leading ones in double-double. J is the least with |c_J| y2^J <= 1e-16 for
-     * both series: the double tail (relative error ~2 eps) then moves sin y by at most
-     * 1.2 y2 2 eps |c_J| y2^(J - 1) <= 2^-104 relative, and cos y (>= 0.707) likewise. At
-     * |y| = pi/4, J = 9; at 10 degrees (y = 0.087), J = 4; for |y| < 1e-8, J = 1. */
+/* x = n pi/2 + y, |y| <= pi/4 (about): y = x - n (pi/2)_hi - n (pi/2)_lo - n (pi/2)_lolo, the
+ * products n (pi/2)_hi and n (pi/2)_lo exact (two-product), n small. Returns y, *n = n. */
+static EllipticDD reduce_half_pi(EllipticDD x, double *quadrants)
+{
+    const double n = nearbyint(x.hi / HALF_PI_HI);
+    *quadrants = n;
+    if (n == 0.0) {
+        return x;
+    }
+    EllipticDD y = elliptic_dd_add(x, elliptic_dd_neg(elliptic_two_prod(n, HALF_PI_HI)));
+    y = elliptic_dd_add(y, elliptic_dd_neg(elliptic_two_prod(n, HALF_PI_LO)));
+    return elliptic_dd_add(y, elliptic_dd(-n * HALF_PI_LOLO));
+}
+
+/* sin y and cos y for |y| <= pi/4 (about): those flagged in `want` (WANT_SIN, WANT_COS) in
+ * double-double, the others as a double (lo = 0) within an ulp or so.
+ * sin y = y + y y2 P(y2), cos y = 1 + y2 Q(y2), y2 = y^2 <= 0.62, P(y2) = sum_j
+ * SIN_COEF[j - 1] y2^(j - 1), Q likewise, j = 1..14 (the first omitted terms, y2^14 / 31!
+ * and / 30!, are below 1e-35 relative). By Horner, the terms from j = J on in double, the
+ * J - 1 leading ones in double-double. J is the least with |c_J| y2^J <= 1e-16 for the
+ * series wanted: the double tail (relative error ~2 eps) then moves sin y by at most
+ * 1.2 y2 2 eps |c_J| y2^(J - 1) <= 2^-104 relative, and cos y (>= 0.707) likewise. At
+ * |y| = pi/4, J = 9; at |y| = 0.087 (th = 10 or 170 degrees), J = 5; for |y| <= 1e-8, J = 1. */
+static void sincos_reduced(EllipticDD y, int want, EllipticDD *sin_y, EllipticDD *cos_y)
+{
     const EllipticDD y2 = elliptic_dd_mul(y, y);
     const double z = y2.hi;
+    const double sin_bound = (want & WANT_SIN) ? 1.0 : 0.0, cos_bound = (want & WANT_COS) ? 1.0 : 0.0;
     int J = 1;
-    for (double power = z; J < 14 && !(fabs(SIN_COEF[J - 1].hi) * power <= 1e-16
-                                        && fabs(COS_COEF[J - 1].hi) * power <= 1e-16); ++J) {
+    for (double power = z; J < 14 && !(sin_bound * fabs(SIN_COEF[J - 1].hi) * power <= 1e-16
+                                        && cos_bound * fabs(COS_COEF[J - 1].hi) * power <= 1e-16); ++J) {
         power *= z;
     }
     double tail_s = SIN_COEF[13].hi, tail_c = COS_COEF[13].hi;
@@ -152,21 +158,74 @@ void elliptic_dd_sincos(EllipticDD x, EllipticDD *sin_x, EllipticDD *cos_x)
         tail_s = SIN_COEF[j].hi + z * tail_s;
         tail_c = COS_COEF[j].hi + z * tail_c;
     }
-    EllipticDD p = elliptic_dd(tail_s), q = elliptic_dd(tail_c);
-    for (int j = J - 2; j >= 0; --j) {
-        p = dd_mul_add(SIN_COEF[j], y2, p);
-        q = dd_mul_add(COS_COEF[j], y2, q);
+    if (want & WANT_SIN) {
+        EllipticDD p = elliptic_dd(tail_s);
+        for (int j = J - 2; j >= 0; --j) {
+            p = dd_mul_add(SIN_COEF[j], y2, p);
+        }
+        *sin_y = elliptic_dd_add(y, elliptic_dd_mul(elliptic_dd_mul(y, y2), p));
+    } else {
+        for (int j = J - 2; j >= 0; --j) {
+            tail_s = SIN_COEF[j].hi + z * tail_s;
+        }
+        *sin_y = elliptic_dd(y.hi + y.hi * z * tail_s);
     }
-    const EllipticDD sin_y = elliptic_dd_add(y, elliptic_dd_mul(elliptic_dd_mul(y, y2), p));
-    const EllipticDD cos_y = elliptic_dd_add(elliptic_dd(1.0), elliptic_dd_mul(y2, q));
+    if (want & WANT_COS) {
+        EllipticDD q = elliptic_dd(tail_c);
+        for (int j = J - 2; j >= 0; --j) {
+            q = dd_mul_add(COS_COEF[j], y2, q);
+        }
+        *cos_y = elliptic_dd_add(elliptic_dd(1.0), elliptic_dd_mul(y2, q));
+    } else {
+        for (int j = J - 2; j >= 0; --j) {
+            tail_c = COS_COEF[j].hi + z * tail_c;
+        }
+        *cos_y = elliptic_dd(1.0 + z * tail_c);
+    }
+}
 
+/* n mod 4 for an integer-valued double n, without integer overflow. */
+static int quadrant_of(double n)
+{
+    return (int)(n - 4.0 * floor(0.25 * n));
+}
+
+void elliptic_dd_sincos(EllipticDD x, EllipticDD *sin_x, EllipticDD *cos_x)
+{
+    if (!isfinite(x.hi)) {
+        *sin_x = *cos_x = elliptic_dd(NAN);
+        return;
+    }
+    double n;
+    EllipticDD sin_y, cos_y;
+    sincos_reduced(reduce_half_pi(x, &n), WANT_SIN | WANT_COS, &sin_y, &cos_y);
     /* sin(y + n pi/2), cos(y + n pi/2) by the quadrant n mod 4. */
-    const int quadrant = (int)(n - 4.0 * floor(0.25 * n));   /* n mod 4, no integer overflow */
-    switch (quadrant) {
+    switch (quadrant_of(n)) {
     case 0: *sin_x = sin_y;         *cos_x = cos_y;         break;
     case 1: *sin_x = cos_y;         *cos_x = elliptic_dd_neg(sin_y); break;
     case 2: *sin_x = elliptic_dd_neg(sin_y); *cos_x = elliptic_dd_neg(cos_y); break;
     default: *sin_x = elliptic_dd_neg(cos_y); *cos_x = sin_y;        break;
+    }
+}
+
+void elliptic_dd_cos_sin(EllipticDD x, EllipticDD *cos_x, double *sin_x)
+{
+    if (!isfinite(x.hi)) {
+        *cos_x = elliptic_dd(NAN);
+        *sin_x = NAN;
+        return;
+    }
+    double n;
+    const EllipticDD y = reduce_half_pi(x, &n);
+    const int quadrant = quadrant_of(n);
+    EllipticDD sin_y, cos_y;
+    /* cos x is +-cos y for even n, -+sin y for odd n: only that one in double-double */
+    sincos_reduced(y, (quadrant & 1) ? WANT_SIN : WANT_COS, &sin_y, &cos_y);
+    switch (quadrant) {
+    case 0: *sin_x = sin_y.hi;  *cos_x = cos_y;                   break;
+    case 1: *sin_x = cos_y.hi;  *cos_x = elliptic_dd_neg(sin_y);  break;
+    case 2: *sin_x = -sin_y.hi; *cos_x = elliptic_dd_neg(cos_y);  break;
+    default: *sin_x = -cos_y.hi; *cos_x = sin_y;                  break;
     }
 }
 

@@ -170,6 +170,10 @@ EllipticDD elliptic_dd_sqrt(EllipticDD x);      /* x >= 0 */
  * of sin y and cos y (A&S 4.3.65-66) summed in double-double, then the quadrant. */
 void elliptic_dd_sincos(EllipticDD x, EllipticDD *sin_x, EllipticDD *cos_x);
 
+/* The same with only cos x in double-double and sin x as a double (within an ulp or so):
+ * about half the work, for callers that need the digits of one of the two only. */
+void elliptic_dd_cos_sin(EllipticDD x, EllipticDD *cos_x, double *sin_x);
+
 /* pi in three parts (pi = PI_HI + PI_LO + PI_LOLO to ~1e-48), generated with mpmath. */
 #define ELLIPTIC_PI_HI   0x1.921fb54442d18p+1
 #define ELLIPTIC_PI_LO   0x1.1a62633145c07p-53

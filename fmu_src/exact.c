@@ -288,7 +288,9 @@ static int m1_near_separatrix(double theta0, double turns, double half_speed, El
 typedef struct {
     double turns;         /* theta0 = 2 pi turns + th */
     EllipticDD th;        /* th in (-pi, pi] */
-    EllipticDD s, c;      /* sin(th/2), cos(th/2) >= 0 */
+    EllipticDD s;         /* sin(th/2): the leading double only (s.lo = 0); init_rotation,
+                             the one step that needs its digits, forms it again in full */
+    EllipticDD c;         /* cos(th/2) >= 0, double-double */
     int exponent;         /* common power of two of the rates: w_n = w0 2^-exponent, ... */
     EllipticDD w_n;       /* w0 2^-exponent */
     double hs_n;          /* |omega0|/2 2^-exponent, exact */
@@ -315,8 +317,8 @@ static void reduce_initial_angle(double theta0, InitialState *st)
         turns += j;
     }
     EllipticDD half = {0.5 * th.hi, 0.5 * th.lo};   /* exact */
-    EllipticDD s, c;
-    elliptic_dd_sincos(half, &s, &c);
+    EllipticDD s = elliptic_dd(0.0), c;
+    elliptic_dd_cos_sin(half, &c, &s.hi);
     if (c.hi < 0.0 || (c.hi == 0.0 && th.hi < 0.0)) {
         /* th just outside (-pi, pi]: move it by one turn; th/2 moves by pi, s and c change sign. */
         double shift = th.hi > 0.0 ? 1.0 : -1.0;
@@ -414,7 +416,10 @@ static int init_libration(PendulumExact *e, double omega0, EllipticDD w0, const 
  * (hs_n > c w_n, and c >= ~1e-33, so hs_n is not tiny). */
 static int init_rotation(PendulumExact *e, double omega0, const InitialState *st, EllipticDD *rate_n)
 {
-    const EllipticDD s = st->s, c = st->c, w_n = st->w_n;
+    const EllipticDD half = {0.5 * st->th.hi, 0.5 * st->th.lo};   /* exact */
+    EllipticDD s, c_again;
+    elliptic_dd_sincos(half, &s, &c_again);   /* sin(th/2) in double-double */
+    const EllipticDD c = st->c, w_n = st->w_n;
     const double hs_n = st->hs_n;
     e->regime = PENDULUM_ROTATION;
     e->direction = omega0 > 0.0 ? 1.0 : -1.0;
