@@ -257,6 +257,42 @@ double elliptic_K(double m1)
     return ELLIPTIC_PI_HI / (a + b);
 }
 
+/* K from k' = sqrt(m1) in double-double (k' > 0): K = (pi/2) / AGM(1, k').
+ * The AGM runs in double-double until x = (a - b)/(a + b) <= 2^-15, then the mean of the
+ * close pair comes from its series: AGM(c (1 + x), c (1 - x)) = c (1 - x^2/4 - 5 x^4/64
+ * - 11 x^6/256 - 469 x^8/16384 - ...), c = (a + b)/2 (the Taylor series of
+ * AGM(1 + x, 1 - x) = 1 / 2F1(1/2, 1/2; 1; x^2), DLMF 19.8.5 with 19.5.1; coefficients
+ * checked with mpmath); the omitted terms are below 0.022 x^10 < 2^-155. x is formed in
+ * double-double from a - b (a.hi - b.hi exact by Sterbenz, a.lo - b.lo within 2^-106) and
+ * x^2/4 (below 2^-32) in double-double; the higher terms (below 2^-63) need a double only.
+ * This saves one to two square-root steps over running the means to |a - b| ~ 1e-17. */
+static EllipticDD K_dd_of_root(EllipticDD kc)
+{
+    EllipticDD a = elliptic_dd(1.0), b = kc;
+    EllipticDD agm = elliptic_dd(NAN);
+    for (int i = 0; i < 64; ++i) {
+        const EllipticDD sum = elliptic_dd_add(a, b);
+        const double diff_hi = a.hi - b.hi;
+        if (fabs(diff_hi) <= 0x1p-15 * sum.hi) {
+            const EllipticDD diff = elliptic_two_sum(diff_hi, a.lo - b.lo);
+            const EllipticDD x = elliptic_dd_div(diff, sum);
+            const EllipticDD x2 = elliptic_dd_mul(x, x);
+            const double t = x2.hi;
+            const double higher = t * t * (5.0 / 64.0 + t * (11.0 / 256.0 + t * (469.0 / 16384.0)));
+            const EllipticDD correction = elliptic_dd_add((EllipticDD){0.25 * x2.hi, 0.25 * x2.lo},
+                                                          elliptic_dd(higher));
+            const EllipticDD c = {0.5 * sum.hi, 0.5 * sum.lo};
+            agm = elliptic_dd_add(c, elliptic_dd_neg(elliptic_dd_mul(c, correction)));
+            break;
+        }
+        const EllipticDD a_next = {0.5 * sum.hi, 0.5 * sum.lo};
+        b = elliptic_dd_sqrt(elliptic_dd_mul(a, b));
+        a = a_next;
+    }
+    const EllipticDD half_pi = fast_two_sum(HALF_PI_HI, HALF_PI_LO);
+    return elliptic_dd_div(half_pi, agm);   /* K = (pi/2) / AGM */
+}
+
 EllipticDD elliptic_K_dd(EllipticDD m1)
 {
     if (!(m1.hi >= 0.0)) {
@@ -265,33 +301,7 @@ EllipticDD elliptic_K_dd(EllipticDD m1)
     if (m1.hi == 0.0) {
         return elliptic_dd(INFINITY);
     }
-    EllipticDD a = elliptic_dd(1.0);
-    EllipticDD b = elliptic_dd_sqrt(m1);
-    /* Same AGM in double-double until x = (a - b)/(a + b) <= 2^-26, then the mean of the
-     * close pair from its series: AGM(c (1 + x), c (1 - x)) = c (1 - x^2/4 - 5 x^4/64 - ...)
-     * with c = (a + b)/2 (the Taylor series of AGM(1 + x, 1 - x) = 1 / 2F1(1/2, 1/2; 1; x^2),
-     * DLMF 19.8.5 with 19.5.1; coefficients checked with mpmath). The omitted terms are below
-     * 11/256 x^6 < 2^-160; the correction (below 2^-54 of c) has the relative error of a
-     * double (a.hi - b.hi is exact, Sterbenz), ~2^-106 of c: one AGM step fewer than
-     * running the means down to |a - b| ~ 1e-17. */
-    EllipticDD agm = elliptic_dd(NAN);
-    for (int i = 0; i < 64; ++i) {
-        const EllipticDD sum = elliptic_dd_add(a, b);
-        const double diff = (a.hi - b.hi) + (a.lo - b.lo);
-        const double x = diff / sum.hi;
-        if (fabs(x) <= 0x1p-26) {
-            const double x2 = x * x;
-            const double correction = x2 * (0.25 + x2 * (5.0 / 64.0));
-            const EllipticDD c = {0.5 * sum.hi, 0.5 * sum.lo};
-            agm = elliptic_dd_add(c, elliptic_dd(-c.hi * correction));
-            break;
-        }
-        EllipticDD a_next = {0.5 * sum.hi, 0.5 * sum.lo};
-        b = elliptic_dd_sqrt(elliptic_dd_mul(a, b));
-        a = a_next;
-    }
-    EllipticDD half_pi = fast_two_sum(HALF_PI_HI, HALF_PI_LO);
-    return elliptic_dd_div(half_pi, agm);   /* K = (pi/2) / AGM */
+    return K_dd_of_root(elliptic_dd_sqrt(m1));
 }
 
 double elliptic_RF(double x, double y, double z)
@@ -379,7 +389,8 @@ int elliptic_param_init(EllipticParam *p, double m, double m1_hi, double m1_lo)
     q.m = m;
     q.m1 = m1.hi;
     q.k = sqrt(m);
-    q.kc = elliptic_dd_sqrt(m1).hi;
+    const EllipticDD kc = elliptic_dd_sqrt(m1);
+    q.kc = kc.hi;
     q.levels = 0;
     for (int i = 0; i < ELLIPTIC_MAX_LEVELS; ++i) {
         q.landen_k[i] = 0.0;
@@ -399,7 +410,7 @@ int elliptic_param_init(EllipticParam *p, double m, double m1_hi, double m1_lo)
         memcpy(p, &q, sizeof q);
         return 0;
     }
-    EllipticDD K = elliptic_K_dd(m1);
+    EllipticDD K = K_dd_of_root(kc);   /* elliptic_K_dd(m1), sharing the root */
     q.K_hi = K.hi;
     q.K_lo = K.lo;
     q.inv_K = 1.0 / K.hi;
