@@ -452,7 +452,7 @@ static inline double elliptic_atan_ratio(double y, double x)
 static inline double elliptic_atan_unit(double y, double x)
 {
     const double a = fabs(y), b = x;
-    const double w1 = (double)(a > ELLIPTIC_TAN_PI_8 * b), w0 = 1.0 - w1;  /* exact 0/1 */
+    const double w1 = a > ELLIPTIC_TAN_PI_8 * b ? 1.0 : 0.0, w0 = 1.0 - w1;  /* exact 0/1 */
     const double t = (w0 * a + w1 * (a - b)) / (w0 * b + w1 * (a + b));
     const double s = t * t;
     const double g = elliptic_atan_series(s);

@@ -725,43 +725,38 @@ void pendulum_exact_eval(const PendulumExact *ex, double t, double *theta, doubl
  * other than a libration with at most ELLIPTIC_LEVELS_WITHOUT_RESCALE Landen levels and
  * |theta_turns| < 2^50 go through pendulum_exact_eval.
  * --------------------------------------------------------------------------------------- */
-#define EXACT_LANES 4
-
-/* n mod 4 for an integer-valued double |n| < 2^51, from the bits of n + 1.5 2^52 (whose last
- * significand bits are those of 2^51 + n), as elliptic_quarter_of gives it. */
-static inline int quarter_of_small(double n)
-{
-    const double shifted = n + 0x1.8p52;
-    uint64_t bits;
-    memcpy(&bits, &shifted, sizeof bits);
-    return (int)(bits & 3);
-}
+#define EXACT_LANES 8
 
 /* 1 when the block of EXACT_LANES points went through, 0 when it needs the scalar path
- * (nothing written then). */
+ * (nothing written then). The lanes are held as arrays per quantity and every stage is a
+ * loop of plain double arithmetic over them (no branch, no integer), which the compiler
+ * vectorises at the platform's baseline (SSE2 on x86-64); the checks for the common path
+ * are separate loops. */
 static int eval_libration_lanes(const PendulumExact *ex, const double *t, double *theta, double *omega)
 {
     const EllipticParam *p = &ex->ell;
+    const double t0 = ex->t0, rho_hi = ex->rho_hi, rho_lo = ex->rho_lo, x0_hi = ex->x0_hi, x0_lo = ex->x0_lo;
     double tau_hi[EXACT_LANES], tau_lo[EXACT_LANES], x_hi[EXACT_LANES];
-    int common = 1;
     for (int l = 0; l < EXACT_LANES; ++l) {
-        const EllipticDD tau = elliptic_two_sum(t[l], -ex->t0);
+        const EllipticDD tau = elliptic_two_sum(t[l], -t0);
         tau_hi[l] = tau.hi;
         tau_lo[l] = tau.lo;
-        x_hi[l] = ex->rho_hi * tau.hi;
-        /* false for t == t0 and for a NaN or infinite phase */
-        common &= (t[l] != ex->t0) & (fabs(x_hi[l]) < 0x1p50);
+        x_hi[l] = rho_hi * tau.hi;
     }
-    if (!common) {
-        return 0;
+    for (int l = 0; l < EXACT_LANES; ++l) {
+        /* not t == t0, and a finite phase below 2^50 quarter periods */
+        if (t[l] == t0 || !(fabs(x_hi[l]) < 0x1p50)) {
+            return 0;
+        }
     }
-    /* phase_quarters, the branch below 2^50 quarter periods */
-    double v[EXACT_LANES], z[EXACT_LANES];
-    int quarter[EXACT_LANES];
-    int in_series = 1;
+    /* phase_quarters, the branch below 2^50 quarter periods; the quarter n mod 4 as the
+     * weights of pendulum_exact_eval (odd, sign), from r = n - 4 nearest(n/4) in {-2..2}:
+     * odd = [r = +-1] = r^2 (4 - r^2)/3, [n mod 4 in {2, 3}] = [r = +-2] + [r = -1]
+     * = r^2 (r^2 - 1)/12 + odd (1 - r)/2, all exact small integers */
+    double v[EXACT_LANES], z[EXACT_LANES], odd[EXACT_LANES], sign[EXACT_LANES], flips[EXACT_LANES];
     for (int l = 0; l < EXACT_LANES; ++l) {
 #ifdef FP_FAST_FMA
-        const double x_lo = fma(ex->rho_hi, tau_hi[l], -x_hi[l]);
+        const double x_lo = fma(rho_hi, tau_hi[l], -x_hi[l]);
 #else
         const double tau_split = 134217729.0 * tau_hi[l];
         const double tau_head = tau_split - (tau_split - tau_hi[l]), tau_tail = tau_hi[l] - tau_head;
@@ -769,53 +764,80 @@ static int eval_libration_lanes(const PendulumExact *ex, const double *t, double
                              + ex->rho_tail * tau_head) + ex->rho_tail * tau_tail;
 #endif
         /* elliptic_nearest_integer: |x_hi + x0_hi| < 2^50 + 2 here */
-        const double quarters = (x_hi[l] + ex->x0_hi + 0x1.8p52) - 0x1.8p52;
-        const double fraction = ((x_hi[l] - quarters) + ex->x0_hi)
-                                + (x_lo + (ex->rho_hi * tau_lo[l] + ex->rho_lo * tau_hi[l]) + ex->x0_lo);
-        quarter[l] = quarter_of_small(quarters);
+        const double quarters = (x_hi[l] + x0_hi + 0x1.8p52) - 0x1.8p52;
+        const double fraction = ((x_hi[l] - quarters) + x0_hi)
+                                + (x_lo + (rho_hi * tau_lo[l] + rho_lo * tau_hi[l]) + x0_lo);
+        const double r = quarters - 4.0 * ((0.25 * quarters + 0x1.8p52) - 0x1.8p52);
+        const double r2 = r * r;
+        odd[l] = r2 * (4.0 - r2) / 3.0;
+        sign[l] = 1.0 - 2.0 * (r2 * (r2 - 1.0) / 12.0 + odd[l] * (1.0 - r) * 0.5);
         v[l] = fraction * ex->K_hi;
         z[l] = fabs(v[l]) * p->bottom_scale;
-        in_series &= z[l] <= ELLIPTIC_SERIES_Z_MAX;
+        flips[l] = v[l] < 0.0 ? -1.0 : 1.0;   /* sn is odd: pendulum_exact_eval's (v < 0) flip */
     }
-    if (!in_series) {
-        return 0;
+    for (int l = 0; l < EXACT_LANES; ++l) {
+        if (!(z[l] <= ELLIPTIC_SERIES_Z_MAX)) {
+            return 0;
+        }
     }
     /* elliptic_sncndn_homogeneous_pair: the bottom level, the steps up to level 1, level 0 */
-    EllipticHomogeneous h1[EXACT_LANES], h0[EXACT_LANES];
+    double S[EXACT_LANES], C[EXACT_LANES], E[EXACT_LANES], D[EXACT_LANES];
+    const double bottom_m = p->bottom_m;
     for (int l = 0; l < EXACT_LANES; ++l) {
         double sz, cz;
         elliptic_sincos_series(z[l], &sz, &cz);
-        const double w = 0.25 * p->bottom_m * (z[l] - sz * cz);
-        h1[l].S = sz - w * cz;
-        h1[l].C = cz + w * sz;
-        h1[l].E = 1.0 - 0.5 * p->bottom_m * sz * sz;
-        h1[l].D = 1.0;
+        const double w = 0.25 * bottom_m * (z[l] - sz * cz);
+        S[l] = sz - w * cz;
+        C[l] = cz + w * sz;
+        E[l] = 1.0 - 0.5 * bottom_m * sz * sz;
+        D[l] = 1.0;
     }
     for (int i = p->levels - 1; i >= 1; --i) {
+        const double kk = p->landen_k[i], one_plus = p->landen_1pk[i], one_minus = p->landen_1mk[i];
         for (int l = 0; l < EXACT_LANES; ++l) {
-            h1[l] = elliptic_landen_step_plain(p, i, h1[l]);
+            /* elliptic_landen_step_plain, operation for operation */
+            const double d2 = D[l] * D[l];
+            const double S_up = one_plus * S[l] * D[l];
+            const double C_up = C[l] * E[l];
+            const double E_up = one_minus * d2 + kk * C[l] * C[l];
+            const double D_up = d2 + kk * S[l] * S[l];
+            S[l] = S_up;
+            C[l] = C_up;
+            E[l] = E_up;
+            D[l] = D_up;
         }
     }
-    for (int l = 0; l < EXACT_LANES; ++l) {
-        h0[l] = elliptic_landen_step_plain(p, 0, h1[l]);
-        if (v[l] < 0.0) {
-            h1[l].S = -h1[l].S;
-            h0[l].S = -h0[l].S;
-        }
-    }
-    /* the quarter's formulas of pendulum_exact_eval */
+    const double kk = p->landen_k[0], one_plus = p->landen_1pk[0], one_minus = p->landen_1mk[0];
     const EllipticDD half_turns = elliptic_dd_add(elliptic_dd(2.0 * ex->theta_turns), elliptic_dd(0.0));
-    const int whole = half_turns.hi == 0.0 && half_turns.lo == 0.0;
+    const int whole = half_turns.hi == 0.0 && half_turns.lo == 0.0;   /* the same for every lane */
     const EllipticDD turn = elliptic_two_prod(half_turns.hi, PI_HI);
-    const double turn_lo = half_turns.hi * PI_LO;
+    const double turn_lo = half_turns.hi * PI_LO, half_turns_lo_pi = half_turns.lo * PI_HI;
+    const double sqrt_k1 = ex->sqrt_k1, kc = ex->kc, omega_half = ex->omega_half;
+    double angle[EXACT_LANES];
     for (int l = 0; l < EXACT_LANES; ++l) {
-        const double odd = (double)(quarter[l] & 1), even = 1.0 - odd;
-        const double sign = 1.0 - (double)(quarter[l] & 2);
-        const double y1 = even * h1[l].S + odd * h1[l].C, x1 = even * h1[l].D + odd * h1[l].E;
-        const double angle = 4.0 * elliptic_atan_unit(sign * ex->sqrt_k1 * y1, x1);
-        const double cn_num = even * h0[l].C - odd * (ex->kc * h0[l].S), den = even * h0[l].D + odd * h0[l].E;
-        omega[l] = 2.0 * (sign * ex->omega_half * (cn_num / den));
-        theta[l] = whole ? angle : turn.hi + (turn.lo + (turn_lo + (half_turns.lo * PI_HI + angle)));
+        const double d2 = D[l] * D[l];
+        double S0 = one_plus * S[l] * D[l];
+        const double C0 = C[l] * E[l];
+        const double E0 = one_minus * d2 + kk * C[l] * C[l];
+        const double D0 = d2 + kk * S[l] * S[l];
+        const double flip = flips[l];
+        const double S1 = flip * S[l];
+        S0 = flip * S0;
+        const double even = 1.0 - odd[l];
+        const double y1 = even * S1 + odd[l] * C[l], x1 = even * D[l] + odd[l] * E[l];
+        angle[l] = 4.0 * elliptic_atan_unit(sign[l] * sqrt_k1 * y1, x1);
+        const double cn_num = even * C0 - odd[l] * (kc * S0), den = even * D0 + odd[l] * E0;
+        omega[l] = 2.0 * (sign[l] * omega_half * (cn_num / den));
+    }
+    /* add_half_turns */
+    if (whole) {
+        for (int l = 0; l < EXACT_LANES; ++l) {
+            theta[l] = angle[l];
+        }
+    } else {
+        for (int l = 0; l < EXACT_LANES; ++l) {
+            theta[l] = turn.hi + (turn.lo + (turn_lo + (half_turns_lo_pi + angle[l])));
+        }
     }
     return 1;
 }
