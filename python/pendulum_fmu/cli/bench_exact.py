@@ -61,6 +61,11 @@ def configure(parser: argparse.ArgumentParser) -> None:
                         help="interleaved rounds of the Python-side timings, 1-100 (default 5)")
 
 
+def both(x_best: float, x_median: float, y_best: float, y_median: float) -> str:
+    """The ratios x/y of the best and of the median figures, as ``best | median``."""
+    return f"{x_best / y_best:6.2f} | {x_median / y_median:<6.2f}"
+
+
 def run(args: argparse.Namespace) -> int:
     """Run the benchmark and print the table."""
     from pendulum_fmu.bench.exact import find_bench_executable
@@ -80,8 +85,6 @@ def run(args: argparse.Namespace) -> int:
     print(f"{'amplitude':>14} {'GSL/eval':>15} {'GSL/batch':>15} {'eval/batch':>15} "
           f"{'scipy/(init+eval)':>19} {'scipy/exact()':>15}")
     for r in results:
-        def both(x_best: float, x_median: float, y_best: float, y_median: float) -> str:
-            return f"{x_best / y_best:6.2f} | {x_median / y_median:<6.2f}"
         c = r.c
         print(f"{r.amplitude_deg:>10.10g} deg {both(c.gsl.best, c.gsl.median, c.eval.best, c.eval.median):>15} "
               f"{both(c.gsl.best, c.gsl.median, c.batch.best, c.batch.median):>15} "
