@@ -379,6 +379,11 @@ double elliptic_F(double phi, double m, double m1)
 
 int elliptic_param_init(EllipticParam *p, double m, double m1_hi, double m1_lo)
 {
+    return elliptic_param_init_root(p, m, m1_hi, m1_lo, NULL);
+}
+
+int elliptic_param_init_root(EllipticParam *p, double m, double m1_hi, double m1_lo, const EllipticDD *root)
+{
     if (p == NULL || !(m >= 0.0 && m <= 1.0) || !(m1_hi >= 0.0 && m1_hi <= 1.0)
         || !isfinite(m1_lo) || !(fabs(m + m1_hi - 1.0) <= 1e-12)) {
         return -1;
@@ -389,7 +394,7 @@ int elliptic_param_init(EllipticParam *p, double m, double m1_hi, double m1_lo)
     q.m = m;
     q.m1 = m1.hi;
     q.k = sqrt(m);
-    const EllipticDD kc = elliptic_dd_sqrt(m1);
+    const EllipticDD kc = root != NULL ? *root : elliptic_dd_sqrt(m1);
     q.kc = kc.hi;
     q.levels = 0;
     for (int i = 0; i < ELLIPTIC_MAX_LEVELS; ++i) {

@@ -233,6 +233,11 @@ typedef struct {
  * 1 to within 1e-12. m1 == 0 (m = 1) is allowed: sn = tanh, cn = dn = sech, K = +inf. */
 int elliptic_param_init(EllipticParam *p, double m, double m1_hi, double m1_lo);
 
+/* The same with k' = sqrt(m1) given in double-double by the caller (root == NULL: formed
+ * from m1), for a caller that has it without a square root (the pendulum from rest:
+ * k' = cos(theta0/2)). */
+int elliptic_param_init_root(EllipticParam *p, double m, double m1_hi, double m1_lo, const EllipticDD *root);
+
 /* Reduces u = u_hi + u_lo to u = n K + r with n = nearest integer to u / K, so |r| <= K/2
  * (up to rounding of the quotient). Returns r; *quarters = n (an integer-valued double).
  * u_lo need not be small (it may hold a phase offset of a few K). K is used in double-double

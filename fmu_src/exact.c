@@ -383,7 +383,9 @@ static int init_libration(PendulumExact *e, double omega0, EllipticDD w0, const 
     e->regime = PENDULUM_LIBRATION;
     const double k = hypot(s.hi, q.hi);        /* sqrt(m) = sqrt(s^2 + q^2), no underflow */
     const double m = fmin(k * k, 1.0);
-    if (elliptic_param_init(&e->ell, m, m1.hi, m1.lo) != 0) {
+    /* from rest (and not next to the separatrix) k' = sqrt(m1) = c itself */
+    const int root_known = from_rest && !st->fine;
+    if (elliptic_param_init_root(&e->ell, m, m1.hi, m1.lo, root_known ? &c : NULL) != 0) {
         return -1;
     }
     e->m = m;
