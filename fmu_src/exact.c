@@ -727,7 +727,7 @@ void pendulum_exact_eval(const PendulumExact *ex, double t, double *theta, doubl
  * other than a libration with at most ELLIPTIC_LEVELS_WITHOUT_RESCALE Landen levels and
  * |theta_turns| < 2^50 go through pendulum_exact_eval.
  * --------------------------------------------------------------------------------------- */
-#define EXACT_LANES 8
+#define EXACT_LANES 16
 
 /* 1 when the block of EXACT_LANES points went through, 0 when it needs the scalar path
  * (nothing written then). The lanes are held as arrays per quantity and every stage is a

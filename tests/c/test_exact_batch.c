@@ -86,8 +86,8 @@ static void check_state(double theta0, double omega0, double w0, double t0, cons
         const double horizons[] = {1.0, 50.0, 1e6};
         for (size_t h = 0; h < sizeof horizons / sizeof horizons[0]; ++h) {
             const size_t n = make_times(&ex, horizons[h], mixed, t);
-            /* every count from 0 to 9 (the lane remainders), then all */
-            for (size_t count = 0; count < 10; ++count) {
+            /* every count from 0 to 33 (two blocks of 16 lanes and every remainder), then all */
+            for (size_t count = 0; count < 34; ++count) {
                 check(compare(&ex, count, t, label) == 0, "%s: %zu points (horizon %g, mixed %d)", label, count,
                       horizons[h], mixed);
             }
