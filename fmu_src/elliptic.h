@@ -159,11 +159,73 @@ static inline double elliptic_nearest_integer(double x)
     return nearbyint(x);
 }
 
-/* x + y, x * y, x / y, sqrt(x) in double-double (relative error a few 2^-104). */
-EllipticDD elliptic_dd_add(EllipticDD x, EllipticDD y);
-EllipticDD elliptic_dd_mul(EllipticDD x, EllipticDD y);
-EllipticDD elliptic_dd_div(EllipticDD x, EllipticDD y);
-EllipticDD elliptic_dd_sqrt(EllipticDD x);      /* x >= 0 */
+/* x + y, x * y, x / y, sqrt(x) in double-double (relative error a few 2^-104; sqrt for
+ * x >= 0), static inline: the set-up runs long chains of them. */
+/* s + err = a + b exactly, valid when |a| >= |b| or a == 0 (Dekker's Fast2Sum). */
+static inline EllipticDD elliptic_fast_two_sum(double a, double b)
+{
+    EllipticDD r;
+    r.hi = a + b;
+    r.lo = b - (r.hi - a);
+    return r;
+}
+
+static inline EllipticDD elliptic_dd_add(EllipticDD x, EllipticDD y)
+{
+    /* Sum of the high parts and of the low parts, each error-free, then two renormalisations
+     * (the "accurate" double-double addition of Hida, Li and Bailey's QD library). */
+    EllipticDD s = elliptic_two_sum(x.hi, y.hi);
+    EllipticDD t = elliptic_two_sum(x.lo, y.lo);
+    s.lo += t.hi;
+    s = elliptic_fast_two_sum(s.hi, s.lo);
+    s.lo += t.lo;
+    return elliptic_fast_two_sum(s.hi, s.lo);
+}
+
+static inline EllipticDD elliptic_dd_mul(EllipticDD x, EllipticDD y)
+{
+    /* (xh + xl)(yh + yl) = xh yh (exact two-product) + xh yl + xl yh + O(2^-106). */
+    EllipticDD p = elliptic_two_prod(x.hi, y.hi);
+    p.lo += x.hi * y.lo + x.lo * y.hi;
+    return elliptic_fast_two_sum(p.hi, p.lo);
+}
+
+static inline EllipticDD elliptic_dd_div(EllipticDD x, EllipticDD y)
+{
+    /* Dekker's div2: q1 = x.hi / y.hi, the remainder x - q1 y with q1 y.hi exact (two-product;
+     * x.hi - p.hi is exact by Sterbenz), then q2 = remainder / y.hi. Relative error a few
+     * 2^-104 (Dekker 1971, section 8). */
+    const double q1 = x.hi / y.hi;
+    const EllipticDD p = elliptic_two_prod(q1, y.hi);
+    const double remainder = (((x.hi - p.hi) - p.lo) + x.lo) - q1 * y.lo;
+    return elliptic_fast_two_sum(q1, remainder / y.hi);
+}
+
+static inline EllipticDD elliptic_dd_sqrt(EllipticDD x)
+{
+    /* One Newton step from the double root s: sqrt(x) = s + (x - s^2) / (2 s), with s^2
+     * formed exactly by a two-product. */
+    if (!(x.hi > 0.0)) {
+        return elliptic_dd(x.hi == 0.0 ? 0.0 : NAN);
+    }
+    if (isinf(x.hi)) {
+        return elliptic_dd(x.hi);
+    }
+    if (x.hi < 0x1p-900) {
+        /* keep the error terms of the two-product out of the subnormal range: scale by an
+         * even power of two (exact) */
+        EllipticDD scaled = {x.hi * 0x1p1000, x.lo * 0x1p1000};
+        EllipticDD root = elliptic_dd_sqrt(scaled);
+        root.hi *= 0x1p-500;
+        root.lo *= 0x1p-500;
+        return root;
+    }
+    double s = sqrt(x.hi);
+    EllipticDD sq = elliptic_two_prod(s, s);
+    double correction = (((x.hi - sq.hi) - sq.lo) + x.lo) / (2.0 * s);
+    return elliptic_fast_two_sum(s, correction);
+}
+
 
 /* sin x and cos x for a double-double argument |x| <= 2 pi (relative accuracy ~1e-31, also
  * near the zeros): x = n pi/2 + y with pi/2 in three parts, |y| <= pi/4, Maclaurin series
