@@ -73,6 +73,25 @@ static EllipticDD reduce_half_pi(EllipticDD x, double *quadrants)
     return elliptic_dd_add(y, elliptic_dd(-n * HALF_PI_LOLO));
 }
 
+/* sum_{j < n} coef[j] z^j + z^n tail for a double-double z (z2 = z^2), by Horner's scheme
+ * split into two chains in z^2 that the processor runs side by side (the even and the odd
+ * powers, A(z^2) + z B(z^2)), half the depth of one chain: every step adds a term far below
+ * the partial sum (|coef[j + 2] z^2| <= 0.02 |coef[j]|), as dd_mul_add needs. */
+static EllipticDD horner_two_chains(const EllipticDD *coef, int n, double tail, EllipticDD z, EllipticDD z2)
+{
+    /* the tail belongs to the chain of power n: even (A) or odd (B) */
+    EllipticDD even = elliptic_dd((n % 2 == 0) ? tail : 0.0);
+    EllipticDD odd = elliptic_dd((n % 2 == 1) ? tail : 0.0);
+    for (int j = n - 1; j >= 0; --j) {
+        if (j % 2 == 0) {
+            even = dd_mul_add(coef[j], z2, even);
+        } else {
+            odd = dd_mul_add(coef[j], z2, odd);
+        }
+    }
+    return elliptic_dd_add(even, elliptic_dd_mul(z, odd));
+}
+
 /* sin y and cos y for |y| <= pi/4 (about): those flagged in `want` (WANT_SIN, WANT_COS) in
  * double-double, the others as a double (lo = 0) within an ulp or so.
  * sin y = y + y y2 P(y2), cos y = 1 + y2 Q(y2), y2 = y^2 <= 0.62, P(y2) = sum_j
@@ -97,11 +116,9 @@ static void sincos_reduced(EllipticDD y, int want, EllipticDD *sin_y, EllipticDD
         tail_s = SIN_COEF[j].hi + z * tail_s;
         tail_c = COS_COEF[j].hi + z * tail_c;
     }
+    const EllipticDD y4 = elliptic_dd_mul(y2, y2);
     if (want & WANT_SIN) {
-        EllipticDD p = elliptic_dd(tail_s);
-        for (int j = J - 2; j >= 0; --j) {
-            p = dd_mul_add(SIN_COEF[j], y2, p);
-        }
+        const EllipticDD p = horner_two_chains(SIN_COEF, J - 1, tail_s, y2, y4);
         *sin_y = elliptic_dd_add(y, elliptic_dd_mul(elliptic_dd_mul(y, y2), p));
     } else {
         for (int j = J - 2; j >= 0; --j) {
@@ -110,10 +127,7 @@ static void sincos_reduced(EllipticDD y, int want, EllipticDD *sin_y, EllipticDD
         *sin_y = elliptic_dd(y.hi + y.hi * z * tail_s);
     }
     if (want & WANT_COS) {
-        EllipticDD q = elliptic_dd(tail_c);
-        for (int j = J - 2; j >= 0; --j) {
-            q = dd_mul_add(COS_COEF[j], y2, q);
-        }
+        const EllipticDD q = horner_two_chains(COS_COEF, J - 1, tail_c, y2, y4);
         *cos_y = elliptic_dd_add(elliptic_dd(1.0), elliptic_dd_mul(y2, q));
     } else {
         for (int j = J - 2; j >= 0; --j) {
