@@ -341,69 +341,68 @@ int elliptic_param_init_root(EllipticParam *p, double m, double m1_hi, double m1
         || !isfinite(m1_lo) || !(fabs(m + m1_hi - 1.0) <= 1e-12)) {
         return -1;
     }
-    EllipticParam q;
-    memset(&q, 0, sizeof q); /* padding too: the FMU checksums its states bytewise */
+    /* written in place once the inputs are accepted (no copy) */
+    EllipticParam *q = p;
+    memset(q, 0, sizeof *q); /* padding too: the FMU checksums its states bytewise */
     EllipticDD m1 = elliptic_two_sum(m1_hi, m1_lo);
-    q.m = m;
-    q.m1 = m1.hi;
-    q.k = sqrt(m);
+    q->m = m;
+    q->m1 = m1.hi;
+    q->k = sqrt(m);
     const EllipticDD kc = root != NULL ? *root : elliptic_dd_sqrt(m1);
-    q.kc = kc.hi;
-    q.levels = 0;
+    q->kc = kc.hi;
+    q->levels = 0;
     for (int i = 0; i < ELLIPTIC_MAX_LEVELS; ++i) {
-        q.landen_k[i] = 0.0;
-        q.landen_1pk[i] = 1.0;
-        q.landen_1mk[i] = 1.0;
+        q->landen_k[i] = 0.0;
+        q->landen_1pk[i] = 1.0;
+        q->landen_1mk[i] = 1.0;
     }
     if (m1.hi == 0.0) {
         /* m = 1: no Landen chain; sn = tanh, cn = dn = sech. */
-        q.K_hi = INFINITY;
-        q.K_lo = 0.0;
-        q.inv_K = 0.0;
-        q.K_head = INFINITY;
-        q.K_tail = 0.0;
-        q.bottom_scale = 1.0;
-        q.bottom_m = 1.0;
-        q.sqrt_k1 = 1.0;
-        memcpy(p, &q, sizeof q);
+        q->K_hi = INFINITY;
+        q->K_lo = 0.0;
+        q->inv_K = 0.0;
+        q->K_head = INFINITY;
+        q->K_tail = 0.0;
+        q->bottom_scale = 1.0;
+        q->bottom_m = 1.0;
+        q->sqrt_k1 = 1.0;
         return 0;
     }
     EllipticDD K = K_dd_of_root(kc);   /* elliptic_K_dd(m1), sharing the root */
-    q.K_hi = K.hi;
-    q.K_lo = K.lo;
-    q.inv_K = 1.0 / K.hi;
-    q.K_head = elliptic_head26(K.hi);   /* top 26 bits of K_hi; K_tail = the rest, exact */
-    q.K_tail = K.hi - q.K_head;
+    q->K_hi = K.hi;
+    q->K_lo = K.lo;
+    q->inv_K = 1.0 / K.hi;
+    q->K_head = elliptic_head26(K.hi);   /* top 26 bits of K_hi; K_tail = the rest, exact */
+    q->K_tail = K.hi - q->K_head;
 
     /* Descending Landen sequence (A&S 16.12.1, DLMF 22.7.1; the AGM of A&S 16.4 normalised,
      * k_n = c_n / a_n, k'_n = b_n / a_n):
      *   k_{n+1} = (1 - k'_n) / (1 + k'_n) = m_n / (1 + k'_n)^2,
      *   1 - k_{n+1} = 2 k'_n / (1 + k'_n),   k'_{n+1} = 2 sqrt(k'_n) / (1 + k'_n),
      * each in the form that does not cancel. */
-    double kc_n = q.kc, m_n = m;
+    double kc_n = q->kc, m_n = m;
     int n = 0;
     while ((m_n > BOTTOM_M || n == 0) && n < ELLIPTIC_MAX_LEVELS) {   /* at least one level */
         double one_plus_kc = 1.0 + kc_n;
         double k_next = kc_n < 0.5 ? (1.0 - kc_n) / one_plus_kc
                                    : m_n / (one_plus_kc * one_plus_kc);
-        q.landen_k[n] = k_next;
-        q.landen_1pk[n] = 1.0 + k_next;
-        q.landen_1mk[n] = 2.0 * kc_n / one_plus_kc;
+        q->landen_k[n] = k_next;
+        q->landen_1pk[n] = 1.0 + k_next;
+        q->landen_1mk[n] = 2.0 * kc_n / one_plus_kc;
         kc_n = 2.0 * sqrt(kc_n) / one_plus_kc;
         m_n = k_next * k_next;
         ++n;
     }
-    q.levels = n;
-    q.sqrt_k1 = q.k / (1.0 + q.kc);   /* sqrt(k_1) = sqrt((1 - k')/(1 + k')) = k / (1 + k') */
-    q.bottom_m = m_n;
+    q->levels = n;
+    q->sqrt_k1 = q->k / (1.0 + q->kc);   /* sqrt(k_1) = sqrt((1 - k')/(1 + k')) = k / (1 + k') */
+    q->bottom_m = m_n;
     /* prod(1 + k_n) = K(m) / K(m_N) (descending Landen K(k) = (1 + k_1) K(k_1), DLMF
      * 19.8(ii), A&S 17.5), and
      * K(m_N) = pi/2 (1 + m_N/4 + 9 m_N^2/64 + ...)  (A&S 17.3.11): one division by K in
      * double-double instead of N rounded factors. */
     EllipticDD K_bottom = elliptic_dd_mul(fast_two_sum(HALF_PI_HI, HALF_PI_LO),
                                           elliptic_dd(1.0 + m_n * (0.25 + m_n * (9.0 / 64.0))));
-    q.bottom_scale = elliptic_dd_div(K_bottom, K).hi;
-    memcpy(p, &q, sizeof q);
+    q->bottom_scale = elliptic_dd_div(K_bottom, K).hi;
     return 0;
 }
 
