@@ -2,10 +2,10 @@
  * documentation/math.html for the formulas).
  *
  * Initial state: theta0 = 2 pi j + th with th in (-pi, pi], s = sin(th/2), c = cos(th/2) >= 0,
- * q = omega0 / (2 w0). All of s, c, q and the complementary parameter are formed in
- * double-double, so K (and with it the period) is right to ~1e-30 relative for the binary
- * inputs: over 1e6 periods the phase needs K to better than 1e-18, which a double m1 (two
- * roundings of cos) does not give.
+ * q = omega0 / (2 w0). c, q and the complementary parameter (and s for a rotation, where
+ * it enters the parameter) are formed in double-double, so K (and with it the period) is
+ * right to ~1e-30 relative for the binary inputs: over 1e6 periods the phase needs K to
+ * better than 1e-18, which a double m1 (two roundings of cos) does not give.
  *
  * Libration, m = s^2 + q^2 < 1, m1 = (c - q)(c + q) > 0 (A&S 16 / documentation/math.html):
  *   sin(theta/2) = k sn u,  cos(theta/2) = dn u,  omega = 2 k w0 cn u,  u = w0 (t - t0) + u0,
