@@ -24,24 +24,45 @@ static int same_bits(double a, double b)
     return x == y;
 }
 
+/* Evaluates ex at the n times t (batch: pendulum_exact_eval_many, bit for bit the scalar
+ * evaluation) and returns how many of them are not resolvable (their outputs are NaN). */
+static size_t evaluate(const PendulumExact *ex, size_t n, const double *t, double *theta, double *omega)
+{
+    pendulum_exact_eval_many(ex, n, t, theta, omega);
+    size_t refused = 0;
+    for (size_t i = 0; i < n; ++i) {
+        refused += !pendulum_exact_resolvable(ex, t[i]);
+    }
+    return refused;
+}
+
+static void refuse(size_t n, double *theta, double *omega)
+{
+    for (size_t i = 0; i < n; ++i) {
+        theta[i] = omega[i] = NAN;
+    }
+}
+
 size_t pendulum_exact_many(size_t n, const double *theta0, const double *omega0, const double *L,
                            const double *g, const double *t, double *theta, double *omega)
 {
-    PendulumExact ex;
     size_t refused = 0;
-    int ready = 0; /* 1: ex holds the solution of element i - 1's inputs; -1: they were refused */
-    for (size_t i = 0; i < n; ++i) {
-        int same = i > 0 && same_bits(theta0[i], theta0[i - 1]) && same_bits(omega0[i], omega0[i - 1]) &&
-                   same_bits(L[i], L[i - 1]) && same_bits(g[i], g[i - 1]);
-        if (!same) {
-            ready = set_up(&ex, theta0[i], omega0[i], L[i], g[i]) == 0 ? 1 : -1;
+    size_t start = 0;
+    while (start < n) {
+        /* a run of elements with the same inputs (bitwise) shares one set-up */
+        size_t end = start + 1;
+        while (end < n && same_bits(theta0[end], theta0[start]) && same_bits(omega0[end], omega0[start])
+               && same_bits(L[end], L[start]) && same_bits(g[end], g[start])) {
+            ++end;
         }
-        if (ready == 1 && pendulum_exact_resolvable(&ex, t[i])) {
-            pendulum_exact_eval(&ex, t[i], &theta[i], &omega[i]);
+        PendulumExact ex;
+        if (set_up(&ex, theta0[start], omega0[start], L[start], g[start]) == 0) {
+            refused += evaluate(&ex, end - start, t + start, theta + start, omega + start);
         } else {
-            theta[i] = omega[i] = NAN;
-            ++refused;
+            refuse(end - start, theta + start, omega + start);
+            refused += end - start;
         }
+        start = end;
     }
     return refused;
 }
@@ -50,15 +71,9 @@ size_t pendulum_exact_times(double theta0, double omega0, double L, double g, si
                             double *theta, double *omega)
 {
     PendulumExact ex;
-    int ready = set_up(&ex, theta0, omega0, L, g) == 0;
-    size_t refused = 0;
-    for (size_t i = 0; i < n; ++i) {
-        if (ready && pendulum_exact_resolvable(&ex, t[i])) {
-            pendulum_exact_eval(&ex, t[i], &theta[i], &omega[i]);
-        } else {
-            theta[i] = omega[i] = NAN;
-            ++refused;
-        }
+    if (set_up(&ex, theta0, omega0, L, g) != 0) {
+        refuse(n, theta, omega);
+        return n;
     }
-    return refused;
+    return evaluate(&ex, n, t, theta, omega);
 }

@@ -1,8 +1,9 @@
 /* pendulum_exact_lib.h: the FMU's exact solution as a plain C library (no FMI), for callers
  * that need theta_exact at many points without an FMU round trip per point (the Python
- * function pendulum_fmu.exact). It runs the same pendulum_exact_init / pendulum_exact_eval
- * as the FMU, with w0 = sqrt(g / L) and the initial state posed at t = 0, as the FMU does
- * after initialization at start time 0, so its theta equals the FMU's theta_exact bit for bit. */
+ * function pendulum_fmu.exact). It runs the same pendulum_exact_init as the FMU, with
+ * w0 = sqrt(g / L) and the initial state posed at t = 0, as the FMU does after initialization
+ * at start time 0, and evaluates with pendulum_exact_eval_many (several points in lock-step,
+ * bit for bit pendulum_exact_eval), so its theta equals the FMU's theta_exact bit for bit. */
 #ifndef PENDULUM_EXACT_LIB_H
 #define PENDULUM_EXACT_LIB_H
 
@@ -12,13 +13,6 @@
 #define PENDULUM_EXACT_API __declspec(dllexport)
 #else
 #define PENDULUM_EXACT_API __attribute__((visibility("default")))
-/* The same for one initial state and parameters over n times: theta[i], omega[i] at t[i].
- * Returns 0, or n when the inputs are refused (all outputs NaN then); a non-finite t[i]
- * gives NaN at i and counts one, as does a t[i] too far from 0 to resolve the phase
- * (pendulum_exact_resolvable). */
-PENDULUM_EXACT_API size_t pendulum_exact_times(double theta0, double omega0, double L, double g, size_t n,
-                                               const double *t, double *theta, double *omega);
-
 #endif
 
 /* Version of this interface; a caller checks it before trusting the signature below. */

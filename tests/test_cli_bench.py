@@ -30,6 +30,25 @@ def test_bench_exact_times_the_library_against_scipy(capsys: pytest.CaptureFixtu
     assert 0 < python_ns < 1e4 and 0 < scipy_ns < 1e4
 
 
+def test_bench_exact_prints_batch_gsl_and_new_states_side_by_side(capsys: pytest.CaptureFixture[str]) -> None:
+    """With the C benchmark of the build: eval, batch, GSL and new state + eval, each as best and median,
+    beside the Python and scipy figures for one state and for a state per point."""
+    from pendulum_fmu.bench.exact import find_bench_executable
+
+    assert find_bench_executable() is not None, "tests/c/bench_exact is not built"
+    assert main(["bench", "exact", "-n", "20000", "--amplitudes", "90", "--rounds", "2"]) == 0
+    out = capsys.readouterr().out
+    assert "GSL/eval" in out and "eval/batch" in out and "scipy/(init+eval)" in out
+    line = re.search(r"^bench_exact_all amplitude_deg=90 n=20000 (.*)$", out, re.MULTILINE)
+    assert line is not None
+    values = dict(field.split("=") for field in line.group(1).split())
+    for kind in ("eval", "batch", "gsl", "init_eval", "python", "scipy", "python_states", "scipy_states"):
+        best, median = float(values[f"{kind}_best"]), float(values[f"{kind}_median"])
+        assert 0 < best <= median < 1e5, kind
+    # the lock-step batch is the faster path, and a new state costs more than an evaluation
+    assert float(values["batch_best"]) < float(values["eval_best"]) < float(values["init_eval_best"])
+
+
 def test_bench_lists_the_benchmarks_available(capsys: pytest.CaptureFixture[str]) -> None:
     with pytest.raises(SystemExit):
         main(["bench", "--help"])

@@ -19,75 +19,128 @@
 /* double-double                                                                          */
 /* ------------------------------------------------------------------------------------- */
 
-/* s + err = a + b exactly, valid when |a| >= |b| or a == 0 (Dekker's Fast2Sum). */
-static EllipticDD fast_two_sum(double a, double b)
-{
-    EllipticDD r;
-    r.hi = a + b;
-    r.lo = b - (r.hi - a);
-    return r;
-}
+/* The double-double arithmetic is static inline in elliptic.h (so that the set-up's chains
+ * of double-double operations compile without calls); Dekker's Fast2Sum by its local name: */
+#define fast_two_sum elliptic_fast_two_sum
 
-EllipticDD elliptic_dd_add(EllipticDD x, EllipticDD y)
+/* Coefficients of the Maclaurin series of sin and cos (A&S 4.3.65-66) in double-double,
+ * generated with mpmath at 300 bits: SIN_COEF[j - 1] = (-1)^j / (2j + 1)!,
+ * COS_COEF[j - 1] = (-1)^j / (2j)!, j = 1..14. */
+static const EllipticDD SIN_COEF[14] = {
+    {-0x1.5555555555555p-3, -0x1.5555555555555p-57}, {0x1.1111111111111p-7, 0x1.1111111111111p-63},
+    {-0x1.a01a01a01a01ap-13, -0x1.a01a01a01a01ap-73}, {0x1.71de3a556c734p-19, -0x1.c154f8ddc6c00p-73},
+    {-0x1.ae64567f544e4p-26, 0x1.c062e06d1f209p-80}, {0x1.6124613a86d09p-33, 0x1.f28e0cc748ebep-87},
+    {-0x1.ae7f3e733b81fp-41, -0x1.1d8656b0ee8cbp-97}, {0x1.952c77030ad4ap-49, 0x1.ac981465ddc6cp-103},
+    {-0x1.2f49b46814157p-57, -0x1.2650f61dbdcb4p-112}, {0x1.71b8ef6dcf572p-66, -0x1.d043ae40c4647p-120},
+    {-0x1.761b41316381ap-75, 0x1.3423c7d91404fp-130}, {0x1.3f3ccdd165fa9p-84, -0x1.58ddadf344487p-139},
+    {-0x1.d1ab1c2dccea3p-94, -0x1.054d0c78aea14p-149}, {0x1.259f98b4358adp-103, 0x1.eaf8c39dd9bc5p-157},
+};
+static const EllipticDD COS_COEF[14] = {
+    {-0x1.0000000000000p-1, 0x0.0p+0}, {0x1.5555555555555p-5, 0x1.5555555555555p-59},
+    {-0x1.6c16c16c16c17p-10, 0x1.f49f49f49f49fp-65}, {0x1.a01a01a01a01ap-16, 0x1.a01a01a01a01ap-76},
+    {-0x1.27e4fb7789f5cp-22, -0x1.cbbc05b4fa99ap-76}, {0x1.1eed8eff8d898p-29, -0x1.2aec959e14c06p-83},
+    {-0x1.93974a8c07c9dp-37, -0x1.05d6f8a2efd1fp-92}, {0x1.ae7f3e733b81fp-45, 0x1.1d8656b0ee8cbp-101},
+    {-0x1.6827863b97d97p-53, -0x1.eec01221a8b0bp-107}, {0x1.e542ba4020225p-62, 0x1.ea72b4afe3c2fp-120},
+    {-0x1.0ce396db7f853p-70, 0x1.aebcdbd20331cp-124}, {0x1.f2cf01972f578p-80, -0x1.9ada5fcc1ab14p-135},
+    {-0x1.88e85fc6a4e5ap-89, 0x1.71c37ebd16540p-143}, {0x1.0a18a2635085dp-98, 0x1.b9e2e28e1aa54p-153},
+};
+
+/* c + x y for double-doubles, with the sloppy sum (one renormalisation): Horner's step when
+ * |x y| is well below |c| (here |x y| <= 0.31 |c|), relative error a few 2^-104. */
+static EllipticDD dd_mul_add(EllipticDD c, EllipticDD x, EllipticDD y)
 {
-    /* Sum of the high parts and of the low parts, each error-free, then two renormalisations
-     * (the "accurate" double-double addition of Hida, Li and Bailey's QD library). */
-    EllipticDD s = elliptic_two_sum(x.hi, y.hi);
-    EllipticDD t = elliptic_two_sum(x.lo, y.lo);
-    s.lo += t.hi;
-    s = fast_two_sum(s.hi, s.lo);
-    s.lo += t.lo;
+    EllipticDD p = elliptic_two_prod(x.hi, y.hi);
+    p.lo += x.hi * y.lo + x.lo * y.hi;
+    EllipticDD s = elliptic_two_sum(c.hi, p.hi);
+    s.lo += c.lo + p.lo;
     return fast_two_sum(s.hi, s.lo);
 }
 
-EllipticDD elliptic_dd_mul(EllipticDD x, EllipticDD y)
+#define WANT_SIN 1
+#define WANT_COS 2
+
+/* x = n pi/2 + y, |y| <= pi/4 (about): y = x - n (pi/2)_hi - n (pi/2)_lo - n (pi/2)_lolo, the
+ * products n (pi/2)_hi and n (pi/2)_lo exact (two-product), n small. Returns y, *n = n. */
+static EllipticDD reduce_half_pi(EllipticDD x, double *quadrants)
 {
-    /* (xh + xl)(yh + yl) = xh yh (exact two-product) + xh yl + xl yh + O(2^-106). */
-    EllipticDD p = elliptic_two_prod(x.hi, y.hi);
-    p.lo += x.hi * y.lo + x.lo * y.hi;
-    return fast_two_sum(p.hi, p.lo);
+    const double n = nearbyint(x.hi / HALF_PI_HI);
+    *quadrants = n;
+    if (n == 0.0) {
+        return x;
+    }
+    EllipticDD y = elliptic_dd_add(x, elliptic_dd_neg(elliptic_two_prod(n, HALF_PI_HI)));
+    y = elliptic_dd_add(y, elliptic_dd_neg(elliptic_two_prod(n, HALF_PI_LO)));
+    return elliptic_dd_add(y, elliptic_dd(-n * HALF_PI_LOLO));
 }
 
-EllipticDD elliptic_dd_div(EllipticDD x, EllipticDD y)
+/* sum_{j < n} coef[j] z^j + z^n tail for a double-double z (z2 = z^2), by Horner's scheme
+ * split into two chains in z^2 that the processor runs side by side (the even and the odd
+ * powers, A(z^2) + z B(z^2)), half the depth of one chain: every step adds a term far below
+ * the partial sum (|coef[j + 2] z^2| <= 0.02 |coef[j]|), as dd_mul_add needs. */
+static EllipticDD horner_two_chains(const EllipticDD *coef, int n, double tail, EllipticDD z, EllipticDD z2)
 {
-    /* Long division: three quotient digits q1 + q2 + q3, each from the remainder so far. */
-    double q1 = x.hi / y.hi;
-    EllipticDD r = elliptic_dd_add(x, elliptic_dd_neg(elliptic_dd_mul(y, elliptic_dd(q1))));
-    double q2 = r.hi / y.hi;
-    r = elliptic_dd_add(r, elliptic_dd_neg(elliptic_dd_mul(y, elliptic_dd(q2))));
-    double q3 = r.hi / y.hi;
-    return elliptic_dd_add(fast_two_sum(q1, q2), elliptic_dd(q3));
+    /* the tail belongs to the chain of power n: even (A) or odd (B) */
+    EllipticDD even = elliptic_dd((n % 2 == 0) ? tail : 0.0);
+    EllipticDD odd = elliptic_dd((n % 2 == 1) ? tail : 0.0);
+    for (int j = n - 1; j >= 0; --j) {
+        if (j % 2 == 0) {
+            even = dd_mul_add(coef[j], z2, even);
+        } else {
+            odd = dd_mul_add(coef[j], z2, odd);
+        }
+    }
+    return elliptic_dd_add(even, elliptic_dd_mul(z, odd));
 }
 
-EllipticDD elliptic_dd_sqrt(EllipticDD x)
+/* sin y and cos y for |y| <= pi/4 (about): those flagged in `want` (WANT_SIN, WANT_COS) in
+ * double-double, the others as a double (lo = 0) within an ulp or so.
+ * sin y = y + y y2 P(y2), cos y = 1 + y2 Q(y2), y2 = y^2 <= 0.62, P(y2) = sum_j
+ * SIN_COEF[j - 1] y2^(j - 1), Q likewise, j = 1..14 (the first omitted terms, y2^14 / 31!
+ * and / 30!, are below 1e-35 relative). By Horner, the terms from j = J on in double, the
+ * J - 1 leading ones in double-double. J is the least with |c_J| y2^J <= 1e-16 for the
+ * series wanted: the double tail (relative error ~2 eps) then moves sin y by at most
+ * 1.2 y2 2 eps |c_J| y2^(J - 1) <= 2^-104 relative, and cos y (>= 0.707) likewise. At
+ * |y| = pi/4, J = 9; at |y| = 0.087 (th = 10 or 170 degrees), J = 5; for |y| <= 1e-8, J = 1. */
+static void sincos_reduced(EllipticDD y, int want, EllipticDD *sin_y, EllipticDD *cos_y)
 {
-    /* One Newton step from the double root s: sqrt(x) = s + (x - s^2) / (2 s), with s^2
-     * formed exactly by a two-product. */
-    if (!(x.hi > 0.0)) {
-        return elliptic_dd(x.hi == 0.0 ? 0.0 : NAN);
+    const EllipticDD y2 = elliptic_dd_mul(y, y);
+    const double z = y2.hi;
+    const double sin_bound = (want & WANT_SIN) ? 1.0 : 0.0, cos_bound = (want & WANT_COS) ? 1.0 : 0.0;
+    int J = 1;
+    for (double power = z; J < 14 && !(sin_bound * fabs(SIN_COEF[J - 1].hi) * power <= 1e-16
+                                        && cos_bound * fabs(COS_COEF[J - 1].hi) * power <= 1e-16); ++J) {
+        power *= z;
     }
-    if (isinf(x.hi)) {
-        return elliptic_dd(x.hi);
+    double tail_s = SIN_COEF[13].hi, tail_c = COS_COEF[13].hi;
+    for (int j = 12; j >= J - 1; --j) {
+        tail_s = SIN_COEF[j].hi + z * tail_s;
+        tail_c = COS_COEF[j].hi + z * tail_c;
     }
-    if (x.hi < 0x1p-900) {
-        /* keep the error terms of the two-product out of the subnormal range: scale by an
-         * even power of two (exact) */
-        EllipticDD scaled = {x.hi * 0x1p1000, x.lo * 0x1p1000};
-        EllipticDD root = elliptic_dd_sqrt(scaled);
-        root.hi *= 0x1p-500;
-        root.lo *= 0x1p-500;
-        return root;
+    const EllipticDD y4 = elliptic_dd_mul(y2, y2);
+    if (want & WANT_SIN) {
+        const EllipticDD p = horner_two_chains(SIN_COEF, J - 1, tail_s, y2, y4);
+        *sin_y = elliptic_dd_add(y, elliptic_dd_mul(elliptic_dd_mul(y, y2), p));
+    } else {
+        for (int j = J - 2; j >= 0; --j) {
+            tail_s = SIN_COEF[j].hi + z * tail_s;
+        }
+        *sin_y = elliptic_dd(y.hi + y.hi * z * tail_s);
     }
-    double s = sqrt(x.hi);
-    EllipticDD sq = elliptic_two_prod(s, s);
-    double correction = (((x.hi - sq.hi) - sq.lo) + x.lo) / (2.0 * s);
-    return fast_two_sum(s, correction);
+    if (want & WANT_COS) {
+        const EllipticDD q = horner_two_chains(COS_COEF, J - 1, tail_c, y2, y4);
+        *cos_y = elliptic_dd_add(elliptic_dd(1.0), elliptic_dd_mul(y2, q));
+    } else {
+        for (int j = J - 2; j >= 0; --j) {
+            tail_c = COS_COEF[j].hi + z * tail_c;
+        }
+        *cos_y = elliptic_dd(1.0 + z * tail_c);
+    }
 }
 
-/* x / d for a double d. */
-static EllipticDD dd_div_d(EllipticDD x, double d)
+/* n mod 4 for an integer-valued double n, without integer overflow. */
+static int quadrant_of(double n)
 {
-    return elliptic_dd_div(x, elliptic_dd(d));
+    return (int)(n - 4.0 * floor(0.25 * n));
 }
 
 void elliptic_dd_sincos(EllipticDD x, EllipticDD *sin_x, EllipticDD *cos_x)
@@ -96,36 +149,36 @@ void elliptic_dd_sincos(EllipticDD x, EllipticDD *sin_x, EllipticDD *cos_x)
         *sin_x = *cos_x = elliptic_dd(NAN);
         return;
     }
-    /* x = n pi/2 + y, |y| <= pi/4: y = x - n (pi/2)_hi - n (pi/2)_lo - n (pi/2)_lolo, the
-     * products n (pi/2)_hi and n (pi/2)_lo exact (two-product), n small. */
-    double n = nearbyint(x.hi / HALF_PI_HI);
-    EllipticDD y = elliptic_dd_add(x, elliptic_dd_neg(elliptic_two_prod(n, HALF_PI_HI)));
-    y = elliptic_dd_add(y, elliptic_dd_neg(elliptic_two_prod(n, HALF_PI_LO)));
-    y = elliptic_dd_add(y, elliptic_dd(-n * HALF_PI_LOLO));
-
-    /* Maclaurin series (A&S 4.3.65, 4.3.66), terms from the previous one:
-     * sin: t_{j+1} = -t_j y^2 / ((2j+2)(2j+3)),  cos: t_{j+1} = -t_j y^2 / ((2j+1)(2j+2)). */
-    EllipticDD y2 = elliptic_dd_mul(y, y);
-    EllipticDD sin_y = y, cos_y = elliptic_dd(1.0);
-    EllipticDD term_s = y, term_c = elliptic_dd(1.0);
-    for (int j = 0; j < 40; ++j) {
-        double a = 2.0 * j + 1.0;
-        term_s = dd_div_d(elliptic_dd_mul(term_s, y2), -(a + 1.0) * (a + 2.0));
-        term_c = dd_div_d(elliptic_dd_mul(term_c, y2), -a * (a + 1.0));
-        sin_y = elliptic_dd_add(sin_y, term_s);
-        cos_y = elliptic_dd_add(cos_y, term_c);
-        if (fabs(term_s.hi) <= 1e-34 * fabs(sin_y.hi) && fabs(term_c.hi) <= 1e-34) {
-            break;
-        }
-    }
-
+    double n;
+    EllipticDD sin_y, cos_y;
+    sincos_reduced(reduce_half_pi(x, &n), WANT_SIN | WANT_COS, &sin_y, &cos_y);
     /* sin(y + n pi/2), cos(y + n pi/2) by the quadrant n mod 4. */
-    const int quadrant = (int)(n - 4.0 * floor(0.25 * n));   /* n mod 4, no integer overflow */
-    switch (quadrant) {
+    switch (quadrant_of(n)) {
     case 0: *sin_x = sin_y;         *cos_x = cos_y;         break;
     case 1: *sin_x = cos_y;         *cos_x = elliptic_dd_neg(sin_y); break;
     case 2: *sin_x = elliptic_dd_neg(sin_y); *cos_x = elliptic_dd_neg(cos_y); break;
     default: *sin_x = elliptic_dd_neg(cos_y); *cos_x = sin_y;        break;
+    }
+}
+
+void elliptic_dd_cos_sin(EllipticDD x, EllipticDD *cos_x, double *sin_x)
+{
+    if (!isfinite(x.hi)) {
+        *cos_x = elliptic_dd(NAN);
+        *sin_x = NAN;
+        return;
+    }
+    double n;
+    const EllipticDD y = reduce_half_pi(x, &n);
+    const int quadrant = quadrant_of(n);
+    EllipticDD sin_y, cos_y;
+    /* cos x is +-cos y for even n, -+sin y for odd n: only that one in double-double */
+    sincos_reduced(y, (quadrant & 1) ? WANT_SIN : WANT_COS, &sin_y, &cos_y);
+    switch (quadrant) {
+    case 0: *sin_x = sin_y.hi;  *cos_x = cos_y;                   break;
+    case 1: *sin_x = cos_y.hi;  *cos_x = elliptic_dd_neg(sin_y);  break;
+    case 2: *sin_x = -sin_y.hi; *cos_x = elliptic_dd_neg(cos_y);  break;
+    default: *sin_x = -cos_y.hi; *cos_x = sin_y;                  break;
     }
 }
 
@@ -157,6 +210,42 @@ double elliptic_K(double m1)
     return ELLIPTIC_PI_HI / (a + b);
 }
 
+/* K from k' = sqrt(m1) in double-double (k' > 0): K = (pi/2) / AGM(1, k').
+ * The AGM runs in double-double until x = (a - b)/(a + b) <= 2^-15, then the mean of the
+ * close pair comes from its series: AGM(c (1 + x), c (1 - x)) = c (1 - x^2/4 - 5 x^4/64
+ * - 11 x^6/256 - 469 x^8/16384 - ...), c = (a + b)/2 (the Taylor series of
+ * AGM(1 + x, 1 - x) = 1 / 2F1(1/2, 1/2; 1; x^2), DLMF 19.8.5 with 19.5.1; coefficients
+ * checked with mpmath); the omitted terms are below 0.022 x^10 < 2^-155. x is formed in
+ * double-double from a - b (a.hi - b.hi exact by Sterbenz, a.lo - b.lo within 2^-106) and
+ * x^2/4 (below 2^-32) in double-double; the higher terms (below 2^-63) need a double only.
+ * This saves one to two square-root steps over running the means to |a - b| ~ 1e-17. */
+static EllipticDD K_dd_of_root(EllipticDD kc)
+{
+    EllipticDD a = elliptic_dd(1.0), b = kc;
+    EllipticDD agm = elliptic_dd(NAN);
+    for (int i = 0; i < 64; ++i) {
+        const EllipticDD sum = elliptic_dd_add(a, b);
+        const double diff_hi = a.hi - b.hi;
+        if (fabs(diff_hi) <= 0x1p-15 * sum.hi) {
+            const EllipticDD diff = elliptic_two_sum(diff_hi, a.lo - b.lo);
+            const EllipticDD x = elliptic_dd_div(diff, sum);
+            const EllipticDD x2 = elliptic_dd_mul(x, x);
+            const double t = x2.hi;
+            const double higher = t * t * (5.0 / 64.0 + t * (11.0 / 256.0 + t * (469.0 / 16384.0)));
+            const EllipticDD correction = elliptic_dd_add((EllipticDD){0.25 * x2.hi, 0.25 * x2.lo},
+                                                          elliptic_dd(higher));
+            const EllipticDD c = {0.5 * sum.hi, 0.5 * sum.lo};
+            agm = elliptic_dd_add(c, elliptic_dd_neg(elliptic_dd_mul(c, correction)));
+            break;
+        }
+        const EllipticDD a_next = {0.5 * sum.hi, 0.5 * sum.lo};
+        b = elliptic_dd_sqrt(elliptic_dd_mul(a, b));
+        a = a_next;
+    }
+    const EllipticDD half_pi = fast_two_sum(HALF_PI_HI, HALF_PI_LO);
+    return elliptic_dd_div(half_pi, agm);   /* K = (pi/2) / AGM */
+}
+
 EllipticDD elliptic_K_dd(EllipticDD m1)
 {
     if (!(m1.hi >= 0.0)) {
@@ -165,22 +254,7 @@ EllipticDD elliptic_K_dd(EllipticDD m1)
     if (m1.hi == 0.0) {
         return elliptic_dd(INFINITY);
     }
-    EllipticDD a = elliptic_dd(1.0);
-    EllipticDD b = elliptic_dd_sqrt(m1);
-    /* Same AGM in double-double; stop when |a - b| <= 1e-17 a: the final mean is then
-     * within ~1e-35 a of the limit. */
-    for (int i = 0; i < 64; ++i) {
-        EllipticDD diff = elliptic_dd_add(a, elliptic_dd_neg(b));
-        if (fabs(diff.hi) <= 1e-17 * a.hi) {
-            break;
-        }
-        EllipticDD a_next = elliptic_dd_mul(elliptic_dd_add(a, b), elliptic_dd(0.5));
-        b = elliptic_dd_sqrt(elliptic_dd_mul(a, b));
-        a = a_next;
-    }
-    EllipticDD agm = elliptic_dd_mul(elliptic_dd_add(a, b), elliptic_dd(0.5));
-    EllipticDD half_pi = fast_two_sum(HALF_PI_HI, HALF_PI_LO);
-    return elliptic_dd_div(half_pi, agm);   /* K = (pi/2) / AGM */
+    return K_dd_of_root(elliptic_dd_sqrt(m1));
 }
 
 double elliptic_RF(double x, double y, double z)
@@ -258,72 +332,77 @@ double elliptic_F(double phi, double m, double m1)
 
 int elliptic_param_init(EllipticParam *p, double m, double m1_hi, double m1_lo)
 {
+    return elliptic_param_init_root(p, m, m1_hi, m1_lo, NULL);
+}
+
+int elliptic_param_init_root(EllipticParam *p, double m, double m1_hi, double m1_lo, const EllipticDD *root)
+{
     if (p == NULL || !(m >= 0.0 && m <= 1.0) || !(m1_hi >= 0.0 && m1_hi <= 1.0)
         || !isfinite(m1_lo) || !(fabs(m + m1_hi - 1.0) <= 1e-12)) {
         return -1;
     }
-    EllipticParam q;
-    memset(&q, 0, sizeof q); /* padding too: the FMU checksums its states bytewise */
+    /* written in place once the inputs are accepted (no copy) */
+    EllipticParam *q = p;
+    memset(q, 0, sizeof *q); /* padding too: the FMU checksums its states bytewise */
     EllipticDD m1 = elliptic_two_sum(m1_hi, m1_lo);
-    q.m = m;
-    q.m1 = m1.hi;
-    q.k = sqrt(m);
-    q.kc = elliptic_dd_sqrt(m1).hi;
-    q.levels = 0;
+    q->m = m;
+    q->m1 = m1.hi;
+    q->k = sqrt(m);
+    const EllipticDD kc = root != NULL ? *root : elliptic_dd_sqrt(m1);
+    q->kc = kc.hi;
+    q->levels = 0;
     for (int i = 0; i < ELLIPTIC_MAX_LEVELS; ++i) {
-        q.landen_k[i] = 0.0;
-        q.landen_1pk[i] = 1.0;
-        q.landen_1mk[i] = 1.0;
+        q->landen_k[i] = 0.0;
+        q->landen_1pk[i] = 1.0;
+        q->landen_1mk[i] = 1.0;
     }
     if (m1.hi == 0.0) {
         /* m = 1: no Landen chain; sn = tanh, cn = dn = sech. */
-        q.K_hi = INFINITY;
-        q.K_lo = 0.0;
-        q.inv_K = 0.0;
-        q.K_head = INFINITY;
-        q.K_tail = 0.0;
-        q.bottom_scale = 1.0;
-        q.bottom_m = 1.0;
-        q.sqrt_k1 = 1.0;
-        memcpy(p, &q, sizeof q);
+        q->K_hi = INFINITY;
+        q->K_lo = 0.0;
+        q->inv_K = 0.0;
+        q->K_head = INFINITY;
+        q->K_tail = 0.0;
+        q->bottom_scale = 1.0;
+        q->bottom_m = 1.0;
+        q->sqrt_k1 = 1.0;
         return 0;
     }
-    EllipticDD K = elliptic_K_dd(m1);
-    q.K_hi = K.hi;
-    q.K_lo = K.lo;
-    q.inv_K = 1.0 / K.hi;
-    q.K_head = elliptic_head26(K.hi);   /* top 26 bits of K_hi; K_tail = the rest, exact */
-    q.K_tail = K.hi - q.K_head;
+    EllipticDD K = K_dd_of_root(kc);   /* elliptic_K_dd(m1), sharing the root */
+    q->K_hi = K.hi;
+    q->K_lo = K.lo;
+    q->inv_K = 1.0 / K.hi;
+    q->K_head = elliptic_head26(K.hi);   /* top 26 bits of K_hi; K_tail = the rest, exact */
+    q->K_tail = K.hi - q->K_head;
 
     /* Descending Landen sequence (A&S 16.12.1, DLMF 22.7.1; the AGM of A&S 16.4 normalised,
      * k_n = c_n / a_n, k'_n = b_n / a_n):
      *   k_{n+1} = (1 - k'_n) / (1 + k'_n) = m_n / (1 + k'_n)^2,
      *   1 - k_{n+1} = 2 k'_n / (1 + k'_n),   k'_{n+1} = 2 sqrt(k'_n) / (1 + k'_n),
      * each in the form that does not cancel. */
-    double kc_n = q.kc, m_n = m;
+    double kc_n = q->kc, m_n = m;
     int n = 0;
     while ((m_n > BOTTOM_M || n == 0) && n < ELLIPTIC_MAX_LEVELS) {   /* at least one level */
         double one_plus_kc = 1.0 + kc_n;
         double k_next = kc_n < 0.5 ? (1.0 - kc_n) / one_plus_kc
                                    : m_n / (one_plus_kc * one_plus_kc);
-        q.landen_k[n] = k_next;
-        q.landen_1pk[n] = 1.0 + k_next;
-        q.landen_1mk[n] = 2.0 * kc_n / one_plus_kc;
+        q->landen_k[n] = k_next;
+        q->landen_1pk[n] = 1.0 + k_next;
+        q->landen_1mk[n] = 2.0 * kc_n / one_plus_kc;
         kc_n = 2.0 * sqrt(kc_n) / one_plus_kc;
         m_n = k_next * k_next;
         ++n;
     }
-    q.levels = n;
-    q.sqrt_k1 = q.k / (1.0 + q.kc);   /* sqrt(k_1) = sqrt((1 - k')/(1 + k')) = k / (1 + k') */
-    q.bottom_m = m_n;
+    q->levels = n;
+    q->sqrt_k1 = q->k / (1.0 + q->kc);   /* sqrt(k_1) = sqrt((1 - k')/(1 + k')) = k / (1 + k') */
+    q->bottom_m = m_n;
     /* prod(1 + k_n) = K(m) / K(m_N) (descending Landen K(k) = (1 + k_1) K(k_1), DLMF
      * 19.8(ii), A&S 17.5), and
      * K(m_N) = pi/2 (1 + m_N/4 + 9 m_N^2/64 + ...)  (A&S 17.3.11): one division by K in
      * double-double instead of N rounded factors. */
     EllipticDD K_bottom = elliptic_dd_mul(fast_two_sum(HALF_PI_HI, HALF_PI_LO),
                                           elliptic_dd(1.0 + m_n * (0.25 + m_n * (9.0 / 64.0))));
-    q.bottom_scale = elliptic_dd_div(K_bottom, K).hi;
-    memcpy(p, &q, sizeof q);
+    q->bottom_scale = elliptic_dd_div(K_bottom, K).hi;
     return 0;
 }
 

@@ -33,6 +33,8 @@
 #define PENDULUM_ELLIPTIC_H
 
 #include <math.h>
+#include <stdint.h>
+#include <string.h>
 
 /* ---------------------------------------------------------------------------------------
  * Double-double arithmetic: a value is hi + lo with |lo| <= ulp(hi)/2 (Dekker, Numer. Math.
@@ -92,11 +94,55 @@ static inline EllipticDD elliptic_two_prod(double a, double b)
     return r;
 }
 
+/* Biased exponent field of x (0 for zero and subnormals, 0x7ff for inf and NaN). */
+static inline int elliptic_biased_exponent(double x)
+{
+    uint64_t bits;
+    memcpy(&bits, &x, sizeof bits);
+    return (int)((bits >> 52) & 0x7ff);
+}
+
+/* x 2^e, the value of ldexp(x, e): a multiplication by the power of two built from its bits
+ * (exact, or one rounding for a subnormal result, as ldexp) when 2^e is a normal double,
+ * else ldexp itself. Avoids a libm call in the set-up. */
+static inline double elliptic_ldexp(double x, int e)
+{
+    if (e >= -1022 && e <= 1023) {
+        const uint64_t bits = (uint64_t)(e + 1023) << 52;
+        double power;
+        memcpy(&power, &bits, sizeof power);
+        return x * power;
+    }
+    return ldexp(x, e);
+}
+
+/* The exponent frexp would give (x = f 2^e, 1/2 <= |f| < 1), from the bits for a normal x. */
+static inline int elliptic_frexp_exponent(double x)
+{
+    const int biased = elliptic_biased_exponent(x);
+    if (biased != 0 && biased != 0x7ff) {
+        return biased - 1022;
+    }
+    int exponent = 0;
+    (void)frexp(x, &exponent);
+    return exponent;
+}
+
 /* The leading 26 significant bits of x (truncated), so that head * n is exact for |n| < 2^27
- * and x - head is exact with at most 27 significant bits. Formed with frexp/ldexp/trunc, all
- * exact, so that no floating-point contraction can spoil it (unlike Veltkamp's split). */
+ * and x - head is exact with at most 27 significant bits. For a normal x the low 27 bits of
+ * the significand are cleared; otherwise formed with frexp/ldexp/trunc. Both are exact, so
+ * no floating-point contraction can spoil it (unlike Veltkamp's split). */
 static inline double elliptic_head26(double x)
 {
+    const int biased = elliptic_biased_exponent(x);
+    if (biased != 0 && biased != 0x7ff) {
+        uint64_t bits;
+        memcpy(&bits, &x, sizeof bits);
+        bits &= ~(((uint64_t)1 << 27) - 1);
+        double head;
+        memcpy(&head, &bits, sizeof head);
+        return head;
+    }
     int exponent;
     const double fraction = frexp(x, &exponent);
     return ldexp(trunc(ldexp(fraction, 26)), exponent - 26);
@@ -113,16 +159,82 @@ static inline double elliptic_nearest_integer(double x)
     return nearbyint(x);
 }
 
-/* x + y, x * y, x / y, sqrt(x) in double-double (relative error a few 2^-104). */
-EllipticDD elliptic_dd_add(EllipticDD x, EllipticDD y);
-EllipticDD elliptic_dd_mul(EllipticDD x, EllipticDD y);
-EllipticDD elliptic_dd_div(EllipticDD x, EllipticDD y);
-EllipticDD elliptic_dd_sqrt(EllipticDD x);      /* x >= 0 */
+/* x + y, x * y, x / y, sqrt(x) in double-double (relative error a few 2^-104; sqrt for
+ * x >= 0), static inline: the set-up runs long chains of them. */
+/* s + err = a + b exactly, valid when |a| >= |b| or a == 0 (Dekker's Fast2Sum). */
+static inline EllipticDD elliptic_fast_two_sum(double a, double b)
+{
+    EllipticDD r;
+    r.hi = a + b;
+    r.lo = b - (r.hi - a);
+    return r;
+}
+
+static inline EllipticDD elliptic_dd_add(EllipticDD x, EllipticDD y)
+{
+    /* Sum of the high parts and of the low parts, each error-free, then two renormalisations
+     * (the "accurate" double-double addition of Hida, Li and Bailey's QD library). */
+    EllipticDD s = elliptic_two_sum(x.hi, y.hi);
+    EllipticDD t = elliptic_two_sum(x.lo, y.lo);
+    s.lo += t.hi;
+    s = elliptic_fast_two_sum(s.hi, s.lo);
+    s.lo += t.lo;
+    return elliptic_fast_two_sum(s.hi, s.lo);
+}
+
+static inline EllipticDD elliptic_dd_mul(EllipticDD x, EllipticDD y)
+{
+    /* (xh + xl)(yh + yl) = xh yh (exact two-product) + xh yl + xl yh + O(2^-106). */
+    EllipticDD p = elliptic_two_prod(x.hi, y.hi);
+    p.lo += x.hi * y.lo + x.lo * y.hi;
+    return elliptic_fast_two_sum(p.hi, p.lo);
+}
+
+static inline EllipticDD elliptic_dd_div(EllipticDD x, EllipticDD y)
+{
+    /* Dekker's div2: q1 = x.hi / y.hi, the remainder x - q1 y with q1 y.hi exact (two-product;
+     * x.hi - p.hi is exact by Sterbenz), then q2 = remainder / y.hi. Relative error a few
+     * 2^-104 (Dekker 1971, section 8). */
+    const double q1 = x.hi / y.hi;
+    const EllipticDD p = elliptic_two_prod(q1, y.hi);
+    const double remainder = (((x.hi - p.hi) - p.lo) + x.lo) - q1 * y.lo;
+    return elliptic_fast_two_sum(q1, remainder / y.hi);
+}
+
+static inline EllipticDD elliptic_dd_sqrt(EllipticDD x)
+{
+    /* One Newton step from the double root s: sqrt(x) = s + (x - s^2) / (2 s), with s^2
+     * formed exactly by a two-product. */
+    if (!(x.hi > 0.0)) {
+        return elliptic_dd(x.hi == 0.0 ? 0.0 : NAN);
+    }
+    if (isinf(x.hi)) {
+        return elliptic_dd(x.hi);
+    }
+    if (x.hi < 0x1p-900) {
+        /* keep the error terms of the two-product out of the subnormal range: scale by an
+         * even power of two (exact) */
+        EllipticDD scaled = {x.hi * 0x1p1000, x.lo * 0x1p1000};
+        EllipticDD root = elliptic_dd_sqrt(scaled);
+        root.hi *= 0x1p-500;
+        root.lo *= 0x1p-500;
+        return root;
+    }
+    double s = sqrt(x.hi);
+    EllipticDD sq = elliptic_two_prod(s, s);
+    double correction = (((x.hi - sq.hi) - sq.lo) + x.lo) / (2.0 * s);
+    return elliptic_fast_two_sum(s, correction);
+}
+
 
 /* sin x and cos x for a double-double argument |x| <= 2 pi (relative accuracy ~1e-31, also
  * near the zeros): x = n pi/2 + y with pi/2 in three parts, |y| <= pi/4, Maclaurin series
  * of sin y and cos y (A&S 4.3.65-66) summed in double-double, then the quadrant. */
 void elliptic_dd_sincos(EllipticDD x, EllipticDD *sin_x, EllipticDD *cos_x);
+
+/* The same with only cos x in double-double and sin x as a double (within an ulp or so):
+ * about half the work, for callers that need the digits of one of the two only. */
+void elliptic_dd_cos_sin(EllipticDD x, EllipticDD *cos_x, double *sin_x);
 
 /* pi in three parts (pi = PI_HI + PI_LO + PI_LOLO to ~1e-48), generated with mpmath. */
 #define ELLIPTIC_PI_HI   0x1.921fb54442d18p+1
@@ -183,6 +295,11 @@ typedef struct {
  * 1 to within 1e-12. m1 == 0 (m = 1) is allowed: sn = tanh, cn = dn = sech, K = +inf. */
 int elliptic_param_init(EllipticParam *p, double m, double m1_hi, double m1_lo);
 
+/* The same with k' = sqrt(m1) given in double-double by the caller (root == NULL: formed
+ * from m1), for a caller that has it without a square root (the pendulum from rest:
+ * k' = cos(theta0/2)). */
+int elliptic_param_init_root(EllipticParam *p, double m, double m1_hi, double m1_lo, const EllipticDD *root);
+
 /* Reduces u = u_hi + u_lo to u = n K + r with n = nearest integer to u / K, so |r| <= K/2
  * (up to rounding of the quotient). Returns r; *quarters = n (an integer-valued double).
  * u_lo need not be small (it may hold a phase offset of a few K). K is used in double-double
@@ -233,8 +350,8 @@ typedef struct {
  *   S' = (1 + kk) S D,  C' = C E,  E' = (1 - kk) D^2 + kk C^2,  D' = D^2 + kk S^2,
  * products and sums of positive numbers only (for 0 <= v <= K/2). Renormalised when D
  * grows past ELLIPTIC_HOMOGENEOUS_RESCALE. */
-static inline EllipticHomogeneous elliptic_landen_step(const EllipticParam *p, int index,
-                                                       EllipticHomogeneous h)
+static inline EllipticHomogeneous elliptic_landen_step_plain(const EllipticParam *p, int index,
+                                                             EllipticHomogeneous h)
 {
     const double kk = p->landen_k[index];
     const double d2 = h.D * h.D;
@@ -243,6 +360,19 @@ static inline EllipticHomogeneous elliptic_landen_step(const EllipticParam *p, i
     up.C = h.C * h.E;
     up.E = p->landen_1mk[index] * d2 + kk * h.C * h.C;
     up.D = d2 + kk * h.S * h.S;
+    return up;
+}
+
+/* The largest number of levels for which no step can need the renormalisation: from the
+ * bottom (D = 1, |S| <= D) each step gives D' = D^2 + k S^2 <= 2.01 D^2, so after n steps
+ * D <= 2.01^(2^n - 1) < 2^130 < ELLIPTIC_HOMOGENEOUS_RESCALE for n <= 7 (the lock-step
+ * evaluation of several points relies on it). */
+#define ELLIPTIC_LEVELS_WITHOUT_RESCALE 7
+
+static inline EllipticHomogeneous elliptic_landen_step(const EllipticParam *p, int index,
+                                                       EllipticHomogeneous h)
+{
+    EllipticHomogeneous up = elliptic_landen_step_plain(p, index, h);
     if (up.D > ELLIPTIC_HOMOGENEOUS_RESCALE) {
         const double inv = 1.0 / up.D;
         up.S *= inv;
@@ -389,7 +519,7 @@ static inline double elliptic_atan_ratio(double y, double x)
 static inline double elliptic_atan_unit(double y, double x)
 {
     const double a = fabs(y), b = x;
-    const double w1 = (double)(a > ELLIPTIC_TAN_PI_8 * b), w0 = 1.0 - w1;  /* exact 0/1 */
+    const double w1 = a > ELLIPTIC_TAN_PI_8 * b ? 1.0 : 0.0, w0 = 1.0 - w1;  /* exact 0/1 */
     const double t = (w0 * a + w1 * (a - b)) / (w0 * b + w1 * (a + b));
     const double s = t * t;
     const double g = elliptic_atan_series(s);

@@ -2,10 +2,10 @@
  * documentation/math.html for the formulas).
  *
  * Initial state: theta0 = 2 pi j + th with th in (-pi, pi], s = sin(th/2), c = cos(th/2) >= 0,
- * q = omega0 / (2 w0). All of s, c, q and the complementary parameter are formed in
- * double-double, so K (and with it the period) is right to ~1e-30 relative for the binary
- * inputs: over 1e6 periods the phase needs K to better than 1e-18, which a double m1 (two
- * roundings of cos) does not give.
+ * q = omega0 / (2 w0). c, q and the complementary parameter (and s for a rotation, where
+ * it enters the parameter) are formed in double-double, so K (and with it the period) is
+ * right to ~1e-30 relative for the binary inputs: over 1e6 periods the phase needs K to
+ * better than 1e-18, which a double m1 (two roundings of cos) does not give.
  *
  * Libration, m = s^2 + q^2 < 1, m1 = (c - q)(c + q) > 0 (A&S 16 / documentation/math.html):
  *   sin(theta/2) = k sn u,  cos(theta/2) = dn u,  omega = 2 k w0 cn u,  u = w0 (t - t0) + u0,
@@ -38,6 +38,7 @@
 
 #include <math.h>
 #include <stddef.h>
+#include <stdint.h>
 #include <string.h>
 
 #define PI_HI   ELLIPTIC_PI_HI
@@ -60,8 +61,8 @@ static EllipticDD subtract_turns(EllipticDD x, double j)
 /* x * 2^exponent for a double-double (exact unless it overflows or underflows). */
 static EllipticDD dd_ldexp(EllipticDD x, int exponent)
 {
-    x.hi = ldexp(x.hi, exponent);
-    x.lo = ldexp(x.lo, exponent);
+    x.hi = elliptic_ldexp(x.hi, exponent);
+    x.lo = elliptic_ldexp(x.lo, exponent);
     return x;
 }
 
@@ -282,7 +283,214 @@ static int m1_near_separatrix(double theta0, double turns, double half_speed, El
     return 0;
 }
 
-/* The solution for w0 in double-double (w0.hi > 0 finite); see pendulum_exact_init. */
+/* What the set-up knows about the initial state once the angle is reduced and the speeds are
+ * scaled (the named steps of exact_init_dd below pass it along). */
+typedef struct {
+    double turns;         /* theta0 = 2 pi turns + th */
+    EllipticDD th;        /* th in (-pi, pi] */
+    EllipticDD s;         /* sin(th/2): the leading double only (s.lo = 0); init_rotation,
+                             the one step that needs its digits, forms it again in full */
+    EllipticDD c;         /* cos(th/2) >= 0, double-double */
+    int exponent;         /* common power of two of the rates: w_n = w0 2^-exponent, ... */
+    EllipticDD w_n;       /* w0 2^-exponent */
+    double hs_n;          /* |omega0|/2 2^-exponent, exact */
+    EllipticDD c_w;       /* c w_n */
+    EllipticDD gap;       /* c w_n - hs_n = w_n (c - |q|): the sign of m1 */
+    EllipticDD m1_fine;   /* m1 in triple-double precision (when fine) */
+    int fine;             /* 1 when m1_fine holds m1 (within 2^-30 of the separatrix speed) */
+} InitialState;
+
+/* Step 1. theta0 = 2 pi j + th, th in (-pi, pi] (double-double), and sin, cos of th/2. One
+ * subtraction of whole turns does it for |theta0| < 2^50 (j < 2^48, j 2 pi exact in three
+ * parts); beyond, the reduction with 1/(2 pi) to 1248 bits (Payne-Hanek, above) for every
+ * finite double. For |theta0| <= 3.2 nothing is subtracted and th/2 is exact. */
+static void reduce_initial_angle(double theta0, InitialState *st)
+{
+    double turns = 0.0;
+    EllipticDD th = elliptic_dd(theta0);
+    if (fabs(theta0) >= 0x1p50) {
+        th = reduce_large_angle(theta0, &turns);
+    }
+    for (int round = 0; round < 8 && !(fabs(th.hi) <= 3.2); ++round) {
+        const double j = nearbyint(th.hi / (2.0 * PI_HI));
+        th = subtract_turns(th, j);
+        turns += j;
+    }
+    EllipticDD half = {0.5 * th.hi, 0.5 * th.lo};   /* exact */
+    EllipticDD s = elliptic_dd(0.0), c;
+    elliptic_dd_cos_sin(half, &c, &s.hi);
+    if (c.hi < 0.0 || (c.hi == 0.0 && th.hi < 0.0)) {
+        /* th just outside (-pi, pi]: move it by one turn; th/2 moves by pi, s and c change sign. */
+        double shift = th.hi > 0.0 ? 1.0 : -1.0;
+        turns += shift;
+        th = subtract_turns(th, shift);
+        s = elliptic_dd_neg(s);
+        c = elliptic_dd_neg(c);
+    }
+    st->turns = turns;
+    st->th = th;
+    st->s = s;
+    st->c = c;
+}
+
+/* Step 2. The side of the separatrix. Only the ratio q = |omega0| / (2 w0) enters m and m1,
+ * so w0 and |omega0|/2 are scaled by a common power of two that puts the larger in [1/2, 1):
+ * the double-double products below then stay far from overflow (Dekker's split needs
+ * |x| < 2^996) for any inputs. Rates come back to seconds by the inverse power of two.
+ * The sign of m1 = cos^2(th/2) - q^2 is that of w0 c - |omega0|/2; within 2^-30 of the
+ * separatrix speed m1 itself is formed in triple-double (above): its sign decides the
+ * regime and its digits the period. */
+static void locate_separatrix(double theta0, double omega0, EllipticDD w0, double g, double L,
+                              InitialState *st)
+{
+    const double half_speed = 0.5 * fabs(omega0);          /* |omega0| / 2, exact */
+    const int exponent = elliptic_frexp_exponent(fmax(w0.hi, half_speed));
+    st->exponent = exponent;
+    st->w_n = dd_ldexp(w0, -exponent);
+    st->hs_n = elliptic_ldexp(half_speed, -exponent);
+    st->c_w = elliptic_dd_mul(st->c, st->w_n);
+    st->gap = dd_sub(st->c_w, elliptic_dd(st->hs_n));
+    st->m1_fine = elliptic_dd(0.0);
+    st->fine = 0;
+    if (fabs(st->gap.hi) < 0x1p-30 * st->hs_n) {
+        const EllipticDD num = g > 0.0 ? elliptic_dd(g) : elliptic_two_prod(w0.hi, w0.hi);
+        st->fine = m1_near_separatrix(theta0, st->turns, half_speed, num, g > 0.0 ? L : 1.0,
+                                      &st->m1_fine) == 0;
+    }
+}
+
+/* Step 3a. Libration (m1 > 0): w_n >= 1/2 here, q = |omega0| / (2 w0) <= c <= 1.
+ * Returns 0, 1 when m1 underflowed (the caller treats it as the separatrix), -1 on failure.
+ * *rate_n is the rate of u scaled by 2^-exponent. */
+static int init_libration(PendulumExact *e, double omega0, EllipticDD w0, const InitialState *st,
+                          EllipticDD *rate_n)
+{
+    const EllipticDD s = st->s, c = st->c;
+    const int from_rest = omega0 == 0.0;
+    /* From rest q = 0 and m1 = c^2; else m1 = (c - q)(c + q) = (gap / w_n)(c + q). */
+    const EllipticDD q = from_rest ? elliptic_dd(0.0) : elliptic_dd_div(elliptic_dd(st->hs_n), st->w_n);
+    EllipticDD m1;
+    if (st->fine) {
+        m1 = st->m1_fine;
+    } else if (from_rest) {
+        m1 = elliptic_dd_mul(c, c);
+    } else {
+        m1 = elliptic_dd_mul(elliptic_dd_div(st->gap, st->w_n), elliptic_dd_add(c, q));
+    }
+    if (!(m1.hi > 0.0)) {
+        return 1;
+    }
+    e->regime = PENDULUM_LIBRATION;
+    const double k = hypot(s.hi, q.hi);        /* sqrt(m) = sqrt(s^2 + q^2), no underflow */
+    const double m = fmin(k * k, 1.0);
+    /* from rest (and not next to the separatrix) k' = sqrt(m1) = c itself */
+    const int root_known = from_rest && !st->fine;
+    if (elliptic_param_init_root(&e->ell, m, m1.hi, m1.lo, root_known ? &c : NULL) != 0) {
+        return -1;
+    }
+    e->m = m;
+    e->m1 = m1.hi;
+    e->k = k;
+    e->kc = e->ell.kc;
+    e->K_hi = e->ell.K_hi;
+    e->K_lo = e->ell.K_lo;
+    e->scale = w0.hi;
+    e->scale_lo = w0.lo;
+    *rate_n = st->w_n;
+    e->omega_half = k * w0.hi;
+    e->sqrt_k1 = k / (1.0 + e->ell.kc);   /* sqrt(k_1) = k / (1 + k'), no underflow of k^2 */
+    if (k == 0.0) {
+        e->u0 = 0.0;                          /* at rest at the bottom: theta = 0 */
+    } else if (from_rest) {
+        e->u0 = s.hi < 0.0 ? -e->K_hi : e->K_hi;   /* released at a turning point: u0 = +-K */
+    } else {
+        const double s_k = fabs(s.hi) / k, q_k = q.hi / k;
+        /* F(|phi0| | m) = (|s|/k) R_F((q/k)^2, c^2, 1) (DLMF 19.25.5, scaled). */
+        const double f = s_k * elliptic_RF(q_k * q_k, c.hi * c.hi, 1.0);
+        /* omega0 < 0: |phi0| = pi - atan2(|s|, |q|), F = 2K - F(pi - |phi0|). */
+        const double base = omega0 >= 0.0 ? f : (2.0 * e->K_hi - f) + 2.0 * e->K_lo;
+        e->u0 = s.hi < 0.0 ? -base : base;
+    }
+    return 0;
+}
+
+/* Step 3b. Rotation (m1 < 0, omega0 != 0). Ratios to |omega0|/2: rho = s/|q|, gamma = c/|q| < 1
+ * (hs_n > c w_n, and c >= ~1e-33, so hs_n is not tiny). */
+static int init_rotation(PendulumExact *e, double omega0, const InitialState *st, EllipticDD *rate_n)
+{
+    const EllipticDD half = {0.5 * st->th.hi, 0.5 * st->th.lo};   /* exact */
+    EllipticDD s, c_again;
+    elliptic_dd_sincos(half, &s, &c_again);   /* sin(th/2) in double-double */
+    const EllipticDD c = st->c, w_n = st->w_n;
+    const double hs_n = st->hs_n;
+    e->regime = PENDULUM_ROTATION;
+    e->direction = omega0 > 0.0 ? 1.0 : -1.0;
+    const EllipticDD hs = elliptic_dd(hs_n);
+    EllipticDD rho = elliptic_dd_div(elliptic_dd_mul(s, w_n), hs);
+    EllipticDD one_plus_rho2 = elliptic_dd_add(elliptic_dd(1.0), elliptic_dd_mul(rho, rho));
+    EllipticDD mu1;
+    if (st->fine) {
+        /* mu1 = -m1 mu, mu = (w_n / hs)^2 / (1 + rho^2) */
+        const EllipticDD w_hs_dd = elliptic_dd_div(w_n, hs);
+        mu1 = elliptic_dd_mul(elliptic_dd_neg(st->m1_fine),
+                              elliptic_dd_div(elliptic_dd_mul(w_hs_dd, w_hs_dd), one_plus_rho2));
+    } else {
+        /* mu1 = -m1/m = (q^2 - c^2)/(q^2 + s^2) = (1 - gamma)(1 + gamma)/(1 + rho^2). */
+        const EllipticDD one_minus_gamma = elliptic_dd_div(elliptic_dd_neg(st->gap), hs);  /* (|q| - c)/|q| */
+        const EllipticDD gamma = elliptic_dd_div(st->c_w, hs);
+        mu1 = elliptic_dd_div(elliptic_dd_mul(one_minus_gamma, elliptic_dd_add(elliptic_dd(1.0), gamma)),
+                              one_plus_rho2);
+    }
+    /* mu = 1/m = 1/(q^2 (1 + rho^2)). */
+    const double w_hs = w_n.hi / hs_n;
+    const double mu = fmin(w_hs * w_hs / one_plus_rho2.hi, 1.0);
+    if (elliptic_param_init(&e->ell, mu, mu1.hi, mu1.lo) != 0) {
+        return -1;
+    }
+    /* sqrt(m) w0 = |q| w0 sqrt(1 + rho^2) = (|omega0|/2) sqrt(1 + rho^2). */
+    *rate_n = elliptic_dd_mul(hs, elliptic_dd_sqrt(one_plus_rho2));
+    const EllipticDD rate = dd_ldexp(*rate_n, st->exponent);
+    e->m = 1.0 / mu;
+    e->m1 = -mu1.hi / mu;
+    e->k = e->ell.k;
+    e->kc = e->ell.kc;
+    e->K_hi = e->ell.K_hi;
+    e->K_lo = e->ell.K_lo;
+    e->scale = rate.hi;
+    e->scale_lo = rate.lo;
+    e->omega_half = rate.hi;
+    /* v0 = F(th/2 | mu) for the mirrored motion (direction * th), DLMF 19.25.5. */
+    e->u0 = e->direction * s.hi * elliptic_RF(c.hi * c.hi, 1.0 / one_plus_rho2.hi, 1.0);
+    return 0;
+}
+
+/* Step 4. Rate and initial phase in quarter periods: rho = scale / K, x0 = u0 / K; the period
+ * 4K / w0 (libration) or 2K / rate (one revolution, rotation), all in double-double. A
+ * libration released from rest starts at a turning point, x0 = +-1 exactly. */
+static void set_quarter_rates(PendulumExact *e, EllipticDD rate_n, int exponent, int from_rest)
+{
+    const EllipticDD K = {e->K_hi, e->K_lo};
+    const EllipticDD rho = dd_ldexp(elliptic_dd_div(rate_n, K), exponent);
+    EllipticDD x0;
+    if (from_rest && e->regime == PENDULUM_LIBRATION && e->u0 != 0.0) {
+        x0 = elliptic_dd(e->u0 < 0.0 ? -1.0 : 1.0);
+    } else {
+        x0 = elliptic_dd_div(elliptic_dd(e->u0), K);
+    }
+    e->rho_hi = rho.hi;
+    e->rho_lo = rho.lo;
+    e->rho_head = elliptic_head26(rho.hi);
+    e->rho_tail = rho.hi - e->rho_head;
+    e->x0_hi = x0.hi;
+    e->x0_lo = x0.lo;
+    const double quarters_per_period = e->regime == PENDULUM_LIBRATION ? 4.0 : 2.0;
+    const EllipticDD quarters_K = {quarters_per_period * K.hi, quarters_per_period * K.lo};  /* exact */
+    e->period = elliptic_ldexp(elliptic_dd_div(quarters_K, rate_n).hi, -exponent);
+}
+
+/* The solution for w0 in double-double (w0.hi > 0 finite); see pendulum_exact_init. The
+ * steps: reduce the angle (1), find the side of the separatrix (2), the constants of the
+ * regime (3a, 3b or init_separatrix), the rates in quarter periods (4). */
 static int exact_init_dd(PendulumExact *ex, double theta0, double omega0, EllipticDD w0, double t0,
                          double g, double L)
 {
@@ -297,150 +505,27 @@ static int exact_init_dd(PendulumExact *ex, double theta0, double omega0, Ellipt
     e.omega0 = omega0;
     e.direction = 1.0;
 
-    /* theta0 = 2 pi j + th, th in (-pi, pi] (double-double). One subtraction of whole turns
-     * does it for |theta0| < 2^50 (j < 2^48, j 2 pi exact in three parts); beyond, the
-     * reduction with 1/(2 pi) to 1248 bits (Payne-Hanek, above) for every finite double. */
-    double turns = 0.0;
-    EllipticDD th = elliptic_dd(theta0);
-    if (fabs(theta0) >= 0x1p50) {
-        th = reduce_large_angle(theta0, &turns);
-    }
-    for (int round = 0; round < 8 && !(fabs(th.hi) <= 3.2); ++round) {
-        const double j = nearbyint(th.hi / (2.0 * PI_HI));
-        th = subtract_turns(th, j);
-        turns += j;
-    }
-    EllipticDD half = elliptic_dd_mul(th, elliptic_dd(0.5));
-    EllipticDD s, c;
-    elliptic_dd_sincos(half, &s, &c);
-    if (c.hi < 0.0 || (c.hi == 0.0 && th.hi < 0.0)) {
-        /* th just outside (-pi, pi]: move it by one turn; th/2 moves by pi, s and c change sign. */
-        double shift = th.hi > 0.0 ? 1.0 : -1.0;
-        turns += shift;
-        th = subtract_turns(th, shift);
-        s = elliptic_dd_neg(s);
-        c = elliptic_dd_neg(c);
-    }
-    e.theta_turns = turns;
-    e.theta_reduced = th.hi;
+    InitialState st;
+    reduce_initial_angle(theta0, &st);
+    e.theta_turns = st.turns;
+    e.theta_reduced = st.th.hi;
+    locate_separatrix(theta0, omega0, w0, g, L, &st);
+    const double side = st.fine ? st.m1_fine.hi : st.gap.hi;   /* the sign of m1 */
 
-    /* Only the ratio q = |omega0| / (2 w0) enters m and m1, so w0 and |omega0|/2 are scaled
-     * by a common power of two that puts the larger in [1/2, 1): the double-double products
-     * below then stay far from overflow (Dekker's split needs |x| < 2^996) for any inputs.
-     * Rates come back to seconds by the inverse power of two. */
-    const double half_speed = 0.5 * fabs(omega0);          /* |omega0| / 2, exact */
-    int exponent;
-    (void)frexp(fmax(w0.hi, half_speed), &exponent);
-    const EllipticDD w_n = dd_ldexp(w0, -exponent);
-    const double hs_n = ldexp(half_speed, -exponent);
-    /* Sign of m1 = cos^2(th/2) - q^2 is that of w0 c - |omega0|/2, formed exactly enough. */
-    const EllipticDD c_w = elliptic_dd_mul(c, w_n);
-    const EllipticDD gap = dd_sub(c_w, elliptic_dd(hs_n));         /* = w_n (c - |q|) */
-    EllipticDD rate_n;                                     /* rate of u, scaled by 2^-exponent */
-    /* Within 2^-30 of the separatrix speed, m1 itself in triple-double (above): its sign
-     * decides the regime and its digits the period. */
-    EllipticDD m1_fine = elliptic_dd(0.0);
-    int fine = 0;
-    if (fabs(gap.hi) < 0x1p-30 * hs_n) {
-        const EllipticDD num = g > 0.0 ? elliptic_dd(g) : elliptic_two_prod(w0.hi, w0.hi);
-        fine = m1_near_separatrix(theta0, turns, half_speed, num, g > 0.0 ? L : 1.0, &m1_fine) == 0;
-    }
-    const double side = fine ? m1_fine.hi : gap.hi;        /* the sign of m1 */
-
+    EllipticDD rate_n = elliptic_dd(0.0);
+    int status = 1;                        /* 1: the separatrix */
     if (side > 0.0) {
-        /* Libration: w_n >= 1/2 here, q = |omega0| / (2 w0) <= c <= 1. */
-        EllipticDD q = elliptic_dd_div(elliptic_dd(hs_n), w_n);
-        EllipticDD m1 = fine ? m1_fine : elliptic_dd_mul(elliptic_dd_div(gap, w_n), elliptic_dd_add(c, q));
-        if (m1.hi > 0.0) {
-            e.regime = PENDULUM_LIBRATION;
-            double k = hypot(s.hi, q.hi);        /* sqrt(m) = sqrt(s^2 + q^2), no underflow */
-            double m = fmin(k * k, 1.0);
-            if (elliptic_param_init(&e.ell, m, m1.hi, m1.lo) != 0) {
-                return -1;
-            }
-            e.m = m;
-            e.m1 = m1.hi;
-            e.k = k;
-            e.kc = e.ell.kc;
-            e.K_hi = e.ell.K_hi;
-            e.K_lo = e.ell.K_lo;
-            e.scale = w0.hi;
-            e.scale_lo = w0.lo;
-            rate_n = w_n;
-            e.omega_half = k * w0.hi;
-            e.sqrt_k1 = k / (1.0 + e.ell.kc);   /* sqrt(k_1) = k / (1 + k'), no underflow of k^2 */
-            if (k == 0.0) {
-                e.u0 = 0.0;                          /* at rest at the bottom: theta = 0 */
-            } else {
-                double s_k = fabs(s.hi) / k, q_k = q.hi / k;
-                /* F(|phi0| | m) = (|s|/k) R_F((q/k)^2, c^2, 1) (DLMF 19.25.5, scaled). */
-                double f = s_k * elliptic_RF(q_k * q_k, c.hi * c.hi, 1.0);
-                /* omega0 < 0: |phi0| = pi - atan2(|s|, |q|), F = 2K - F(pi - |phi0|). */
-                double base = omega0 >= 0.0 ? f : (2.0 * e.K_hi - f) + 2.0 * e.K_lo;
-                e.u0 = s.hi < 0.0 ? -base : base;
-            }
-        } else {
-            init_separatrix(&e, s, c, omega0, w0);   /* m1 underflowed: treat as m1 == 0 */
-        }
+        status = init_libration(&e, omega0, w0, &st, &rate_n);
     } else if (side < 0.0) {
-        /* Rotation (omega0 != 0 here). Ratios to |omega0|/2: rho = s/|q|, gamma = c/|q| < 1
-         * (hs_n > c w_n, and c >= ~1e-33, so hs_n is not tiny). */
-        e.regime = PENDULUM_ROTATION;
-        e.direction = omega0 > 0.0 ? 1.0 : -1.0;
-        const EllipticDD hs = elliptic_dd(hs_n);
-        EllipticDD rho = elliptic_dd_div(elliptic_dd_mul(s, w_n), hs);
-        EllipticDD one_plus_rho2 = elliptic_dd_add(elliptic_dd(1.0), elliptic_dd_mul(rho, rho));
-        EllipticDD one_minus_gamma = elliptic_dd_div(elliptic_dd_neg(gap), hs);  /* (|q| - c)/|q| */
-        EllipticDD gamma = elliptic_dd_div(c_w, hs);
-        /* mu1 = -m1/m = (q^2 - c^2)/(q^2 + s^2) = (1 - gamma)(1 + gamma)/(1 + rho^2). */
-        EllipticDD mu1 = elliptic_dd_div(
-            elliptic_dd_mul(one_minus_gamma, elliptic_dd_add(elliptic_dd(1.0), gamma)), one_plus_rho2);
-        if (fine) {
-            /* mu1 = -m1 mu, mu = (w_n / hs)^2 / (1 + rho^2) */
-            const EllipticDD w_hs_dd = elliptic_dd_div(w_n, hs);
-            mu1 = elliptic_dd_mul(elliptic_dd_neg(m1_fine),
-                                  elliptic_dd_div(elliptic_dd_mul(w_hs_dd, w_hs_dd), one_plus_rho2));
-        }
-        /* mu = 1/m = 1/(q^2 (1 + rho^2)). */
-        double w_hs = w_n.hi / hs_n;
-        double mu = fmin(w_hs * w_hs / one_plus_rho2.hi, 1.0);
-        if (elliptic_param_init(&e.ell, mu, mu1.hi, mu1.lo) != 0) {
-            return -1;
-        }
-        /* sqrt(m) w0 = |q| w0 sqrt(1 + rho^2) = (|omega0|/2) sqrt(1 + rho^2). */
-        rate_n = elliptic_dd_mul(hs, elliptic_dd_sqrt(one_plus_rho2));
-        EllipticDD rate = dd_ldexp(rate_n, exponent);
-        e.m = 1.0 / mu;
-        e.m1 = -mu1.hi / mu;
-        e.k = e.ell.k;
-        e.kc = e.ell.kc;
-        e.K_hi = e.ell.K_hi;
-        e.K_lo = e.ell.K_lo;
-        e.scale = rate.hi;
-        e.scale_lo = rate.lo;
-        e.omega_half = rate.hi;
-        /* v0 = F(th/2 | mu) for the mirrored motion (direction * th), DLMF 19.25.5. */
-        e.u0 = e.direction * s.hi * elliptic_RF(c.hi * c.hi, 1.0 / one_plus_rho2.hi, 1.0);
-    } else {
-        init_separatrix(&e, s, c, omega0, w0);
+        status = init_rotation(&e, omega0, &st, &rate_n);
     }
-    if (e.regime != PENDULUM_SEPARATRIX) {
-        /* Rate and initial phase in quarter periods: rho = scale / K, x0 = u0 / K; the period
-         * 4K / w0 (libration) or 2K / rate (one revolution, rotation), all in double-double. */
-        EllipticDD K;
-        K.hi = e.K_hi;
-        K.lo = e.K_lo;
-        EllipticDD rho = dd_ldexp(elliptic_dd_div(rate_n, K), exponent);
-        EllipticDD x0 = elliptic_dd_div(elliptic_dd(e.u0), K);
-        e.rho_hi = rho.hi;
-        e.rho_lo = rho.lo;
-        e.rho_head = elliptic_head26(rho.hi);
-        e.rho_tail = rho.hi - e.rho_head;
-        e.x0_hi = x0.hi;
-        e.x0_lo = x0.lo;
-        const double quarters_per_period = e.regime == PENDULUM_LIBRATION ? 4.0 : 2.0;
-        e.period = ldexp(elliptic_dd_div(elliptic_dd_mul(K, elliptic_dd(quarters_per_period)), rate_n).hi,
-                         -exponent);
+    if (status < 0) {
+        return -1;
+    }
+    if (status == 1) {
+        init_separatrix(&e, st.s, st.c, omega0, w0);   /* also when m1 underflowed */
+    } else {
+        set_quarter_rates(&e, rate_n, st.exponent, omega0 == 0.0);
     }
     memcpy(ex, &e, sizeof e); /* bytewise, padding included (see fmi2_state.c) */
     return 0;
@@ -465,13 +550,13 @@ int pendulum_exact_init_gl(PendulumExact *ex, double theta0, double omega0, doub
      * the one of those doubles, not of fl(sqrt(fl(g / L))) (whose two roundings moved states
      * within ~1e-16 of the separatrix to the other side). Scaled by powers of two so that
      * neither the quotient nor Dekker's split overflows or underflows. */
-    int eg, eL;
-    const double gm = frexp(g, &eg), Lm = frexp(L, &eL);
+    const int eg = elliptic_frexp_exponent(g), eL = elliptic_frexp_exponent(L);
+    const double gm = elliptic_ldexp(g, -eg), Lm = elliptic_ldexp(L, -eL);   /* frexp's fractions */
     int shift = eg - eL;                               /* g / L = (gm / Lm) 2^shift */
     if (shift & 1) {
         shift -= 1;                                    /* even, so that the root halves it */
     }
-    const EllipticDD ratio = elliptic_dd_div(elliptic_dd(ldexp(gm, eg - eL - shift)), elliptic_dd(Lm));
+    const EllipticDD ratio = elliptic_dd_div(elliptic_dd(elliptic_ldexp(gm, eg - eL - shift)), elliptic_dd(Lm));
     EllipticDD w0 = dd_ldexp(elliptic_dd_sqrt(ratio), shift / 2);
     if (!(w0.hi > 0.0) || !isfinite(w0.hi)) {
         return -1;                                     /* g / L overflows or underflows */
@@ -628,6 +713,153 @@ void pendulum_exact_eval(const PendulumExact *ex, double t, double *theta, doubl
         *theta = ex->theta0 + add_half_turns(winding, angle - ex->theta_reduced);
     }
     *omega = om;
+}
+
+/* ---------------------------------------------------------------------------------------
+ * Several points in lock-step. pendulum_exact_eval spends most of its time waiting on
+ * divisions and on the chain of Landen steps of one point; EXACT_LANES points of the same
+ * libration run here stage by stage, each stage a short loop over the lanes (independent
+ * chains the processor overlaps, and loops the compiler may vectorise at the platform's
+ * baseline). Every lane performs the same operations in the same order as
+ * pendulum_exact_eval (the shared kernels of elliptic.h), so the results are bit for bit
+ * the scalar ones. A block with any point off the common path (t == t0, a phase beyond
+ * 2^50 quarter periods or not finite, a bottom argument past the series) and every motion
+ * other than a libration with at most ELLIPTIC_LEVELS_WITHOUT_RESCALE Landen levels and
+ * |theta_turns| < 2^50 go through pendulum_exact_eval.
+ * --------------------------------------------------------------------------------------- */
+#define EXACT_LANES 16
+
+/* 1 when the block of EXACT_LANES points went through, 0 when it needs the scalar path
+ * (nothing written then). The lanes are held as arrays per quantity and every stage is a
+ * loop of plain double arithmetic over them (no branch, no integer), which the compiler
+ * vectorises at the platform's baseline (SSE2 on x86-64); the checks for the common path
+ * are separate loops. */
+static int eval_libration_lanes(const PendulumExact *ex, const double *t, double *theta, double *omega)
+{
+    const EllipticParam *p = &ex->ell;
+    const double t0 = ex->t0, rho_hi = ex->rho_hi, rho_lo = ex->rho_lo, x0_hi = ex->x0_hi, x0_lo = ex->x0_lo;
+    double tau_hi[EXACT_LANES], tau_lo[EXACT_LANES], x_hi[EXACT_LANES];
+    for (int l = 0; l < EXACT_LANES; ++l) {
+        const EllipticDD tau = elliptic_two_sum(t[l], -t0);
+        tau_hi[l] = tau.hi;
+        tau_lo[l] = tau.lo;
+        x_hi[l] = rho_hi * tau.hi;
+    }
+    for (int l = 0; l < EXACT_LANES; ++l) {
+        /* not t == t0, and a finite phase below 2^50 quarter periods */
+        if (t[l] == t0 || !(fabs(x_hi[l]) < 0x1p50)) {
+            return 0;
+        }
+    }
+    /* phase_quarters, the branch below 2^50 quarter periods; the quarter n mod 4 as the
+     * weights of pendulum_exact_eval (odd, sign), from r = n - 4 nearest(n/4) in {-2..2}:
+     * odd = [r = +-1] = r^2 (4 - r^2)/3, [n mod 4 in {2, 3}] = [r = +-2] + [r = -1]
+     * = r^2 (r^2 - 1)/12 + odd (1 - r)/2, all exact small integers */
+    double v[EXACT_LANES], z[EXACT_LANES], odd[EXACT_LANES], sign[EXACT_LANES], flips[EXACT_LANES];
+    for (int l = 0; l < EXACT_LANES; ++l) {
+#ifdef FP_FAST_FMA
+        const double x_lo = fma(rho_hi, tau_hi[l], -x_hi[l]);
+#else
+        const double tau_split = 134217729.0 * tau_hi[l];
+        const double tau_head = tau_split - (tau_split - tau_hi[l]), tau_tail = tau_hi[l] - tau_head;
+        const double x_lo = ((ex->rho_head * tau_head - x_hi[l]) + ex->rho_head * tau_tail
+                             + ex->rho_tail * tau_head) + ex->rho_tail * tau_tail;
+#endif
+        /* elliptic_nearest_integer: |x_hi + x0_hi| < 2^50 + 2 here */
+        const double quarters = (x_hi[l] + x0_hi + 0x1.8p52) - 0x1.8p52;
+        const double fraction = ((x_hi[l] - quarters) + x0_hi)
+                                + (x_lo + (rho_hi * tau_lo[l] + rho_lo * tau_hi[l]) + x0_lo);
+        const double r = quarters - 4.0 * ((0.25 * quarters + 0x1.8p52) - 0x1.8p52);
+        const double r2 = r * r;
+        odd[l] = r2 * (4.0 - r2) / 3.0;
+        sign[l] = 1.0 - 2.0 * (r2 * (r2 - 1.0) / 12.0 + odd[l] * (1.0 - r) * 0.5);
+        v[l] = fraction * ex->K_hi;
+        z[l] = fabs(v[l]) * p->bottom_scale;
+        flips[l] = v[l] < 0.0 ? -1.0 : 1.0;   /* sn is odd: pendulum_exact_eval's (v < 0) flip */
+    }
+    for (int l = 0; l < EXACT_LANES; ++l) {
+        if (!(z[l] <= ELLIPTIC_SERIES_Z_MAX)) {
+            return 0;
+        }
+    }
+    /* elliptic_sncndn_homogeneous_pair: the bottom level, the steps up to level 1, level 0 */
+    double S[EXACT_LANES], C[EXACT_LANES], E[EXACT_LANES], D[EXACT_LANES];
+    const double bottom_m = p->bottom_m;
+    for (int l = 0; l < EXACT_LANES; ++l) {
+        double sz, cz;
+        elliptic_sincos_series(z[l], &sz, &cz);
+        const double w = 0.25 * bottom_m * (z[l] - sz * cz);
+        S[l] = sz - w * cz;
+        C[l] = cz + w * sz;
+        E[l] = 1.0 - 0.5 * bottom_m * sz * sz;
+        D[l] = 1.0;
+    }
+    for (int i = p->levels - 1; i >= 1; --i) {
+        const double kk = p->landen_k[i], one_plus = p->landen_1pk[i], one_minus = p->landen_1mk[i];
+        for (int l = 0; l < EXACT_LANES; ++l) {
+            /* elliptic_landen_step_plain, operation for operation */
+            const double d2 = D[l] * D[l];
+            const double S_up = one_plus * S[l] * D[l];
+            const double C_up = C[l] * E[l];
+            const double E_up = one_minus * d2 + kk * C[l] * C[l];
+            const double D_up = d2 + kk * S[l] * S[l];
+            S[l] = S_up;
+            C[l] = C_up;
+            E[l] = E_up;
+            D[l] = D_up;
+        }
+    }
+    const double kk = p->landen_k[0], one_plus = p->landen_1pk[0], one_minus = p->landen_1mk[0];
+    const EllipticDD half_turns = elliptic_dd_add(elliptic_dd(2.0 * ex->theta_turns), elliptic_dd(0.0));
+    const int whole = half_turns.hi == 0.0 && half_turns.lo == 0.0;   /* the same for every lane */
+    const EllipticDD turn = elliptic_two_prod(half_turns.hi, PI_HI);
+    const double turn_lo = half_turns.hi * PI_LO, half_turns_lo_pi = half_turns.lo * PI_HI;
+    const double sqrt_k1 = ex->sqrt_k1, kc = ex->kc, omega_half = ex->omega_half;
+    double angle[EXACT_LANES];
+    for (int l = 0; l < EXACT_LANES; ++l) {
+        const double d2 = D[l] * D[l];
+        double S0 = one_plus * S[l] * D[l];
+        const double C0 = C[l] * E[l];
+        const double E0 = one_minus * d2 + kk * C[l] * C[l];
+        const double D0 = d2 + kk * S[l] * S[l];
+        const double flip = flips[l];
+        const double S1 = flip * S[l];
+        S0 = flip * S0;
+        const double even = 1.0 - odd[l];
+        const double y1 = even * S1 + odd[l] * C[l], x1 = even * D[l] + odd[l] * E[l];
+        angle[l] = 4.0 * elliptic_atan_unit(sign[l] * sqrt_k1 * y1, x1);
+        const double cn_num = even * C0 - odd[l] * (kc * S0), den = even * D0 + odd[l] * E0;
+        omega[l] = 2.0 * (sign[l] * omega_half * (cn_num / den));
+    }
+    /* add_half_turns */
+    if (whole) {
+        for (int l = 0; l < EXACT_LANES; ++l) {
+            theta[l] = angle[l];
+        }
+    } else {
+        for (int l = 0; l < EXACT_LANES; ++l) {
+            theta[l] = turn.hi + (turn.lo + (turn_lo + (half_turns_lo_pi + angle[l])));
+        }
+    }
+    return 1;
+}
+
+void pendulum_exact_eval_many(const PendulumExact *ex, size_t n, const double *t, double *theta, double *omega)
+{
+    size_t i = 0;
+    if (ex->regime == PENDULUM_LIBRATION && ex->ell.levels <= ELLIPTIC_LEVELS_WITHOUT_RESCALE
+        && fabs(ex->theta_turns) < 0x1p50) {
+        for (; i + EXACT_LANES <= n; i += EXACT_LANES) {
+            if (!eval_libration_lanes(ex, t + i, theta + i, omega + i)) {
+                for (size_t j = i; j < i + EXACT_LANES; ++j) {
+                    pendulum_exact_eval(ex, t[j], &theta[j], &omega[j]);
+                }
+            }
+        }
+    }
+    for (; i < n; ++i) {
+        pendulum_exact_eval(ex, t[i], &theta[i], &omega[i]);
+    }
 }
 
 const char *pendulum_exact_qualitative_miss(const PendulumExact *ex, double theta, double omega)

@@ -8,6 +8,8 @@
 #ifndef PENDULUM_EXACT_H
 #define PENDULUM_EXACT_H
 
+#include <stddef.h>
+
 #include "elliptic.h"
 
 typedef enum {
@@ -83,6 +85,12 @@ void pendulum_exact_eval(const PendulumExact *ex, double t, double *theta, doubl
  * top and after many turns they keep their own relative accuracy. At t == t0 (and at rest on
  * the top) sin and cos of theta0 as given; NaN where pendulum_exact_resolvable is 0. */
 void pendulum_exact_sin_cos(const PendulumExact *ex, double t, double *sin_theta, double *cos_theta);
+
+/* theta[i], omega[i] = pendulum_exact_eval(ex, t[i], ...) for i < n, bit for bit the same,
+ * with several points of a libration evaluated in lock-step (faster per point than the loop
+ * over pendulum_exact_eval). The arrays must not overlap. */
+void pendulum_exact_eval_many(const PendulumExact *ex, size_t n, const double *t, double *theta,
+                              double *omega);
 
 /* Compares a numerical state (theta, omega) at some time with the exact motion, qualitatively:
  * NULL if it is the same kind of motion, else what went wrong, as a phrase:

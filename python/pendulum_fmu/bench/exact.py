@@ -1,6 +1,16 @@
 """Benchmark: the exact solution per point, in C, from Python through ``pendulum_fmu.exact``,
 and with scipy's ``ellipj``, all over the same number of points in the same run.
 
+Two workloads, each timed in interleaved rounds (best and median), in processor time of the
+process (``time.process_time``; the C benchmark's ``clock()``), so that waiting for a core on a
+shared machine does not count:
+
+- one state, many times: an evaluation per point (C scalar loop, C batch, GSL, Python,
+  scipy);
+- a new state per point (a phase portrait, an ensemble): ``pendulum_exact_init`` and one
+  evaluation in C, :func:`pendulum_fmu.exact` over arrays of release angles, and scipy's
+  ``ellipkm1`` + ``ellipj`` over the same arrays.
+
 - C: the executable ``tests/c/bench_exact`` of a CMake build (``pendulum_exact_eval`` in a
   loop); a pip-installed package has none, and this column is then left out;
 - Python: :func:`pendulum_fmu.exact` over a numpy array of times (one call into the C library
@@ -28,6 +38,49 @@ DEFAULT_AMPLITUDES_DEG: tuple[float, ...] = (10.0, 90.0, 170.0, 179.9999)
 
 
 @dataclass(frozen=True)
+class Timing:
+    """Best and median of one timing over interleaved rounds, ns per point (NaN: not measured)."""
+
+    best: float
+    median: float
+
+    @staticmethod
+    def of(samples: list[float]) -> Timing:
+        """The best and the median of ``samples`` (NaN, NaN when there are none)."""
+        if not samples:
+            return Timing(math.nan, math.nan)
+        return Timing(min(samples), float(np.median(samples)))
+
+
+NOT_MEASURED = Timing(math.nan, math.nan)
+
+
+@dataclass(frozen=True)
+class CTimings:
+    """The C benchmark's figures for one amplitude (ns per point, best and median).
+
+    Attributes
+    ----------
+    eval : Timing
+        ``pendulum_exact_eval`` in a loop.
+    batch : Timing
+        ``pendulum_exact_eval_many`` (lock-step) over the same times.
+    gsl : Timing
+        GSL's ``gsl_sf_elljac_e`` plus atan2 (NaN when the benchmark was built without GSL).
+    init : Timing
+        ``pendulum_exact_init`` for a new release angle and one evaluation.
+    """
+
+    eval: Timing
+    batch: Timing
+    gsl: Timing
+    init: Timing
+
+
+NO_C = CTimings(NOT_MEASURED, NOT_MEASURED, NOT_MEASURED, NOT_MEASURED)
+
+
+@dataclass(frozen=True)
 class BenchResult:
     """Timings for one amplitude.
 
@@ -38,12 +91,22 @@ class BenchResult:
     n : int
         Number of evaluation points.
     c_ns : float
-        ns per point of ``pendulum_exact_eval`` (theta and omega) in C, best of three; NaN
-        without the C benchmark.
+        ns per point of ``pendulum_exact_eval`` (theta and omega) in C, best over the rounds;
+        NaN without the C benchmark.
     python_ns : float
-        ns per point of :func:`pendulum_fmu.exact` over a numpy array, best of three.
+        ns per point of :func:`pendulum_fmu.exact` over a numpy array, best over the rounds.
     scipy_ns : float
-        ns per point of the scipy pipeline, best of three.
+        ns per point of the scipy pipeline, best over the rounds.
+    c : CTimings
+        All figures of the C benchmark (best and median).
+    python : Timing
+        :func:`pendulum_fmu.exact`, one state over many times.
+    scipy : Timing
+        scipy, one state over many times.
+    python_states : Timing
+        :func:`pendulum_fmu.exact` with a new state per point.
+    scipy_states : Timing
+        scipy's ``ellipkm1`` + ``ellipj`` with a new state per point.
     """
 
     amplitude_deg: float
@@ -51,6 +114,11 @@ class BenchResult:
     c_ns: float
     python_ns: float
     scipy_ns: float
+    c: CTimings = NO_C
+    python: Timing = NOT_MEASURED
+    scipy: Timing = NOT_MEASURED
+    python_states: Timing = NOT_MEASURED
+    scipy_states: Timing = NOT_MEASURED
 
     @property
     def ratio(self) -> float:
@@ -79,7 +147,7 @@ def find_bench_executable(build_dir: Path = DEFAULT_BUILD_DIR) -> Path | None:
     return None
 
 
-def run_c_benchmark(executable: Path, n: int, amplitudes_deg: tuple[float, ...]) -> dict[float, float]:
+def run_c_benchmark(executable: Path, n: int, amplitudes_deg: tuple[float, ...]) -> dict[float, CTimings]:
     """Run the C benchmark and parse its ``bench_exact key=value ...`` lines.
 
     Parameters
@@ -93,21 +161,27 @@ def run_c_benchmark(executable: Path, n: int, amplitudes_deg: tuple[float, ...])
 
     Returns
     -------
-    dict of float to float
-        ns per evaluation, keyed by the amplitude as the program printed it.
+    dict of float to CTimings
+        The figures, keyed by the amplitude as the program printed it. An older program that
+        prints only ``ns_per_eval`` gives that as the best eval time and NaN elsewhere.
     """
     command = [str(executable), str(n), *(repr(a) for a in amplitudes_deg)]
     try:
         completed = subprocess.run(command, capture_output=True, text=True, check=True)
     except (OSError, subprocess.CalledProcessError) as error:
         raise SimulationError(f"the C benchmark {executable} failed: {error}") from None
-    timings: dict[float, float] = {}
+    timings: dict[float, CTimings] = {}
     for line in completed.stdout.splitlines():
         fields = line.split()
         if not fields or fields[0] != "bench_exact":
             continue
         values = dict(field.split("=", 1) for field in fields[1:])
-        timings[float(values["amplitude_deg"])] = float(values["ns_per_eval"])
+
+        def pair(kind: str, values: dict[str, str] = values) -> Timing:
+            return Timing(float(values.get(f"{kind}_best", "nan")), float(values.get(f"{kind}_median", "nan")))
+
+        eval_timing = pair("eval") if "eval_best" in values else Timing(float(values["ns_per_eval"]), math.nan)
+        timings[float(values["amplitude_deg"])] = CTimings(eval_timing, pair("batch"), pair("gsl"), pair("init"))
     return timings
 
 
@@ -139,12 +213,12 @@ def time_scipy(amplitude_deg: float, n: int, repeats: int = 3, seed: int = 1) ->
     times = np.random.default_rng(seed).uniform(0.0, 50.0 * 4.0 * quarter / w0, n)
     best = math.inf
     for _ in range(repeats):
-        start = time.perf_counter()
+        start = time.process_time()
         u = w0 * times + quarter
         sn, cn, dn, _ = ellipj(u, m)
         theta = 2.0 * np.arctan2(k * sn, dn)
         omega = (2.0 * k * w0) * cn
-        best = min(best, time.perf_counter() - start)
+        best = min(best, time.process_time() - start)
         del theta, omega
     return 1e9 * best / n
 
@@ -162,23 +236,73 @@ def time_library(amplitude_deg: float, n: int, repeats: int = 3, seed: int = 1) 
     times = np.random.default_rng(seed).uniform(0.0, 50.0 * 4.0 * quarter, n)
     best = math.inf
     for _ in range(repeats):
-        start = time.perf_counter()
+        start = time.process_time()
         exact(theta0, 0.0, 1.0, 1.0, times)
-        best = min(best, time.perf_counter() - start)
+        best = min(best, time.process_time() - start)
     return 1e9 * best / n
 
 
-def run(executable: Path | None, n: int, amplitudes_deg: tuple[float, ...]) -> list[BenchResult]:
-    """Run the three timings per amplitude.
+def release_angles(amplitude_deg: float, n: int) -> np.ndarray:
+    """n different release angles around ``amplitude_deg`` (rad): theta0 (1 + 1e-9 j), j < 1024."""
+    return math.radians(amplitude_deg) * (1.0 + 1e-9 * (np.arange(n) % 1024))
+
+
+def time_library_states(amplitude_deg: float, n: int, seed: int = 1) -> float:
+    """ns per point of :func:`pendulum_fmu.exact` with a new state per point (one timing).
+
+    The release angles of :func:`release_angles` (from rest, L = g = 1), each evaluated once
+    at a random time within 50 periods.
+    """
+    from pendulum_fmu.fmu.library import exact
+
+    theta0 = release_angles(amplitude_deg, n)
+    quarter = float(ellipkm1(math.cos(math.radians(amplitude_deg) / 2.0) ** 2))
+    times = np.random.default_rng(seed).uniform(0.0, 50.0 * 4.0 * quarter, n)
+    start = time.process_time()
+    exact(theta0, 0.0, 1.0, 1.0, times)
+    return 1e9 * (time.process_time() - start) / n
+
+
+def time_scipy_states(amplitude_deg: float, n: int, seed: int = 1) -> float:
+    """ns per point of scipy with a new state per point (one timing).
+
+    The same states and times as :func:`time_library_states`: per point m = sin^2(theta0/2),
+    K = ``ellipkm1(cos^2(theta0/2))``, u = t + K, ``ellipj(u, m)``, theta = 2 arctan2(k sn, dn),
+    omega = 2 k cn.
+    """
+    theta0 = release_angles(amplitude_deg, n)
+    quarter = float(ellipkm1(math.cos(math.radians(amplitude_deg) / 2.0) ** 2))
+    times = np.random.default_rng(seed).uniform(0.0, 50.0 * 4.0 * quarter, n)
+    start = time.process_time()
+    half = 0.5 * theta0
+    k = np.sin(half)
+    m = k * k
+    quarters = ellipkm1(np.cos(half) ** 2)
+    sn, cn, dn, _ = ellipj(times + quarters, m)
+    theta = 2.0 * np.arctan2(k * sn, dn)
+    omega = 2.0 * k * cn
+    elapsed = time.process_time() - start
+    del theta, omega
+    return 1e9 * elapsed / n
+
+
+def run(executable: Path | None, n: int, amplitudes_deg: tuple[float, ...], rounds: int = 5) -> list[BenchResult]:
+    """Run every timing per amplitude.
+
+    The C benchmark runs first (its own interleaved rounds); then the Python-side timings
+    (the library and scipy, one state over many times and a new state per point) run in
+    ``rounds`` interleaved rounds, each timing every kind and amplitude once.
 
     Parameters
     ----------
     executable : Path or None
-        The ``bench_exact`` program; None leaves the C column out (NaN).
+        The ``bench_exact`` program; None leaves the C figures out (NaN).
     n : int
         Number of points per amplitude.
     amplitudes_deg : tuple of float
         Release angles in degrees.
+    rounds : int
+        Interleaved rounds of the Python-side timings.
 
     Returns
     -------
@@ -186,8 +310,19 @@ def run(executable: Path | None, n: int, amplitudes_deg: tuple[float, ...]) -> l
         One result per amplitude, in the given order.
     """
     c_timings = run_c_benchmark(executable, n, amplitudes_deg) if executable is not None else {}
+    kinds = {"python": time_library, "scipy": time_scipy, "python_states": time_library_states,
+             "scipy_states": time_scipy_states}
+    samples: dict[tuple[float, str], list[float]] = {(a, k): [] for a in amplitudes_deg for k in kinds}
+    for _ in range(rounds):
+        for amplitude in amplitudes_deg:
+            for kind, timer in kinds.items():
+                samples[(amplitude, kind)].append(timer(amplitude, n, 1) if kind in ("python", "scipy")
+                                                  else timer(amplitude, n))
     results = []
     for amplitude in amplitudes_deg:
-        c_ns = c_timings.get(float(f"{amplitude:.10g}"), math.nan)
-        results.append(BenchResult(amplitude, n, c_ns, time_library(amplitude, n), time_scipy(amplitude, n)))
+        c = c_timings.get(float(f"{amplitude:.10g}"), NO_C)
+        timing = {kind: Timing.of(samples[(amplitude, kind)]) for kind in kinds}
+        results.append(BenchResult(amplitude, n, c.eval.best, timing["python"].best, timing["scipy"].best, c,
+                                   timing["python"], timing["scipy"], timing["python_states"],
+                                   timing["scipy_states"]))
     return results

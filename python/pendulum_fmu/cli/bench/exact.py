@@ -10,13 +10,16 @@ from pathlib import Path
 from pendulum_fmu.cli.arguments import integer
 
 NAME = "exact"
-HELP = "the exact solution per point: C, from Python (pendulum_fmu.exact) and scipy's ellipj"
+HELP = "the exact solution per point: C, batch, GSL, from Python (pendulum_fmu.exact) and scipy"
 DESCRIPTION = """\
-Time one exact evaluation (theta and omega at a new time) three ways over the same number of
-random times, best of three each: in C (the benchmark program tests/c/bench_exact of a CMake
-build; a pip-installed package has none and leaves that column out), from Python through
-pendulum_fmu.exact (one call into the C library pendulum_exact, the FMU's own code), and with
-scipy.special.ellipj plus arctan2, vectorised. Prints ns per point and the ratios.
+Time the exact solution per point over the same number of random times, in interleaved rounds
+(best and median): one state over many times in C (the benchmark program tests/c/bench_exact
+of a CMake build: the scalar loop, the lock-step batch and GSL's gsl_sf_elljac_e when it was
+built with GSL; a pip-installed package has no C benchmark and leaves those out), from Python
+through pendulum_fmu.exact (one call into the C library pendulum_exact, the FMU's own code)
+and with scipy.special.ellipj plus arctan2, vectorised; and a new state per point (set-up and
+one evaluation) in C, through pendulum_fmu.exact and with scipy's ellipkm1 + ellipj. Prints
+ns per point and the ratios side by side.
 """
 EPILOG = """\
 examples:
@@ -54,6 +57,13 @@ def configure(parser: argparse.ArgumentParser) -> None:
                         help="points per amplitude, 1-10^8 (default 1000000)")
     parser.add_argument("--amplitudes", type=amplitude, nargs="+", default=[10.0, 90.0, 170.0, 179.9999],
                         metavar="DEG", help="release angles in (0, 180) deg (default 10 90 170 179.9999)")
+    parser.add_argument("--rounds", type=integer(1, 100), default=5, metavar="R",
+                        help="interleaved rounds of the Python-side timings, 1-100 (default 5)")
+
+
+def both(x_best: float, x_median: float, y_best: float, y_median: float) -> str:
+    """The ratios x/y of the best and of the median figures, as ``best | median``."""
+    return f"{x_best / y_best:6.2f} | {x_median / y_median:<6.2f}"
 
 
 def run(args: argparse.Namespace) -> int:
@@ -65,12 +75,29 @@ def run(args: argparse.Namespace) -> int:
     if program is None:
         print("bench exact: the C benchmark (tests/c/bench_exact) is not installed with the package: "
               "timing Python and scipy only")
-    results = run_benchmark(program, args.points, tuple(args.amplitudes))
+    results = run_benchmark(program, args.points, tuple(args.amplitudes), args.rounds)
+    print("one state, many times (ns per point, best over the rounds):")
     print(f"{'amplitude':>14} {'C ns/pt':>9} {'Python ns/pt':>13} {'scipy ns/pt':>12} {'Python/C':>9} {'C/scipy':>8}")
     for r in results:
         print(f"{r.amplitude_deg:>10.10g} deg {r.c_ns:>9.1f} {r.python_ns:>13.1f} {r.scipy_ns:>12.1f} "
               f"{r.python_ns / r.c_ns:>9.2f} {r.ratio:>8.3f}")
+    print("ratios side by side (best | median over the rounds; > 1: the project is faster):")
+    print(f"{'amplitude':>14} {'GSL/eval':>15} {'GSL/batch':>15} {'eval/batch':>15} "
+          f"{'scipy/(init+eval)':>19} {'scipy/exact()':>15}")
+    for r in results:
+        c = r.c
+        print(f"{r.amplitude_deg:>10.10g} deg {both(c.gsl.best, c.gsl.median, c.eval.best, c.eval.median):>15} "
+              f"{both(c.gsl.best, c.gsl.median, c.batch.best, c.batch.median):>15} "
+              f"{both(c.eval.best, c.eval.median, c.batch.best, c.batch.median):>15} "
+              f"{both(r.scipy_states.best, r.scipy_states.median, c.init.best, c.init.median):>19} "
+              f"{both(r.scipy_states.best, r.scipy_states.median, r.python_states.best, r.python_states.median):>15}")
     for r in results:
         print(f"bench_exact amplitude_deg={r.amplitude_deg:.10g} n={r.n} c_ns_per_point={r.c_ns:.3f} "
               f"python_ns_per_point={r.python_ns:.3f} scipy_ns_per_point={r.scipy_ns:.3f}")
+    for r in results:
+        fields = {"eval": r.c.eval, "batch": r.c.batch, "gsl": r.c.gsl, "init_eval": r.c.init,
+                  "python": r.python, "scipy": r.scipy, "python_states": r.python_states,
+                  "scipy_states": r.scipy_states}
+        text = " ".join(f"{name}_best={t.best:.3f} {name}_median={t.median:.3f}" for name, t in fields.items())
+        print(f"bench_exact_all amplitude_deg={r.amplitude_deg:.10g} n={r.n} {text}")
     return 0

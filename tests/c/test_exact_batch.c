@@ -1,0 +1,131 @@
+/* test_exact_batch.c: pendulum_exact_eval_many (points of a libration in lock-step) gives bit
+ * for bit what pendulum_exact_eval gives, point by point, for every kind of state and time:
+ * librations with few and with many Landen levels (lock-step and the scalar fallback), wound-up
+ * initial angles, rotations, the separatrix, rest; times at t0 exactly, negative, far (past
+ * 2^50 and 2^60 quarter periods), NaN and infinite, in blocks that mix them, and counts that
+ * are not a multiple of the lane count. Prints one summary line; exit status 0 iff every
+ * check passed. */
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "check.h"
+#include "exact.h"
+
+#define PI 3.14159265358979323846
+#define MAX_POINTS 203
+
+static int same_bits(double a, double b)
+{
+    uint64_t x, y;
+    memcpy(&x, &a, sizeof x);
+    memcpy(&y, &b, sizeof y);
+    return x == y;
+}
+
+static unsigned long long rng_state = 0x243F6A8885A308D3ULL;
+
+static double uniform(void)
+{
+    unsigned long long x = rng_state;
+    x ^= x >> 12;
+    x ^= x << 25;
+    x ^= x >> 27;
+    rng_state = x;
+    return (double)((x * 0x2545F4914F6CDD1DULL) >> 11) * 0x1p-53;
+}
+
+/* Compares the batch with the scalar loop over n times; returns the number of differences. */
+static int compare(const PendulumExact *ex, size_t n, const double *t, const char *what)
+{
+    double theta[MAX_POINTS], omega[MAX_POINTS];
+    pendulum_exact_eval_many(ex, n, t, theta, omega);
+    int differences = 0;
+    for (size_t i = 0; i < n; ++i) {
+        double th, om;
+        pendulum_exact_eval(ex, t[i], &th, &om);
+        if (!same_bits(th, theta[i]) || !same_bits(om, omega[i])) {
+            if (differences == 0) {
+                check(0, "%s: point %zu at t=%.17g: batch (%.17g, %.17g), scalar (%.17g, %.17g)", what, i, t[i],
+                      theta[i], omega[i], th, om);
+            }
+            ++differences;
+        }
+    }
+    return differences;
+}
+
+/* Times over `periods` periods from t0, with special times mixed in when `mixed`. */
+static size_t make_times(const PendulumExact *ex, double periods, int mixed, double *t)
+{
+    const double period = isfinite(pendulum_exact_period(ex)) ? pendulum_exact_period(ex) : 10.0;
+    size_t n = MAX_POINTS;
+    for (size_t i = 0; i < n; ++i) {
+        t[i] = ex->t0 + (2.0 * uniform() - 1.0) * periods * period;
+    }
+    if (mixed) {
+        t[5] = ex->t0;                       /* the initial state as given */
+        t[17] = NAN;
+        t[30] = INFINITY;
+        t[41] = -INFINITY;
+        t[58] = ex->t0 + 0x1p52 * period;    /* past 2^50 quarter periods: the wide phase */
+        t[77] = ex->t0 + 0x1p62 * period;    /* past 2^60: not resolvable */
+        t[101] = ex->t0 - 0x1p49 * period;   /* just below the wide phase */
+        t[150] = 1e300;
+    }
+    return n;
+}
+
+static void check_state(double theta0, double omega0, double w0, double t0, const char *label)
+{
+    PendulumExact ex;
+    check(pendulum_exact_init(&ex, theta0, omega0, w0, t0) == 0, "%s: init", label);
+    double t[MAX_POINTS];
+    for (int mixed = 0; mixed <= 1; ++mixed) {
+        const double horizons[] = {1.0, 50.0, 1e6};
+        for (size_t h = 0; h < sizeof horizons / sizeof horizons[0]; ++h) {
+            const size_t n = make_times(&ex, horizons[h], mixed, t);
+            /* every count from 0 to 33 (two blocks of 16 lanes and every remainder), then all */
+            for (size_t count = 0; count < 34; ++count) {
+                check(compare(&ex, count, t, label) == 0, "%s: %zu points (horizon %g, mixed %d)", label, count,
+                      horizons[h], mixed);
+            }
+            check(compare(&ex, n, t, label) == 0, "%s: %zu points (horizon %g periods, mixed %d)", label, n,
+                  horizons[h], mixed);
+        }
+    }
+}
+
+int main(void)
+{
+    /* librations from rest, few levels (the lock-step path) and near the top (many levels) */
+    const double amplitudes_deg[] = {1e-6, 0.5, 10.0, 45.0, 90.0, 135.0, 170.0, 179.0, 179.9999, 180.0 - 1e-9,
+                                     180.0 - 1e-12, 180.0};
+    int lock_step = 0, fallback = 0;
+    for (size_t i = 0; i < sizeof amplitudes_deg / sizeof amplitudes_deg[0]; ++i) {
+        char label[64];
+        const double theta0 = amplitudes_deg[i] * (PI / 180.0);
+        PendulumExact ex;
+        check(pendulum_exact_init(&ex, theta0, 0.0, 1.0, 0.0) == 0, "init %g deg", amplitudes_deg[i]);
+        lock_step += ex.ell.levels <= ELLIPTIC_LEVELS_WITHOUT_RESCALE;
+        fallback += ex.ell.levels > ELLIPTIC_LEVELS_WITHOUT_RESCALE;
+        snprintf(label, sizeof label, "libration %g deg", amplitudes_deg[i]);
+        check_state(theta0, 0.0, 1.0, 0.0, label);
+        snprintf(label, sizeof label, "libration -%g deg, t0 = 2.5", amplitudes_deg[i]);
+        check_state(-theta0, 0.0, 3.13, 2.5, label);
+    }
+    check(lock_step >= 6 && fallback >= 1, "both paths covered: %d states lock-step, %d scalar", lock_step, fallback);
+    /* moving starts, wound-up angles, rotations, separatrix, rest */
+    check_state(0.3, 1.2, 1.0, 0.0, "libration with omega0");
+    check_state(-2.0, -0.7, 2.0, -1.0, "libration with omega0 < 0");
+    check_state(0.3 + 6.0 * PI, 0.4, 1.0, 0.0, "libration three turns up");
+    check_state(-1e6, 0.1, 1.0, 0.0, "libration 1e6 rad down");
+    check_state(1e17, 0.0, 1.0, 0.0, "libration at theta0 = 1e17");
+    check_state(0.5, 2.5, 1.0, 0.0, "rotation");
+    check_state(0.5, -30.0, 1.0, 0.0, "fast rotation backwards");
+    check_state(0.0, 2.0, 1.0, 0.0, "separatrix");
+    check_state(PI, 0.0, 1.0, 0.0, "at rest on the top");
+    check_state(0.0, 0.0, 1.0, 0.0, "at rest at the bottom");
+    return check_summary("test_exact_batch");
+}
