@@ -43,9 +43,12 @@ def test_bench_sweep_prints_runs_per_second(fmu_path: Path, capsys: pytest.Captu
     assert main(["bench", "sweep", "--runs", "24", "--periods", "2", "--workers", "1", "--repeat", "1",
                  "--fmu", str(fmu_path)]) == 0
     out = capsys.readouterr().out
-    match = re.search(r"^bench_sweep workers=1 runs=24 rate=([0-9.]+) ", out, re.MULTILINE)
-    assert match is not None, out
-    assert float(match.group(1)) > 0
+    for loop in ("c", "python"):   # the workers' output loop in C and, for comparison, in Python
+        match = re.search(rf"^bench_sweep loop={loop} workers=1 runs=24 rate=([0-9.]+) per_worker=([0-9.]+) ", out,
+                          re.MULTILINE)
+        assert match is not None, out
+        assert float(match.group(1)) > 0 and float(match.group(2)) == pytest.approx(float(match.group(1)), rel=1e-3)
+    assert re.search(r"^C loop / Python loop, 1 worker\(s\): [0-9.]+x runs per second per worker$", out, re.MULTILINE)
 
 
 def test_bench_accuracy_prints_every_regime_within_5e_14(fmu_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
