@@ -71,16 +71,33 @@ def pendulum_problem(path: Path) -> str | None:
     """
     from fmpy import read_model_description
 
+    def refused(problem: str) -> str:
+        return (f"{str(path)!r} is not the Pendulum FMU of pendulum-fmu: {problem}; the package runs only its own "
+                "Pendulum.fmu (FMI 2.0 or 3.0)")
+
     try:
+        version = _root_attribute(Path(path), "fmiVersion")
+        if version not in FMI_VERSIONS:   # fmpy would read it by the rules of its version, or fail oddly
+            return refused(f"it is an FMI {version} FMU (the package runs FMI 2.0 and 3.0)")
         description = read_model_description(str(path), validate=False)
     except Exception as error:  # noqa: BLE001 (lxml, zipfile and fmpy raise many kinds)
         reason = " ".join(str(error).split()) or type(error).__name__
         return f"{str(path)!r} is not a usable FMU: its modelDescription.xml cannot be read ({reason})"
     problem = description_problem(description)
-    if problem is None:
-        return None
-    return (f"{str(path)!r} is not the Pendulum FMU of pendulum-fmu: {problem}; the package runs only its own "
-            "Pendulum.fmu (FMI 2.0 or 3.0)")
+    return None if problem is None else refused(problem)
+
+
+def _root_attribute(path: Path, name: str) -> str:
+    """An attribute of modelDescription.xml's root element (an FMU file or an extracted folder)."""
+    import xml.etree.ElementTree as ElementTree
+    import zipfile
+
+    if path.is_dir():
+        root = ElementTree.parse(path / "modelDescription.xml").getroot()
+    else:
+        with zipfile.ZipFile(path) as archive, archive.open("modelDescription.xml") as xml:
+            root = ElementTree.parse(xml).getroot()
+    return str(root.get(name))
 
 
 def fmi_version_of(path: Path) -> int:
