@@ -167,3 +167,80 @@ def test_cli_ctrl_c_is_one_line_and_exit_130(fmu_path: Path, tmp_path: Path) -> 
     assert process.returncode == 130, err
     assert err.strip().splitlines() == ["pendulum-fmu simulate: interrupted"], err
     assert "Traceback" not in err and not (tmp_path / "x.csv").exists()
+
+
+# --- the C loop against a scripted stand-in FMU: every branch of its status handling ------------
+
+class _ScriptedFmu:
+    """DoStep / GetReal (FMI 2.0) or DoStep / GetFloat64 (FMI 3.0) as ctypes callbacks that
+    answer from a script: DoStep number k returns ``statuses[k]`` (and, in 3.0, the flags)."""
+
+    def __init__(self, version: int, statuses: list[int], terminate_at: int = -1, early_at: int = -1) -> None:
+        import ctypes
+
+        self.calls: list[tuple[float, float]] = []
+        self.component = ctypes.c_void_p(1234)
+
+        def do_step2(_c, t, h, _no_set):  # type: ignore[no-untyped-def]
+            self.calls.append((t, h))
+            return statuses[len(self.calls) - 1]
+
+        def do_step3(_c, t, h, _no_set, _event, terminate, early, reached):  # type: ignore[no-untyped-def]
+            self.calls.append((t, h))
+            k = len(self.calls) - 1
+            terminate[0] = k == terminate_at
+            early[0] = k == early_at
+            reached[0] = t + h / 2
+            return statuses[k]
+
+        def get(_c, _vrs, nvr, values, *_):  # type: ignore[no-untyped-def]
+            for i in range(nvr):
+                values[i] = float(len(self.calls) * 10 + i)
+            return 0
+
+        pointer = ctypes.POINTER
+        if version == 2:
+            step_type = ctypes.CFUNCTYPE(ctypes.c_int, ctypes.c_void_p, ctypes.c_double, ctypes.c_double, ctypes.c_int)
+            get_type = ctypes.CFUNCTYPE(ctypes.c_int, ctypes.c_void_p, ctypes.c_void_p, ctypes.c_size_t,
+                                        pointer(ctypes.c_double))
+            self.step, self.get = step_type(do_step2), get_type(get)
+            names = ("fmi2DoStep", "fmi2GetReal")
+        else:
+            step_type = ctypes.CFUNCTYPE(ctypes.c_int, ctypes.c_void_p, ctypes.c_double, ctypes.c_double, ctypes.c_bool,
+                                         pointer(ctypes.c_bool), pointer(ctypes.c_bool), pointer(ctypes.c_bool),
+                                         pointer(ctypes.c_double))
+            get_type = ctypes.CFUNCTYPE(ctypes.c_int, ctypes.c_void_p, ctypes.c_void_p, ctypes.c_size_t,
+                                        pointer(ctypes.c_double), ctypes.c_size_t)
+            self.step, self.get = step_type(do_step3), get_type(get)
+            names = ("fmi3DoStep", "fmi3GetFloat64")
+        self.dll = type("Dll", (), {names[0]: self.step, names[1]: self.get})()
+
+
+@pytest.mark.parametrize("version", [2, 3])
+def test_warnings_go_on_and_worse_statuses_stop_the_loop(version: int) -> None:
+    from pendulum_fmu.fmu.log import FmuLog
+
+    times = np.array([0.0, 1.0, 2.0, 3.0, 4.0, 5.0])
+    rows = np.zeros(6, dtype=[("a", np.float64), ("b", np.float64)])
+    fmu = _ScriptedFmu(version, [1, 0, 1, 2, 0])   # Warning, OK, Warning, then Discard
+    log = FmuLog()
+    log.entries.append((3, "logStatusError", "step rejected: the reason"))
+    with pytest.raises(SimulationError, match=r"^DoStep at t = 3 s returned Discard: step rejected: the reason$"):
+        driver.CLoop(fmu, version, [7, 8]).run(times, rows, "a", log)
+    assert fmu.calls == [(0.0, 1.0), (1.0, 1.0), (2.0, 1.0), (3.0, 1.0)]
+    assert rows["a"].tolist() == [0.0, 10.0, 20.0, 30.0, 0.0, 0.0] and rows["b"][3] == 31.0
+    for status, name in ((3, "Error"), (4, "Fatal")):
+        fmu = _ScriptedFmu(version, [status])
+        with pytest.raises(SimulationError, match=rf"^DoStep at t = 0 s returned {name}$"):
+            driver.CLoop(fmu, version, [7]).run(times, np.zeros(6, dtype=[("a", np.float64)]), "a", FmuLog())
+
+
+def test_fmi3_terminate_and_early_return_stop_the_loop() -> None:
+    from pendulum_fmu.fmu.log import FmuLog
+
+    times = np.array([0.0, 1.0, 2.0, 3.0])
+    rows = np.zeros(4, dtype=[("a", np.float64)])
+    with pytest.raises(SimulationError, match=r"^fmi3DoStep asked to terminate the simulation at t = 1\.5 s$"):
+        driver.CLoop(_ScriptedFmu(3, [0, 0, 0], terminate_at=1), 3, [1]).run(times, rows, "a", FmuLog())
+    with pytest.raises(SimulationError, match=r"^fmi3DoStep returned early at t = 0\.5 s"):
+        driver.CLoop(_ScriptedFmu(3, [0, 0, 0], early_at=0), 3, [1]).run(times, rows, "a", FmuLog())
