@@ -12,7 +12,9 @@ median over the rounds are reported.
   x, y) per point from the C library pendulum_driver, straight into the result array;
 - package, Python loop (before): the same run with the same calls made from Python through
   prebuilt ctypes prototypes (FmuRunner(loop="python"), the path before the C loop);
-- package C loop, theta and omega: the same C loop recording only what numbalsoda returns;
+- package C loop, theta and omega: the same C loop (without the Python of FmuRunner.run around
+  it) recording only what numbalsoda returns; then with the exact solution, then all six
+  outputs: where a full run's time goes;
 - fmpy FMU2Slave wrappers: the same FMU instance driven by fmpy's doStep/getReal;
 - fmpy simulate_fmu: simulate_fmu("Pendulum.fmu", ...) as a user calls it (it extracts the
   FMU every call); tuned: extracted once, only theta recorded, the model description read once;
@@ -162,7 +164,7 @@ def measure(fmu: Path, rounds: int = 10) -> list[Timing]:
         for folder in scratch:
             shutil.rmtree(folder, ignore_errors=True)
     timings = [Timing(m.name, tuple(seconds[m.name]), times.size, m.error, m.setting) for m in methods]
-    order = [PACKAGE, PACKAGE_PYTHON, "package C loop, theta and omega", "fmpy FMU2Slave wrappers",
+    order = [PACKAGE, PACKAGE_PYTHON, *LOOP_ROWS, "fmpy FMU2Slave wrappers",
              "fmpy simulate_fmu", "fmpy simulate_fmu, tuned", NUMBALSODA, "scipy ode dop853 (compiled)",
              "scipy solve_ivp DOP853"]
     every = timings + unavailable
@@ -178,26 +180,41 @@ def _package_methods(runner: FmuRunner, python_runner: FmuRunner, pendulum: Pend
     method = Method("rkn", rtol)
     setting = f"rkn, tol {rtol:g}"
     rows = [_Method(PACKAGE, lambda: runner.run(pendulum, method, grid).result["theta"], error,
-                    f"{setting}, {runner.loop} loop, 6 outputs"),
+                    f"{setting}, 6 outputs, {runner.loop} loop"),
             _Method(PACKAGE_PYTHON, lambda: python_runner.run(pendulum, method, grid).result["theta"],
                     float(np.max(np.abs(python_runner.run(pendulum, method, grid).result["theta"] - truth))),
                     f"{setting}, 6 outputs")]
     if runner.loop != "c":
         return rows, rtol
-    two = np.dtype([("time", np.float64), ("theta", np.float64), ("omega", np.float64)])
-    loop = driver.CLoop(runner._fresh_slave(), runner.fmi_version, [runner.vr["theta"], runner.vr["omega"]])
+    for label, names in LOOP_ROWS.items():
+        rows.append(_loop_row(runner, pendulum, method, times, truth, label, names, setting))
+    return rows, rtol
 
-    def theta_and_omega() -> np.ndarray:
+
+LOOP_ROWS: dict[str, tuple[str, ...]] = {
+    "package C loop, theta and omega": ("theta", "omega"),
+    "package C loop, + theta_exact, omega_exact": ("theta", "omega", "theta_exact", "omega_exact"),
+    "package C loop, all 6 outputs": ("theta", "omega", "theta_exact", "omega_exact", "x", "y"),
+}
+"""The C loop alone (reset, initialization, loop, terminate; no Trajectory), recording what
+numbalsoda returns, then adding the FMU's outputs: where a full run's time goes."""
+
+
+def _loop_row(runner: FmuRunner, pendulum: Pendulum, method: Method, times: np.ndarray, truth: np.ndarray,
+              label: str, names: tuple[str, ...], setting: str) -> _Method:
+    """A row of :data:`LOOP_ROWS`: the runner's instance driven by a C loop over ``names``."""
+    rows = np.dtype([("time", np.float64)] + [(name, np.float64) for name in names])
+    loop = driver.CLoop(runner._fresh_slave(), runner.fmi_version, [runner.vr[name] for name in names])
+
+    def run() -> np.ndarray:
         slave = runner._fresh_slave()
         runner._initialize(slave, pendulum, method)
-        out = np.empty(times.size, dtype=two)
-        loop.run(times, out, "theta", runner._log)
+        out = np.empty(times.size, dtype=rows)
+        loop.run(times, out, names[0], runner._log)
         slave.terminate()
         return out["theta"]
 
-    rows.append(_Method("package C loop, theta and omega", theta_and_omega,
-                        float(np.max(np.abs(theta_and_omega() - truth))), f"{setting}, theta and omega only"))
-    return rows, rtol
+    return _Method(label, run, float(np.max(np.abs(run() - truth))), f"{setting}, {', '.join(names)}")
 
 
 def _fmpy_methods(runner: FmuRunner, fmu: Path, pendulum: Pendulum, times: np.ndarray, truth: np.ndarray,
