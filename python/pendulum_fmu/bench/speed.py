@@ -4,8 +4,9 @@ The problem (issue 12): released from rest at 80 deg, L = 1 m, g = 9.81 m/s^2, 1
 periods, 8 output points a period; every method must reach max |theta - theta_exact| <= 1e-9
 on the output points (the truth from pendulum_fmu.exact). Every method runs at the loosest
 tolerance of 1e-7 .. 1e-13 (decades) that reaches that error. After one warm-up each, the
-methods take turns, one run each per round (each round starting one method later); best and
-median over the rounds are reported.
+methods take turns, one run each per round, in a new (seeded) random order every round, with
+Python's cyclic garbage collector off during the rounds (as ``timeit`` does: no method pays
+for collecting another's garbage); best and median over the rounds are reported.
 
 - package, C loop: FmuRunner.run as every command and the sweep's workers call it: the FMU's
   rkn, DoStep and one GetReal of all six recorded outputs (theta, omega, their exact values,
@@ -28,7 +29,9 @@ median over the rounds are reported.
 
 from __future__ import annotations
 
+import gc
 import math
+import random
 import shutil
 import statistics
 import time
@@ -155,11 +158,19 @@ def measure(fmu: Path, rounds: int = 10) -> list[Timing]:
             seconds: dict[str, list[float]] = {m.name: [] for m in methods}
             for method in methods:
                 method.run()   # warm-up
-            for round_ in range(rounds):   # each round starts one method later: no method is always first
-                for method in methods[round_ % len(methods):] + methods[:round_ % len(methods)]:
-                    start = time.perf_counter()
-                    method.run()
-                    seconds[method.name].append(time.perf_counter() - start)
+            gc.collect()
+            gc.disable()   # as timeit does: no method pays for collecting another's garbage
+            try:
+                shuffle = random.Random(0).shuffle
+                for _ in range(rounds):   # a new order every round: no method always follows the same one
+                    order = list(methods)
+                    shuffle(order)
+                    for method in order:
+                        start = time.perf_counter()
+                        method.run()
+                        seconds[method.name].append(time.perf_counter() - start)
+            finally:
+                gc.enable()
     finally:
         for folder in scratch:
             shutil.rmtree(folder, ignore_errors=True)

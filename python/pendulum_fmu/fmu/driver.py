@@ -203,10 +203,10 @@ class CLoop:
                 last = min(count, first + stretch)
                 start = time.perf_counter()
                 call = self._drive(fmu, pointer, first, last, base, stride, ctypes.byref(outcome))
+                if interrupted[0]:   # Ctrl-C wins over a failure in the same stretch: it is what the user did
+                    raise LoopInterrupted(outcome.done)
                 if call:
                     self._fail(outcome, log)
-                if interrupted[0]:
-                    raise LoopInterrupted(last)
                 elapsed = time.perf_counter() - start
                 stretch = max(16, min(1 << 22, int((last - first) * STRETCH_SECONDS / max(elapsed, 1e-7))))
                 first = last
