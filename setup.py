@@ -10,7 +10,9 @@ import-hook-driven build of the same tree. So:
 
 - a regular install (``pip install .``, a wheel) runs CMake and puts ``Pendulum.fmu`` into
   the package, where ``pendulum_fmu.fmu.locate.locate_fmu`` finds it first, and the C library
-  ``pendulum_exact`` of ``pendulum_fmu.exact`` into ``pendulum_fmu/lib/<platform>/``;
+  ``pendulum_exact`` of ``pendulum_fmu.exact`` and the output loop ``pendulum_driver`` of
+  ``FmuRunner`` into ``pendulum_fmu/lib/<platform>/``, and the FMI 3.0 FMU into
+  ``pendulum_fmu/fmi3/Pendulum.fmu``;
 - an editable install (``pip install -e .``) runs CMake into ``build/`` of the checkout,
   where ``locate_fmu`` finds it and rebuilds it whenever a source is newer;
 - if CMake is missing or fails, the install goes on with a warning, and the package falls
@@ -81,8 +83,17 @@ def platform_options() -> list[str]:
     return ["-DPENDULUM_PLATFORMS=ON", f"-DPENDULUM_ZIG={zig}", f"-DPENDULUM_PYTHON={sys.executable}"]
 
 
+def fmi3_headers_present() -> bool:
+    """True when this build environment's fmpy carries the FMI 3.0 headers (cmake/Fmi3.cmake)."""
+    try:
+        import fmpy  # noqa: PLC0415 (a build requirement, absent in a plain checkout)
+    except ImportError:
+        return False
+    return (Path(fmpy.__file__).parent / "c-code" / "fmi3Functions.h").is_file()
+
+
 def build_fmu(platforms: bool = False) -> Path | None:
-    """Configure and build the ``fmu`` and ``pendulum_exact`` targets; the build folder, or None
+    """Configure and build the FMUs and the ``pendulum_exact`` and ``pendulum_driver`` libraries; the build folder, or None
     (with a warning).
 
     ``platforms``: also the win64 and darwin64 binaries and exact libraries (a wheel); an
@@ -100,7 +111,13 @@ def build_fmu(platforms: bool = False) -> Path | None:
               "it is looked for at run time", file=sys.stderr)
         return None
     options = platform_options() if platforms else []
-    targets = ["fmu", "pendulum_exact"] + (["pendulum_exact_platforms"] if options else [])
+    targets = ["fmu", "pendulum_exact", "pendulum_driver"] + (["pendulum_exact_platforms"] if options else [])
+    if fmi3_headers_present():
+        targets.append("fmu3")
+        options.append(f"-DPENDULUM_PYTHON={sys.executable}")   # the Python whose fmpy has the headers
+    else:
+        print("warning: pendulum-fmu: no fmpy in the build environment: the FMI 3.0 FMU is not built",
+              file=sys.stderr)
     commands = [[cmake, "-S", str(ROOT), "-B", str(build_dir), "-DCMAKE_BUILD_TYPE=Release", *options],
                 [cmake, "--build", str(build_dir), "--target", *targets, "--parallel", str(os.cpu_count() or 1)]]
     for command in commands:
@@ -133,11 +150,17 @@ class BuildPyWithFmu(build_py):
         package = Path(self.build_lib) / "pendulum_fmu"
         package.mkdir(parents=True, exist_ok=True)
         shutil.copyfile(build_dir / "Pendulum.fmu", package / "Pendulum.fmu")
-        # The exact solution's C library, for pendulum_fmu.exact: the host's, and any cross-built
-        # ones left in build_dir/exact_lib/<platform>/ (platform names as the FMU's binaries/).
-        libraries = [(host_library_folder(), path) for path in build_dir.glob("*pendulum_exact.*")
-                     if path.suffix in (".so", ".dll", ".dylib")]
-        libraries += [(path.parent.name, path) for path in build_dir.glob("exact_lib/*/*pendulum_exact.*")]
+        if (build_dir / "fmi3" / "Pendulum.fmu").is_file():  # pendulum_fmu.fmu.build.PACKAGED_FMU3
+            (package / "fmi3").mkdir(exist_ok=True)
+            shutil.copyfile(build_dir / "fmi3" / "Pendulum.fmu", package / "fmi3" / "Pendulum.fmu")
+        # The C libraries: pendulum_exact (pendulum_fmu.exact) and pendulum_driver (FmuRunner's
+        # output loop): the host's, and any cross-built ones left in build_dir/exact_lib/<platform>/
+        # (platform names as the FMU's binaries/).
+        libraries = []
+        for stem in ("pendulum_exact", "pendulum_driver"):
+            libraries += [(host_library_folder(), path) for path in build_dir.glob(f"*{stem}.*")
+                          if path.suffix in (".so", ".dll", ".dylib")]
+            libraries += [(path.parent.name, path) for path in build_dir.glob(f"exact_lib/*/*{stem}.*")]
         for folder, path in libraries:
             target = package / "lib" / folder / path.name
             target.parent.mkdir(parents=True, exist_ok=True)

@@ -84,16 +84,31 @@ foreach(platform IN ITEMS LINUX_X86_64 WINDOWS_X86_64 MACOS_X86_64 MACOS_ARM64)
   cross_shared_library(exact_${platform} TARGET ${ZIG_${platform}} SUBDIR exact-${platform} ${exact_cross_common})
 endforeach()
 universal_macos_library(exact_darwin64 NAME pendulum_exact INPUTS ${exact_MACOS_X86_64} ${exact_MACOS_ARM64})
+# ... and pendulum_driver (the output loop of pendulum_fmu.fmu.driver), the same way.
+set(driver_cross_common NAME pendulum_driver SOURCES ${PROJECT_SOURCE_DIR}/driver_lib/pendulum_driver.c
+    INCLUDES ${PROJECT_SOURCE_DIR}/driver_lib DEPENDS ${PROJECT_SOURCE_DIR}/driver_lib/pendulum_driver.h)
+foreach(platform IN ITEMS LINUX_X86_64 WINDOWS_X86_64 MACOS_X86_64 MACOS_ARM64)
+  cross_shared_library(driver_${platform} TARGET ${ZIG_${platform}} SUBDIR driver-${platform} ${driver_cross_common})
+endforeach()
+universal_macos_library(driver_darwin64 NAME pendulum_driver INPUTS ${driver_MACOS_X86_64} ${driver_MACOS_ARM64})
 set(exact_dir ${CMAKE_BINARY_DIR}/exact_lib)
 add_custom_command(
   OUTPUT ${exact_dir}/linux64/libpendulum_exact.so ${exact_dir}/win64/pendulum_exact.dll
          ${exact_dir}/darwin64/libpendulum_exact.dylib
+         ${exact_dir}/linux64/libpendulum_driver.so ${exact_dir}/win64/pendulum_driver.dll
+         ${exact_dir}/darwin64/libpendulum_driver.dylib
   COMMAND ${CMAKE_COMMAND} -E make_directory ${exact_dir}/linux64 ${exact_dir}/win64 ${exact_dir}/darwin64
   COMMAND ${CMAKE_COMMAND} -E copy ${exact_LINUX_X86_64} ${exact_dir}/linux64/libpendulum_exact.so
   COMMAND ${CMAKE_COMMAND} -E copy ${exact_WINDOWS_X86_64} ${exact_dir}/win64/pendulum_exact.dll
   COMMAND ${CMAKE_COMMAND} -E copy ${exact_darwin64} ${exact_dir}/darwin64/libpendulum_exact.dylib
+  COMMAND ${CMAKE_COMMAND} -E copy ${driver_LINUX_X86_64} ${exact_dir}/linux64/libpendulum_driver.so
+  COMMAND ${CMAKE_COMMAND} -E copy ${driver_WINDOWS_X86_64} ${exact_dir}/win64/pendulum_driver.dll
+  COMMAND ${CMAKE_COMMAND} -E copy ${driver_darwin64} ${exact_dir}/darwin64/libpendulum_driver.dylib
   DEPENDS ${exact_LINUX_X86_64} ${exact_WINDOWS_X86_64} ${exact_darwin64}
+          ${driver_LINUX_X86_64} ${driver_WINDOWS_X86_64} ${driver_darwin64}
   VERBATIM)
 add_custom_target(pendulum_exact_platforms ALL
                   DEPENDS ${exact_dir}/linux64/libpendulum_exact.so ${exact_dir}/win64/pendulum_exact.dll
-                          ${exact_dir}/darwin64/libpendulum_exact.dylib)
+                          ${exact_dir}/darwin64/libpendulum_exact.dylib
+                          ${exact_dir}/linux64/libpendulum_driver.so ${exact_dir}/win64/pendulum_driver.dll
+                          ${exact_dir}/darwin64/libpendulum_driver.dylib)

@@ -62,9 +62,12 @@ def test_bench_sweep_prints_runs_per_second(fmu_path: Path, capsys: pytest.Captu
     assert main(["bench", "sweep", "--runs", "24", "--periods", "2", "--workers", "1", "--repeat", "1",
                  "--fmu", str(fmu_path)]) == 0
     out = capsys.readouterr().out
-    match = re.search(r"^bench_sweep workers=1 runs=24 rate=([0-9.]+) ", out, re.MULTILINE)
-    assert match is not None, out
-    assert float(match.group(1)) > 0
+    for loop in ("c", "python"):   # the workers' output loop in C and, for comparison, in Python
+        match = re.search(rf"^bench_sweep loop={loop} workers=1 runs=24 rate=([0-9.]+) per_worker=([0-9.]+) ", out,
+                          re.MULTILINE)
+        assert match is not None, out
+        assert float(match.group(1)) > 0 and float(match.group(2)) == pytest.approx(float(match.group(1)), rel=1e-3)
+    assert re.search(r"^C loop / Python loop, 1 worker\(s\): [0-9.]+x runs per second per worker$", out, re.MULTILINE)
 
 
 def test_bench_accuracy_prints_every_regime_within_5e_14(fmu_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
@@ -75,3 +78,20 @@ def test_bench_accuracy_prints_every_regime_within_5e_14(fmu_path: Path, capsys:
     for case, theta_error, omega_error, naive in cases:
         assert float(theta_error) <= 5e-14 and float(omega_error) <= 5e-14, case
     assert float(cases[-1][3]) > 1e-12  # the naive scipy evaluation after 1e6 periods is far worse
+
+
+def test_bench_speed_prints_the_package_beside_its_peers(fmu_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    """Every row at the same error target; the package's rows (C loop, the Python loop before it,
+    the C loop alone with 2, 4 and 6 outputs) and the peers' in machine-readable lines."""
+    assert main(["bench", "speed", "--repeat", "2", "--fmu", str(fmu_path)]) == 0
+    out = capsys.readouterr().out
+    assert re.search(r"C loop \S*libpendulum_driver\.so$", out.splitlines()[0])
+    rows = {m.group(1): (float(m.group(2)), float(m.group(3)), float(m.group(4))) for m in re.finditer(
+        r"^bench_speed method='([^']+)' best_ms=(\S+) median_ms=(\S+) error=(\S+)$", out, re.MULTILINE)}
+    expected = {"package, C loop (FmuRunner)", "package, Python loop (before)", "package C loop, theta and omega",
+                "package C loop, + theta_exact, omega_exact", "package C loop, all 6 outputs",
+                "fmpy FMU2Slave wrappers", "fmpy simulate_fmu", "fmpy simulate_fmu, tuned",
+                "scipy ode dop853 (compiled)", "scipy solve_ivp DOP853"}
+    assert expected <= set(rows), out
+    for name, (best, median, error) in rows.items():
+        assert 0 < best <= median and error <= 1e-9, name

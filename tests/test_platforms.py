@@ -302,5 +302,7 @@ def test_wheel_is_py3_none_any_and_carries_all_three_binaries(built_wheel: Path,
         fmu = tmp_path / "Pendulum.fmu"
         fmu.write_bytes(wheel.read("pendulum_fmu/Pendulum.fmu"))
     assert set(supported_platforms(str(fmu))) == {"linux64", "win64", "darwin64", "c-code"}
-    for library in ("linux64/libpendulum_exact.so", "win64/pendulum_exact.dll", "darwin64/libpendulum_exact.dylib"):
+    for library in ("linux64/libpendulum_exact.so", "win64/pendulum_exact.dll", "darwin64/libpendulum_exact.dylib",
+                    "linux64/libpendulum_driver.so", "win64/pendulum_driver.dll", "darwin64/libpendulum_driver.dylib"):
         assert f"pendulum_fmu/lib/{library}" in names
+    assert "pendulum_fmu/fmi3/Pendulum.fmu" in names

@@ -37,6 +37,7 @@ def installed(built_wheel: Path) -> Path:
     assert wheel.name.endswith("-py3-none-any.whl")
     names = zipfile.ZipFile(wheel).namelist()
     assert "pendulum_fmu/Pendulum.fmu" in names and "pendulum_fmu/lib/linux64/libpendulum_exact.so" in names
+    assert "pendulum_fmu/fmi3/Pendulum.fmu" in names and "pendulum_fmu/lib/linux64/libpendulum_driver.so" in names
     stamp = hashlib.sha256(LOCK.read_bytes()).hexdigest()
     python = VENV / "bin" / "python"
     stamp_file = VENV / ".lock"
@@ -87,3 +88,63 @@ def test_what_is_not_installed_says_so_in_one_line(installed: Path, tmp_path: Pa
     exact = _run([str(installed), "bench", "exact", "-n", "1000", "--amplitudes", "80"], tmp_path, env)
     assert exact.returncode == 0 and "the C benchmark (tests/c/bench_exact) is not installed" in exact.stdout
     assert list(tmp_path.iterdir()) == []
+
+
+def _clean_env() -> dict[str, str]:
+    return {key: value for key, value in os.environ.items() if not key.startswith("PENDULUM_")}
+
+
+def test_the_installed_package_runs_its_shipped_c_loop(installed: Path, tmp_path: Path) -> None:
+    """FmuRunner of the installed wheel drives its runs with the wheel's pendulum_driver library
+    (not the checkout's build/), for the FMI 2.0 and the FMI 3.0 FMU it carries."""
+    python = installed.parent / "python"
+    script = ("from pendulum_fmu.fmu import driver; from pendulum_fmu.fmu.build import PACKAGED_FMU, PACKAGED_FMU3; "
+              "from pendulum_fmu import FmuRunner, Pendulum, Method, TimeGrid; print(driver.library_path()); "
+              "[print(r.loop, r.fmi_version, r.run(Pendulum.from_degrees(80), Method('rkn', 1e-9), "
+              "TimeGrid(2, 'periods', 20)).max_error) for r in (FmuRunner(PACKAGED_FMU), FmuRunner(PACKAGED_FMU3))]")
+    done = _run([str(python), "-c", script], tmp_path, _clean_env())
+    assert done.returncode == 0, done.stderr[-3000:]
+    library, *runs = done.stdout.splitlines()
+    site = installed.parent.parent / "lib"
+    assert Path(library).is_relative_to(site) and library.endswith("pendulum_fmu/lib/linux64/libpendulum_driver.so")
+    assert [run.split()[:2] for run in runs] == [["c", "2"], ["c", "3"]]
+    assert all(float(run.split()[2]) < 1e-9 for run in runs)
+
+
+FMI3_COMMANDS: list[list[str]] = [
+    ["simulate", "-a", "85", "-p", "2", "-o", "run.csv"],
+    ["compare", "-a", "170", "-p", "1"],
+    ["sweep", "-a", "10:170:3", "-p", "1", "-j", "1", "-q"],
+    ["bench", "speed", "--repeat", "1"],
+]
+
+
+@pytest.mark.parametrize("argv", FMI3_COMMANDS, ids=[" ".join(a[:2]) for a in FMI3_COMMANDS])
+def test_fmi_version_3_runs_the_packaged_fmi3_fmu(installed: Path, argv: list[str], tmp_path: Path) -> None:
+    done = _run([str(installed), *argv, "--fmi-version", "3"], tmp_path, _clean_env(), timeout=300)
+    assert done.returncode == 0, done.stderr[-3000:]
+    assert "Traceback" not in done.stderr
+    if argv[:2] == ["bench", "speed"]:
+        assert "pendulum_fmu/fmi3/Pendulum.fmu" in done.stdout and "pendulum_fmu/lib/linux64" in done.stdout
+
+
+def test_another_model_is_refused_in_one_line_by_every_command(installed: Path, tmp_path: Path) -> None:
+    site = installed.parent.parent / "lib"
+    packaged, = site.rglob("pendulum_fmu/Pendulum.fmu")
+    other = tmp_path / "Other.fmu"
+    with zipfile.ZipFile(packaged) as source, zipfile.ZipFile(other, "w") as target:
+        for item in source.infolist():
+            data = source.read(item)
+            if item.filename == "modelDescription.xml":
+                data = data.replace(b'modelName="Pendulum"', b'modelName="Bouncer"')
+            target.writestr(item, data)
+    work = tmp_path / "work"
+    work.mkdir()
+    for argv, _ in COMMANDS:
+        if argv[:2] == ["bench", "exact"]:   # no FMU in it: the exact library only
+            continue
+        done = _run([str(installed), *argv, "--fmu", str(other)], work, _clean_env(), timeout=120)
+        lines = done.stderr.strip().splitlines()
+        assert done.returncode == 2 and len(lines) == 1, (argv, done.stderr)
+        assert f"'{other}' is not the Pendulum FMU of pendulum-fmu: its model is 'Bouncer'" in lines[0], lines[0]
+    assert list(work.iterdir()) == []

@@ -1,4 +1,4 @@
-"""Build, simulate and check the Pendulum FMU (FMI 2.0, Co-Simulation and Model Exchange).
+"""Build, simulate and check the Pendulum FMU (FMI 2.0 and 3.0, Co-Simulation and Model Exchange).
 
 The typed API, imported on first use (so ``import pendulum_fmu`` stays quick)::
 

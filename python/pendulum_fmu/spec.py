@@ -10,6 +10,8 @@ import math
 from dataclasses import dataclass
 from typing import Literal
 
+import numpy as np
+
 from pendulum_fmu.errors import UsageError
 
 Interface = Literal["CS", "ME"]
@@ -177,4 +179,14 @@ class TimeGrid:
         count = max(1, math.ceil(stop / step - 1e-9))
         times = [k * step for k in range(count)]
         times.append(stop)
+        return times
+
+    def times_array(self, reference_period: float) -> np.ndarray:
+        """:meth:`times` as a float64 array, the same numbers bit for bit (k * step in double)."""
+        step = self.output_interval or reference_period / self.points_per_period
+        stop = self.stop * reference_period if self.unit == "periods" else self.stop
+        count = max(1, math.ceil(stop / step - 1e-9))
+        times = np.empty(count + 1)
+        np.multiply(np.arange(count, dtype=np.float64), step, out=times[:count])
+        times[count] = stop
         return times

@@ -38,6 +38,7 @@ from typing import Callable
 from fmpy import extract, read_model_description
 
 from pendulum_fmu.errors import BuildError, UsageError
+from pendulum_fmu.fmu.identity import fmi_version_of
 from pendulum_fmu.fmu.locate import locate_fmu
 from pendulum_fmu.output.paths import OutputError, check_output_folder
 from pendulum_fmu.bench.workprecision.analysis import Point, aggregate, best_method, curve, log_slope
@@ -233,6 +234,9 @@ def main(argv: list[str] | None = None) -> int:
     try:
         fmu = locate_fmu(args.fmu)
         check_output_folder(args.out)
+        if fmi_version_of(fmu) != 2:
+            raise UsageError("--fmu", f"{str(fmu)!r} is an FMI 3.0 FMU: bench solvers drives the FMI 2.0 API from "
+                                      "its C driver, give the FMI 2.0 Pendulum.fmu")
     except (UsageError, BuildError, OutputError) as error:
         print(f"pendulum-fmu bench solvers: error: {error}", file=sys.stderr)
         return 2

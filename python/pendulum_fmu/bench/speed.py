@@ -1,31 +1,39 @@
-"""Benchmark: one simulation from Python, the package's path against fmpy and a compiled peer.
+"""Benchmark: one simulation from Python, the package's path against fmpy and compiled peers.
 
 The problem (issue 12): released from rest at 80 deg, L = 1 m, g = 9.81 m/s^2, 100 exact
 periods, 8 output points a period; every method must reach max |theta - theta_exact| <= 1e-9
-on the output points (the truth from :func:`pendulum_fmu.exact`). Measured in one run, best
-of ``repeat`` after one warm-up:
+on the output points (the truth from pendulum_fmu.exact). Every method runs at the loosest
+tolerance of 1e-7 .. 1e-13 (decades) that reaches that error. After one warm-up each, the
+methods take turns, one run each per round, in a new (seeded) random order every round, with
+Python's cyclic garbage collector off during the rounds (as ``timeit`` does: no method pays
+for collecting another's garbage); best and median over the rounds are reported.
 
-- ``package``: :class:`~pendulum_fmu.fmu.runner.FmuRunner` (extracted once; the FMU's rkn;
-  ``fmi2DoStep`` and one ``fmi2GetReal`` per point through prebuilt ctypes prototypes);
-- ``fmpy wrappers``: the same FMU instance driven by fmpy's ``FMU2Slave.doStep``/``getReal``;
-- ``simulate_fmu``: fmpy's ``simulate_fmu("Pendulum.fmu", ...)`` as a user calls it (it
-  extracts the FMU every call);
-- ``simulate_fmu, tuned``: extracted once, only ``theta`` recorded, the model description
-  read once (what an fmpy user can do without this package);
-- ``ode dop853``: scipy's ``ode`` with Hairer's compiled DOP853 (Fortran; the right-hand side
-  is a Python function), the loosest rtol of 1e-7 .. 1e-13 that reaches the error;
-- ``solve_ivp DOP853``: scipy's pure-Python DOP853, likewise.
-
-- ``numbalsoda dop853``: numbalsoda's C++ DOP853 with a numba-compiled right-hand side, called
-  once for the whole grid: the compiled peer the issue names. It is optional (it builds from
-  source only, with a Fortran compiler: ``apt-get install gfortran`` and
-  ``pip install numba==0.68.1 numbalsoda==0.3.4``); without it its row says so.
+- package, C loop: FmuRunner.run as every command and the sweep's workers call it: the FMU's
+  rkn, DoStep and one GetReal of all six recorded outputs (theta, omega, their exact values,
+  x, y) per point from the C library pendulum_driver, straight into the result array;
+- package, Python loop (before): the same run with the same calls made from Python through
+  prebuilt ctypes prototypes (FmuRunner(loop="python"), the path before the C loop);
+- package C loop, theta and omega: the same C loop (without the Python of FmuRunner.run around
+  it) recording only what numbalsoda returns; then with the exact solution, then all six
+  outputs: where a full run's time goes;
+- fmpy FMU2Slave wrappers: the same FMU instance driven by fmpy's doStep/getReal;
+- fmpy simulate_fmu: simulate_fmu("Pendulum.fmu", ...) as a user calls it (it extracts the
+  FMU every call); tuned: extracted once, only theta recorded, the model description read once;
+- numbalsoda dop853: numbalsoda's C++ DOP853 with a numba-compiled right-hand side, called
+  once for the whole grid: the compiled peer of issue 18. Optional (it builds from source only,
+  with a Fortran compiler: apt-get install gfortran and pip install numba==0.68.1
+  numbalsoda==0.3.4); without it its row says so;
+- scipy ode dop853: Hairer's compiled DOP853 (Fortran) with a Python right-hand side;
+- scipy solve_ivp DOP853: scipy's pure-Python DOP853.
 """
 
 from __future__ import annotations
 
+import gc
 import math
+import random
 import shutil
+import statistics
 import time
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -33,6 +41,7 @@ from pathlib import Path
 
 import numpy as np
 
+from pendulum_fmu.fmu import driver
 from pendulum_fmu.fmu.library import exact
 from pendulum_fmu.fmu.runner import FmuRunner, reference_period
 from pendulum_fmu.spec import Method, Pendulum, TimeGrid
@@ -41,21 +50,23 @@ AMPLITUDE_DEG = 80.0
 PERIODS = 100
 POINTS_PER_PERIOD = 8
 TARGET_ERROR = 1e-9
-FMU_TOLERANCE = 1e-8
-"""rkn's tolerance for the FMU rows: the loosest decade that reaches TARGET_ERROR here."""
 PEER_TOLERANCES = tuple(10.0 ** -k for k in range(7, 14))
+"""The tolerances tried, loosest first, for the FMU's rkn and for every peer alike."""
+PACKAGE = "package, C loop (FmuRunner)"
+PACKAGE_PYTHON = "package, Python loop (before)"
+NUMBALSODA = "numbalsoda dop853 (compiled)"
 
 
 @dataclass(frozen=True)
 class Timing:
-    """One method's best wall time for the whole run, and its error.
+    """One method's wall times over the rounds, and its error.
 
     Attributes
     ----------
     name : str
         The method, as printed.
-    seconds : float
-        Best wall time of one run, s.
+    seconds : tuple of float
+        Wall time of one run in each round, s (empty when the method did not run).
     points : int
         Output points of the run (its first point included).
     error : float
@@ -65,68 +76,173 @@ class Timing:
     """
 
     name: str
-    seconds: float
+    seconds: tuple[float, ...]
     points: int
     error: float
     setting: str
 
     @property
+    def best(self) -> float:
+        """Fastest round, s (NaN when the method did not run)."""
+        return min(self.seconds) if self.seconds else math.nan
+
+    @property
+    def median(self) -> float:
+        """Median round, s (NaN when the method did not run)."""
+        return statistics.median(self.seconds) if self.seconds else math.nan
+
+    @property
     def us_per_point(self) -> float:
-        """Wall time per output point, microseconds."""
-        return 1e6 * self.seconds / self.points
+        """Best wall time per output point, microseconds."""
+        return 1e6 * self.best / self.points
 
 
-def _best(run: Callable[[], np.ndarray], repeat: int) -> tuple[float, np.ndarray]:
-    """Best wall time of ``repeat`` calls after one warm-up, and the last theta."""
-    theta = run()
-    best = math.inf
-    for _ in range(repeat):
-        start = time.perf_counter()
-        theta = run()
-        best = min(best, time.perf_counter() - start)
-    return best, theta
+@dataclass
+class _Method:
+    """A method ready to time: ``run`` returns theta on the grid."""
+
+    name: str
+    run: Callable[[], np.ndarray]
+    error: float
+    setting: str
 
 
-def measure(fmu: Path, repeat: int = 5) -> list[Timing]:
-    """Time every method on the problem; see the module's text.
+def _loosest(solve: Callable[[float], np.ndarray], truth: np.ndarray) -> tuple[float, float] | tuple[None, float]:
+    """(rtol, error) of the loosest tolerance reaching TARGET_ERROR, or (None, last error)."""
+    error = math.nan
+    for rtol in PEER_TOLERANCES:
+        error = float(np.max(np.abs(solve(rtol) - truth)))
+        if error <= TARGET_ERROR:
+            return rtol, error
+    return None, error
+
+
+def measure(fmu: Path, rounds: int = 10) -> list[Timing]:
+    """Time every method on the problem in interleaved rounds; see the module's text.
 
     Parameters
     ----------
     fmu : Path
-        ``Pendulum.fmu``.
-    repeat : int
-        Timed runs per method (the best counts).
+        ``Pendulum.fmu`` (FMI 2.0 or 3.0).
+    rounds : int
+        Rounds; each method runs once per round, in turn.
 
     Returns
     -------
     list of Timing
         In the order of the module's list.
     """
-    from fmpy import extract, read_model_description, simulate_fmu
-    from fmpy.fmi2 import FMU2Slave
-
     pendulum = Pendulum.from_degrees(AMPLITUDE_DEG)
-    method = Method("rkn", FMU_TOLERANCE)
     grid = TimeGrid(PERIODS, "periods", POINTS_PER_PERIOD)
-    timings: list[Timing] = []
-    with FmuRunner(fmu) as runner:
-        period = runner.period(pendulum)
-        times = np.asarray(grid.times(reference_period(period, pendulum)), dtype=float)
-        truth, _ = exact(pendulum.amplitude_rad, 0.0, pendulum.length, pendulum.gravity, times)
+    scratch: list[Path] = []
+    try:
+        with FmuRunner(fmu) as runner, FmuRunner(fmu, loop="python") as python_runner:
+            period = runner.period(pendulum)
+            times = grid.times_array(reference_period(period, pendulum))
+            truth, _ = exact(pendulum.amplitude_rad, 0.0, pendulum.length, pendulum.gravity, times)
+            methods, rtol = _package_methods(runner, python_runner, pendulum, grid, times, truth)
+            methods += _fmpy_methods(runner, fmu, pendulum, times, truth, rtol, scratch)
+            unavailable: list[Timing] = []
+            for name, solve in ((NUMBALSODA, _numbalsoda(pendulum)), ("scipy ode dop853 (compiled)", _ode_dop853),
+                                ("scipy solve_ivp DOP853", _solve_ivp_dop853)):
+                if isinstance(solve, str):
+                    unavailable.append(Timing(name, (), times.size, math.nan, solve))
+                    continue
+                rtol, error = _loosest(lambda r, s=solve: s(pendulum, times, r), truth)
+                if rtol is None:
+                    unavailable.append(Timing(name, (), times.size, error,
+                                              f"never <= {TARGET_ERROR:g} down to rtol {PEER_TOLERANCES[-1]:g}"))
+                    continue
+                methods.append(_Method(name, lambda s=solve, r=rtol: s(pendulum, times, r), error,
+                                       f"rtol {rtol:g}, atol rtol/100"))
+            seconds: dict[str, list[float]] = {m.name: [] for m in methods}
+            for method in methods:
+                method.run()   # warm-up
+            gc.collect()
+            gc.disable()   # as timeit does: no method pays for collecting another's garbage
+            try:
+                shuffle = random.Random(0).shuffle
+                for _ in range(rounds):   # a new order every round: no method always follows the same one
+                    order = list(methods)
+                    shuffle(order)
+                    for method in order:
+                        start = time.perf_counter()
+                        method.run()
+                        seconds[method.name].append(time.perf_counter() - start)
+            finally:
+                gc.enable()
+    finally:
+        for folder in scratch:
+            shutil.rmtree(folder, ignore_errors=True)
+    timings = [Timing(m.name, tuple(seconds[m.name]), times.size, m.error, m.setting) for m in methods]
+    order = [PACKAGE, PACKAGE_PYTHON, *LOOP_ROWS, "fmpy FMU2Slave wrappers",
+             "fmpy simulate_fmu", "fmpy simulate_fmu, tuned", NUMBALSODA, "scipy ode dop853 (compiled)",
+             "scipy solve_ivp DOP853"]
+    every = timings + unavailable
+    return sorted(every, key=lambda t: order.index(t.name) if t.name in order else len(order))
 
-        def error(theta: np.ndarray) -> float:
-            return float(np.max(np.abs(theta - truth)))
 
-        seconds, theta = _best(lambda: runner.run(pendulum, method, grid).result["theta"], repeat)
-        timings.append(Timing("package (FmuRunner)", seconds, times.size, error(theta), f"rkn, tol {FMU_TOLERANCE:g}"))
+def _package_methods(runner: FmuRunner, python_runner: FmuRunner, pendulum: Pendulum, grid: TimeGrid,
+                     times: np.ndarray, truth: np.ndarray) -> tuple[list[_Method], float]:
+    """The package's rows, all at rkn's loosest tolerance that reaches the error, and that tolerance."""
+    rtol, error = _loosest(lambda r: runner.run(pendulum, Method("rkn", r), grid).result["theta"], truth)
+    if rtol is None:
+        raise RuntimeError(f"the FMU's rkn does not reach {TARGET_ERROR:g} on the benchmark problem")
+    method = Method("rkn", rtol)
+    setting = f"rkn, tol {rtol:g}"
+    rows = [_Method(PACKAGE, lambda: runner.run(pendulum, method, grid).result["theta"], error,
+                    f"{setting}, 6 outputs, {runner.loop} loop"),
+            _Method(PACKAGE_PYTHON, lambda: python_runner.run(pendulum, method, grid).result["theta"],
+                    float(np.max(np.abs(python_runner.run(pendulum, method, grid).result["theta"] - truth))),
+                    f"{setting}, 6 outputs")]
+    if runner.loop != "c":
+        return rows, rtol
+    for label, names in LOOP_ROWS.items():
+        rows.append(_loop_row(runner, pendulum, method, times, truth, label, names, setting))
+    return rows, rtol
 
-        slave: FMU2Slave = runner._fresh_slave()  # the same instance, now driven by fmpy's wrappers
+
+LOOP_ROWS: dict[str, tuple[str, ...]] = {
+    "package C loop, theta and omega": ("theta", "omega"),
+    "package C loop, + theta_exact, omega_exact": ("theta", "omega", "theta_exact", "omega_exact"),
+    "package C loop, all 6 outputs": ("theta", "omega", "theta_exact", "omega_exact", "x", "y"),
+}
+"""The C loop alone (reset, initialization, loop, terminate; no Trajectory), recording what
+numbalsoda returns, then adding the FMU's outputs: where a full run's time goes."""
+
+
+def _loop_row(runner: FmuRunner, pendulum: Pendulum, method: Method, times: np.ndarray, truth: np.ndarray,
+              label: str, names: tuple[str, ...], setting: str) -> _Method:
+    """A row of :data:`LOOP_ROWS`: the runner's instance driven by a C loop over ``names``."""
+    rows = np.dtype([("time", np.float64)] + [(name, np.float64) for name in names])
+    loop = driver.CLoop(runner._fresh_slave(), runner.fmi_version, [runner.vr[name] for name in names])
+
+    def run() -> np.ndarray:
+        slave = runner._fresh_slave()
+        runner._initialize(slave, pendulum, method)
+        out = np.empty(times.size, dtype=rows)
+        loop.run(times, out, names[0], runner._log)
+        slave.terminate()
+        return out["theta"]
+
+    return _Method(label, run, float(np.max(np.abs(run() - truth))), f"{setting}, {', '.join(names)}")
+
+
+def _fmpy_methods(runner: FmuRunner, fmu: Path, pendulum: Pendulum, times: np.ndarray, truth: np.ndarray,
+                  rtol: float, scratch: list[Path]) -> list[_Method]:
+    """fmpy's rows at the same tolerance as the package (FMI 2.0 only for the wrapper loop);
+    the folders to delete afterwards go to ``scratch``."""
+    from fmpy import extract, read_model_description, simulate_fmu
+
+    rows: list[_Method] = []
+    if runner.fmi_version == 2:
+        slave = runner._fresh_slave()  # the same instance, now driven by fmpy's wrappers
         vr = runner.vr
         refs = [vr["theta"]]
 
         def fmpy_loop() -> np.ndarray:
             slave.reset()
-            slave.setupExperiment(tolerance=FMU_TOLERANCE, startTime=0.0)
+            slave.setupExperiment(tolerance=rtol, startTime=0.0)
             slave.setReal([vr["theta"]], [pendulum.amplitude_rad])
             slave.enterInitializationMode()
             slave.exitInitializationMode()
@@ -138,42 +254,37 @@ def measure(fmu: Path, repeat: int = 5) -> list[Timing]:
             slave.terminate()
             return out
 
-        seconds, theta = _best(fmpy_loop, repeat)
-        timings.append(Timing("fmpy FMU2Slave wrappers", seconds, times.size, error(theta), f"rkn, tol {FMU_TOLERANCE:g}"))
+        rows.append(_Method("fmpy FMU2Slave wrappers", fmpy_loop, float(np.max(np.abs(fmpy_loop() - truth))),
+                            f"rkn, tol {rtol:g}"))
     interval = float(times[1] - times[0])
-    stop = float(times[-1])
-    options = dict(start_time=0.0, stop_time=stop, output_interval=interval, relative_tolerance=FMU_TOLERANCE,
+    options = dict(start_time=0.0, stop_time=float(times[-1]), output_interval=interval, relative_tolerance=rtol,
                    start_values={"theta": pendulum.amplitude_rad}, validate=False)
 
-    seconds, theta = _best(lambda: simulate_fmu(str(fmu), output=["theta", "theta_exact"], **options)["theta"], repeat)
-    timings.append(Timing("fmpy simulate_fmu", seconds, times.size, error(theta), f"rkn, tol {FMU_TOLERANCE:g}"))
+    def plain() -> np.ndarray:
+        return np.asarray(simulate_fmu(str(fmu), output=["theta", "theta_exact"], **options)["theta"])
+
+    rows.append(_Method("fmpy simulate_fmu", plain, float(np.max(np.abs(plain() - truth))), f"rkn, tol {rtol:g}"))
     unzipped = extract(str(fmu))
-    try:
-        description = read_model_description(unzipped, validate=False)
-        seconds, theta = _best(lambda: simulate_fmu(unzipped, model_description=description, output=["theta"],
-                                                    **options)["theta"], repeat)
-        timings.append(Timing("fmpy simulate_fmu, tuned", seconds, times.size, error(theta),
-                              f"rkn, tol {FMU_TOLERANCE:g}, extracted once, theta only"))
-    finally:
-        shutil.rmtree(unzipped, ignore_errors=True)
-    timings.append(_numbalsoda_row(pendulum, times, truth, repeat))
-    timings.append(_peer("scipy ode dop853 (compiled)", _ode_dop853, pendulum, times, truth, repeat))
-    timings.append(_peer("scipy solve_ivp DOP853", _solve_ivp_dop853, pendulum, times, truth, repeat))
-    return timings
+    scratch.append(Path(unzipped))
+    description = read_model_description(unzipped, validate=False)
+
+    def tuned() -> np.ndarray:
+        return np.asarray(simulate_fmu(unzipped, model_description=description, output=["theta"], **options)["theta"])
+
+    rows.append(_Method("fmpy simulate_fmu, tuned", tuned, float(np.max(np.abs(tuned() - truth))),
+                        f"rkn, tol {rtol:g}, extracted once, theta only"))
+    return rows
 
 
-NUMBALSODA = "numbalsoda dop853 (compiled)"
-"""The name of numbalsoda's row."""
 
 
-def _numbalsoda_row(pendulum: Pendulum, times: np.ndarray, truth: np.ndarray, repeat: int) -> Timing:
-    """numbalsoda's row, or a row that says it is not installed."""
+def _numbalsoda(pendulum: Pendulum) -> Callable[[Pendulum, np.ndarray, float], np.ndarray] | str:
+    """numbalsoda's solver on this problem, or why it cannot run."""
     try:
         import numba
         import numbalsoda
     except ImportError:
-        return Timing(NUMBALSODA, math.nan, times.size, math.nan,
-                      "not installed: apt-get install gfortran; pip install numba==0.68.1 numbalsoda==0.3.4")
+        return "not installed: apt-get install gfortran; pip install numba==0.68.1 numbalsoda==0.3.4"
 
     @numba.cfunc(numbalsoda.lsoda_sig)
     def rhs(_t, u, du, p):  # type: ignore[no-untyped-def]
@@ -187,7 +298,7 @@ def _numbalsoda_row(pendulum: Pendulum, times: np.ndarray, truth: np.ndarray, re
         solution, ok = numbalsoda.dop853(rhs.address, start, grid, data=data, rtol=rtol, atol=rtol / 100.0)
         return solution[:, 0] if ok else np.full(grid.size, math.nan)
 
-    return _peer(NUMBALSODA, solve, pendulum, times, truth, repeat)
+    return solve
 
 
 def _ode_dop853(pendulum: Pendulum, times: np.ndarray, rtol: float) -> np.ndarray:
@@ -220,15 +331,3 @@ def _solve_ivp_dop853(pendulum: Pendulum, times: np.ndarray, rtol: float) -> np.
     solution = solve_ivp(rhs, (0.0, float(times[-1])), [pendulum.amplitude_rad, pendulum.omega0], method="DOP853",
                          t_eval=times, rtol=rtol, atol=rtol / 100.0)
     return np.asarray(solution.y[0])
-
-
-def _peer(name: str, solve: Callable[[Pendulum, np.ndarray, float], np.ndarray], pendulum: Pendulum,
-          times: np.ndarray, truth: np.ndarray, repeat: int) -> Timing:
-    """The peer at the loosest tolerance of PEER_TOLERANCES that reaches TARGET_ERROR."""
-    for rtol in PEER_TOLERANCES:
-        theta = solve(pendulum, times, rtol)
-        err = float(np.max(np.abs(theta - truth)))
-        if err <= TARGET_ERROR:
-            seconds, theta = _best(lambda: solve(pendulum, times, rtol), repeat)
-            return Timing(name, seconds, times.size, err, f"rtol {rtol:g}, atol rtol/100")
-    return Timing(name, math.nan, times.size, err, f"never <= {TARGET_ERROR:g} down to rtol {PEER_TOLERANCES[-1]:g}")

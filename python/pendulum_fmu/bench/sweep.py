@@ -4,11 +4,14 @@ The sweep is the README's: N amplitudes from 1 to 179 deg, released from rest, 1
 periods each, the FMU's dopri5 at its default tolerance, 50 output points a period. For each
 worker count a local cluster is started (not timed), every worker loads the FMU, and the
 whole sweep is timed from the first submission to the last result; the median of
-``--repeat`` sweeps is reported.
+``--repeat`` sweeps is reported. Each worker count runs with the workers' output loop in C
+(the package's path) and in Python (the path before it; ``PENDULUM_FMU_LOOP=python`` in
+the workers' environment), so that the runs per second per worker are seen before and after.
 """
 
 from __future__ import annotations
 
+import os
 import statistics
 import time
 from dataclasses import dataclass
@@ -31,12 +34,15 @@ class Throughput:
         Wall time of each repeated sweep.
     startup : float
         Seconds to start the local cluster (not in ``seconds``).
+    loop : str
+        The workers' output loop: ``c`` or ``python``.
     """
 
     workers: int
     runs: int
     seconds: tuple[float, ...]
     startup: float
+    loop: str = "c"
 
     @property
     def rate(self) -> float:
@@ -50,14 +56,23 @@ def bench_points(runs: int, periods: float) -> list[SweepPoint]:
     return SweepGrid(amplitudes, periods=periods, solvers=("dopri5",)).points()
 
 
-def measure(fmu: Path, points: list[SweepPoint], workers: int, repeat: int) -> Throughput:
-    """Time ``repeat`` sweeps of ``points`` on a fresh local cluster of ``workers`` processes."""
+def measure(fmu: Path, points: list[SweepPoint], workers: int, repeat: int, loop: str = "c") -> Throughput:
+    """Time ``repeat`` sweeps of ``points`` on a fresh local cluster of ``workers`` processes
+    whose runners use the output ``loop`` ("c" or "python")."""
     from pendulum_fmu.sweep.cluster import dask_client, execute
 
-    start = time.perf_counter()
-    with dask_client(None, workers) as client:
-        client.wait_for_workers(workers)
-        startup = time.perf_counter() - start
-        seconds = tuple(execute(client, fmu, points, progress=False) for _ in range(repeat))
-    return Throughput(workers, len(points), seconds, startup)
+    saved = os.environ.get("PENDULUM_FMU_LOOP")
+    os.environ["PENDULUM_FMU_LOOP"] = loop   # the local workers are started with this environment
+    try:
+        start = time.perf_counter()
+        with dask_client(None, workers) as client:
+            client.wait_for_workers(workers)
+            startup = time.perf_counter() - start
+            seconds = tuple(execute(client, fmu, points, progress=False) for _ in range(repeat))
+    finally:
+        if saved is None:
+            os.environ.pop("PENDULUM_FMU_LOOP", None)
+        else:
+            os.environ["PENDULUM_FMU_LOOP"] = saved
+    return Throughput(workers, len(points), seconds, startup, loop)
 

@@ -14,7 +14,8 @@ from collections.abc import Callable, Sequence
 from pathlib import Path
 
 from pendulum_fmu.errors import UsageError
-from pendulum_fmu.fmu.locate import fmu_problem
+from pendulum_fmu.fmu.identity import pendulum_problem
+from pendulum_fmu.fmu.locate import fmu_problem, locate_fmu
 from pendulum_fmu.output.paths import OutputError, check_output_file, check_output_folder
 from pendulum_fmu.spec import CS_SOLVERS, DEFAULT_CS_SOLVER, ME_SOLVERS, SOLVERS, Method, Pendulum, TimeGrid
 
@@ -185,9 +186,10 @@ def existing_file(text: str) -> Path:
 
 
 def fmu_file(text: str) -> Path:
-    """A type for an FMU: an existing zip archive with a ``modelDescription.xml``."""
+    """A type for an FMU: an existing zip archive whose ``modelDescription.xml`` is this project's
+    Pendulum (FMI 2.0 or 3.0)."""
     path = existing_file(text)
-    problem = fmu_problem(path)
+    problem = fmu_problem(path) or pendulum_problem(path)
     if problem is not None:
         raise argparse.ArgumentTypeError(problem)
     return path
@@ -197,8 +199,28 @@ def fmu_file(text: str) -> Path:
 def add_fmu_argument(parser: argparse.ArgumentParser) -> None:
     """``--fmu PATH``: which FMU to run."""
     parser.add_argument("--fmu", type=fmu_file, metavar="PATH",
-                        help="the Pendulum.fmu to run (default: $PENDULUM_FMU, the FMU installed with the "
-                             "package, or the repository's build/, rebuilt when its sources changed)")
+                        help="the Pendulum.fmu to run, FMI 2.0 or 3.0 (default: $PENDULUM_FMU, the FMU installed "
+                             "with the package, or the repository's build/, rebuilt when its sources changed)")
+    parser.add_argument("--fmi-version", type=int, choices=(2, 3), default=None, metavar="{2,3}",
+                        help="run the package's FMI 2.0 (default) or FMI 3.0 Pendulum.fmu; with --fmu, "
+                             "that FMU's version must match")
+
+
+def resolve_fmu(args: argparse.Namespace) -> None:
+    """Settle ``args.fmu`` from ``--fmu`` and ``--fmi-version`` (a no-op for commands without them).
+
+    ``--fmi-version 3`` without ``--fmu`` puts the FMI 3.0 FMU's path in ``args.fmu``; with
+    ``--fmu`` the file's version must be the one asked.
+
+    Raises
+    ------
+    UsageError
+        If the versions disagree or no FMU of the version asked is found.
+    """
+    version = getattr(args, "fmi_version", None)
+    if version is None:
+        return
+    args.fmu = locate_fmu(args.fmu, fmi_version=version)
 
 
 def add_pendulum_arguments(parser: argparse.ArgumentParser, default_amplitude: str = "75") -> None:

@@ -16,18 +16,19 @@ from typing import NoReturn
 
 from pendulum_fmu import __version__
 from pendulum_fmu.cli import animate, bench, compare, judge, simulate, study, sweep
+from pendulum_fmu.cli.arguments import resolve_fmu
 from pendulum_fmu.errors import BuildError, SimulationError, UsageError
 
 COMMANDS: tuple[ModuleType, ...] = (simulate, compare, study, animate, sweep, bench, judge)
 
 DESCRIPTION = """\
 Build, run and check Pendulum.fmu: the nonlinear pendulum theta'' + (g/L) sin(theta) = 0,
-FMI 2.0 Co-Simulation and Model Exchange, with its exact Jacobi-elliptic solution inside.
+FMI 2.0 and 3.0, Co-Simulation and Model Exchange, with its exact Jacobi-elliptic solution inside.
 """
 EPILOG = """\
 'pendulum-fmu COMMAND --help' shows each command's options. The FMU used is --fmu PATH,
 else $PENDULUM_FMU, else the one installed with the package, else the repository's build/
-(rebuilt with CMake when its sources changed).
+(rebuilt with CMake when its sources changed); --fmi-version 3 chooses the FMI 3.0 FMU.
 
 examples:
   pendulum-fmu study
@@ -92,6 +93,7 @@ def main(argv: list[str] | None = None) -> int:
     args = parser.parse_args(arguments)
     subparser: argparse.ArgumentParser = args.subparser
     try:
+        resolve_fmu(args)
         return int(args.handler(args))
     except UsageError as error:
         subparser.error(str(error))  # one line: "error: argument ...", exit 2

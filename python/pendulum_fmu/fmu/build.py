@@ -10,6 +10,13 @@ REPO_ROOT: Path = Path(__file__).resolve().parents[3]
 DEFAULT_BUILD_DIR: Path = REPO_ROOT / "build"
 PACKAGED_FMU: Path = Path(__file__).resolve().parents[1] / "Pendulum.fmu"
 """Where a wheel built by ``setup.py`` carries the FMU (absent in an editable install)."""
+PACKAGED_FMU3: Path = Path(__file__).resolve().parents[1] / "fmi3" / "Pendulum.fmu"
+"""Where a wheel carries the FMI 3.0 FMU (CMake's ``build/fmi3/Pendulum.fmu``)."""
+
+
+def fmu3_in(build_dir: Path) -> Path:
+    """Where CMake packs the FMI 3.0 FMU in ``build_dir`` (it may not exist yet)."""
+    return build_dir / "fmi3" / "Pendulum.fmu"
 
 
 def fmu_in(build_dir: Path) -> Path:

@@ -22,6 +22,7 @@ from types import TracebackType
 import numpy as np
 from fmpy import extract, read_model_description
 from fmpy.fmi2 import FMU2Model
+from fmpy.fmi3 import FMU3Model
 
 VARIABLE_NAMES: tuple[str, ...] = ("L", "g", "theta", "omega", "theta_exact", "omega_exact", "period")
 """The model variables this port uses (value references are looked up by name)."""
@@ -54,7 +55,8 @@ class ExactPort:
             raise ValueError(f"{self._fmu_path} lacks the variables {missing}")
         self.value_references: dict[str, int] = {name: by_name[name] for name in VARIABLE_NAMES}
         self._unzip_dir = Path(extract(str(self._fmu_path)))
-        self._model = FMU2Model(
+        self._fmi3 = str(description.fmiVersion) == "3.0"   # the FMI 3.0 Pendulum.fmu works alike
+        self._model = (FMU3Model if self._fmi3 else FMU2Model)(
             guid=description.guid,
             unzipDirectory=str(self._unzip_dir),
             modelIdentifier=description.modelExchange.modelIdentifier,
@@ -99,15 +101,23 @@ class ExactPort:
         self._fresh = False
         self._initialized = False
         model = self._model
-        model.setupExperiment(startTime=start_time)
         vr = self.value_references
-        model.setReal([vr["L"], vr["g"], vr["theta"], vr["omega"]],
-                      [float(length), float(gravity), float(theta0), float(omega0)])
-        model.enterInitializationMode()
-        model.exitInitializationMode()
-        # Event Mode after initialization: iterate the (trivial) event loop, then leave it.
-        while model.newDiscreteStates()[0]:
-            pass
+        references = [vr["L"], vr["g"], vr["theta"], vr["omega"]]
+        values = [float(length), float(gravity), float(theta0), float(omega0)]
+        if self._fmi3:
+            model.setFloat64(references, values)
+            model.enterInitializationMode(startTime=start_time)
+            model.exitInitializationMode()
+            while model.updateDiscreteStates()[0]:   # Event Mode after initialization, as in 2.0
+                pass
+        else:
+            model.setupExperiment(startTime=start_time)
+            model.setReal(references, values)
+            model.enterInitializationMode()
+            model.exitInitializationMode()
+            # Event Mode after initialization: iterate the (trivial) event loop, then leave it.
+            while model.newDiscreteStates()[0]:
+                pass
         model.enterContinuousTimeMode()
         self._initialized = True
 
@@ -132,9 +142,10 @@ class ExactPort:
         omega = np.empty(t.shape)
         refs = [self.value_references["theta_exact"], self.value_references["omega_exact"]]
         model = self._model
+        get = model.getFloat64 if self._fmi3 else model.getReal
         for index, value in np.ndenumerate(t):
             model.setTime(float(value))
-            theta[index], omega[index] = model.getReal(refs)
+            theta[index], omega[index] = get(refs)
         return theta, omega
 
     def period(self) -> float:
@@ -146,7 +157,8 @@ class ExactPort:
             Period in seconds.
         """
         self._check_initialized()
-        return float(self._model.getReal([self.value_references["period"]])[0])
+        get = self._model.getFloat64 if self._fmi3 else self._model.getReal
+        return float(get([self.value_references["period"]])[0])
 
     def close(self) -> None:
         """Terminate and free the instance and delete the extracted files (idempotent)."""

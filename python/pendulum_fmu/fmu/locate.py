@@ -2,7 +2,11 @@
 
 Order: an explicit path (``--fmu``), then ``$PENDULUM_FMU``, then the FMU installed inside
 the package (a wheel built by ``setup.py`` carries one), then, in a source checkout, the
-CMake build in ``build/``, rebuilt incrementally when a source is newer than it.
+CMake build in ``build/``, rebuilt incrementally when a source is newer than it. Asked for
+FMI 3.0 (``--fmi-version 3``), the same order with the FMI 3.0 FMU: ``$PENDULUM_FMU`` when it
+is one, the package's ``fmi3/Pendulum.fmu``, the checkout's ``build/fmi3/Pendulum.fmu``.
+An explicit path or ``$PENDULUM_FMU`` must be this project's Pendulum FMU
+(:func:`pendulum_fmu.fmu.identity.pendulum_problem`).
 """
 
 from __future__ import annotations
@@ -12,8 +16,9 @@ import shutil
 import zipfile
 from pathlib import Path
 
-from pendulum_fmu.fmu.build import DEFAULT_BUILD_DIR, PACKAGED_FMU, REPO_ROOT, build_fmu, fmu_in
+from pendulum_fmu.fmu.build import DEFAULT_BUILD_DIR, PACKAGED_FMU, PACKAGED_FMU3, REPO_ROOT, build_fmu, fmu3_in, fmu_in
 from pendulum_fmu.errors import BuildError, UsageError
+from pendulum_fmu.fmu.identity import fmi_version_of, pendulum_problem
 
 SOURCES: tuple[str, ...] = ("fmu_src", "modelDescription.xml", "CMakeLists.txt", "cmake", "fmi3", "reference")
 """What the FMUs (FMI 2.0 and 3.0) are built from, relative to the repository root."""
@@ -57,7 +62,7 @@ def fmu_problem(path: Path) -> str | None:
     return None
 
 
-def locate_fmu(explicit: Path | None = None, build: bool = True) -> Path:
+def locate_fmu(explicit: Path | None = None, build: bool = True, fmi_version: int | None = None) -> Path:
     """Return the FMU to run.
 
     Parameters
@@ -67,6 +72,8 @@ def locate_fmu(explicit: Path | None = None, build: bool = True) -> Path:
     build : bool
         In a source checkout, (re)build ``build/Pendulum.fmu`` when it is missing or older
         than its sources.
+    fmi_version : {None, 2, 3}
+        The FMI version wanted; None: the explicit or ``$PENDULUM_FMU`` file's, else 2.
 
     Returns
     -------
@@ -76,32 +83,37 @@ def locate_fmu(explicit: Path | None = None, build: bool = True) -> Path:
     Raises
     ------
     UsageError
-        If the given path or ``$PENDULUM_FMU`` does not exist, or no FMU can be found.
+        If the given path or ``$PENDULUM_FMU`` does not exist or is not the Pendulum FMU (or
+        not of the FMI version asked), or no FMU can be found.
     BuildError
         If CMake fails.
     """
     if explicit is not None:
         if not Path(explicit).is_file():
             raise UsageError("--fmu", f"no such file: {str(explicit)!r}")
-        problem = fmu_problem(Path(explicit))
+        problem = fmu_problem(Path(explicit)) or pendulum_problem(Path(explicit))
         if problem is not None:
             raise UsageError("--fmu", problem)
+        _check_version("--fmu", Path(explicit), fmi_version)
         return Path(explicit)
     override = os.environ.get("PENDULUM_FMU")
     if override:
         if not Path(override).is_file():
             raise UsageError("$PENDULUM_FMU", f"no such file: {override!r}: build the FMU "
                              "(cmake -S . -B build && cmake --build build) or unset PENDULUM_FMU")
-        problem = fmu_problem(Path(override))
+        problem = fmu_problem(Path(override)) or pendulum_problem(Path(override))
         if problem is not None:
             raise UsageError("$PENDULUM_FMU", problem)
-        return Path(override)
-    if PACKAGED_FMU.is_file():
-        return PACKAGED_FMU
+        if fmi_version is None or fmi_version_of(Path(override)) == fmi_version:
+            return Path(override)
+    fmi3 = fmi_version == 3
+    packaged = PACKAGED_FMU3 if fmi3 else PACKAGED_FMU
+    if packaged.is_file():
+        return packaged
     if not is_source_checkout():
-        raise UsageError("--fmu", "no Pendulum.fmu installed with the package and no source checkout to "
-                                  "build one from: pass --fmu PATH or set PENDULUM_FMU")
-    fmu = fmu_in(DEFAULT_BUILD_DIR)
+        raise UsageError("--fmu", f"no {'FMI 3.0 ' if fmi3 else ''}Pendulum.fmu installed with the package and no "
+                                  "source checkout to build one from: pass --fmu PATH or set PENDULUM_FMU")
+    fmu = (fmu3_in if fmi3 else fmu_in)(DEFAULT_BUILD_DIR)
     if fmu.is_file() and (not build or fmu.stat().st_mtime >= newest_source_time()):
         return fmu
     if not build:
@@ -111,7 +123,20 @@ def locate_fmu(explicit: Path | None = None, build: bool = True) -> Path:
         raise UsageError("--fmu", f"{fmu} is missing or out of date and cmake is not on PATH to build it: "
                                   "install cmake, pass --fmu PATH or set PENDULUM_FMU")
     try:
-        return build_fmu(DEFAULT_BUILD_DIR)
+        build_fmu(DEFAULT_BUILD_DIR)
     except RuntimeError as error:
         tail = "\n".join(str(error).strip().splitlines()[-15:])
         raise BuildError(f"building {fmu} with CMake failed:\n{tail}") from error
+    if not fmu.is_file():
+        raise BuildError(f"CMake built no {fmu} (the FMI 3.0 FMU needs fmpy's FMI 3.0 headers; see CMake's output)")
+    return fmu
+
+
+def _check_version(argument: str, path: Path, wanted: int | None) -> None:
+    """UsageError when the FMU at ``path`` is not of the FMI version ``wanted`` (None: any)."""
+    if wanted is None:
+        return
+    actual = fmi_version_of(path)
+    if actual != wanted:
+        raise UsageError(argument, f"{str(path)!r} is an FMI {actual}.0 FMU, but --fmi-version {wanted} was given: "
+                                   "drop one of the two")

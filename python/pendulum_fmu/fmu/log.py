@@ -44,6 +44,11 @@ class FmuLog:
         """The logger given to fmpy's ``instantiate_fmu`` (one call per message)."""
         self.entries.append((int(status), _text(category), _text(message)))
 
+    def fmi3_callback(self, instance_environment: Any, status: int, category: bytes, message: bytes) -> None:
+        """The ``fmi3LogMessageCallback`` of one FMI 3.0 instance (FMI 3.0 2.3.1): no routing
+        needed, each instance gets its own."""
+        self.entries.append((int(status), _text(category), _text(message)))
+
     def clear(self) -> None:
         """Forget the messages so far (at the start of a run)."""
         self.entries.clear()

@@ -1,41 +1,52 @@
 """Load the FMU once and run many initial value problems on it.
 
-:class:`FmuRunner` extracts ``Pendulum.fmu`` once, instantiates one Co-Simulation slave
-and (if needed) one Model Exchange model, and resets them between runs: a sweep worker
-pays the unzip and ``dlopen`` once, not once per run.
+:class:`FmuRunner` extracts ``Pendulum.fmu`` (FMI 2.0 or 3.0) once, instantiates one
+Co-Simulation instance and (if needed) one Model Exchange instance, and resets them between
+runs: a sweep worker pays the unzip and ``dlopen`` once, not once per run. An FMU that is
+not this project's Pendulum is refused at once (:mod:`pendulum_fmu.fmu.identity`).
 
-Co-Simulation runs are driven by :class:`~pendulum_fmu.fmu.fast_cs.FastStepper`: the
-FMU's own ``fmi2DoStep`` and one ``fmi2GetReal`` of every recorded output per point, called
-through ctypes prototypes with prebuilt arguments, the values landing straight in the result
-array (the fastest path that stays inside the FMI API). Model Exchange runs go through fmpy's
+Co-Simulation runs are driven by the C loop of :mod:`pendulum_fmu.fmu.driver`: the FMU's own
+DoStep and one GetReal (GetFloat64) of every recorded output per point, called from C, the
+values landing straight in the result array (without that library: the same calls from
+Python, :mod:`pendulum_fmu.fmu.fast_cs`). Model Exchange runs go through fmpy's
 ``simulate_fmu`` with its CVODE solver, on the already instantiated model.
 
-Every message the FMU logs with status fmi2Warning during a run (for example its
-"hard case:" warning) is kept in :attr:`Trajectory.warnings`.
+Every message the FMU logs with status Warning during a run (for example its "hard case:"
+warning) is kept in :attr:`Trajectory.warnings`. Ctrl-C during a Co-Simulation run raises
+:class:`RunInterrupted`, a ``KeyboardInterrupt`` that holds the part of the run finished.
 """
 
 from __future__ import annotations
 
 import math
+import os
 import shutil
 import tempfile
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
 from types import TracebackType
-from typing import Self
+from typing import Any, Literal, Self
 
 import numpy as np
 from fmpy import extract, read_model_description, simulate_fmu
 from fmpy.fmi2 import FMU2Model, FMU2Slave
+from fmpy.fmi3 import FMU3Model, FMU3Slave
 
-from pendulum_fmu.errors import SimulationError
+from pendulum_fmu.errors import BuildError, SimulationError, UsageError
+from pendulum_fmu.fmu import driver
 from pendulum_fmu.fmu.fast_cs import FastStepper
+from pendulum_fmu.fmu.identity import FMI_VERSIONS, description_problem
 from pendulum_fmu.fmu.log import FmuLog, register, shared_callbacks, unique_instance_name, unregister
 from pendulum_fmu.spec import CS_SOLVERS, Method, Pendulum, TimeGrid
 
+Loop = Literal["auto", "c", "python"]
+"""Which Co-Simulation loop a runner uses: the C library when there is one, or either by name."""
+
 RECORDED: tuple[str, ...] = ("theta", "omega", "theta_exact", "omega_exact", "x", "y")
 """Outputs recorded at every output point, besides time."""
+RESULT_DTYPE = np.dtype([("time", np.float64)] + [(name, np.float64) for name in RECORDED])
+"""A run's result: one record per output point, the recorded outputs contiguous after time."""
 
 STATS: tuple[str, ...] = ("stats.steps", "stats.rejected_steps", "stats.rhs_evaluations")
 
@@ -97,13 +108,37 @@ def reference_period(period: float, pendulum: Pendulum) -> float:
     return period if math.isfinite(period) and period > 0 else pendulum.small_angle_period
 
 
+class RunInterrupted(KeyboardInterrupt):
+    """Ctrl-C stopped a run; :attr:`trajectory` holds the output points finished before it.
+
+    Attributes
+    ----------
+    trajectory : Trajectory
+        The run so far: ``result`` has the finished rows only (all of them when the interrupt
+        came during the last stretch).
+    """
+
+    def __init__(self, trajectory: Trajectory) -> None:
+        super().__init__(f"interrupted after {trajectory.result.size} output points")
+        self.trajectory = trajectory
+
+
 class FmuRunner:
     """An extracted, instantiated FMU that runs one problem after another.
 
     Parameters
     ----------
     fmu : Path
-        ``Pendulum.fmu``.
+        ``Pendulum.fmu``, FMI 2.0 or 3.0.
+    loop : {"auto", "c", "python"}
+        The Co-Simulation output loop: the C library ``pendulum_driver`` when it is found
+        (``auto``; ``$PENDULUM_FMU_LOOP=python`` chooses the Python loop, for measurements),
+        or the one named (``c`` raises BuildError without the library).
+
+    Raises
+    ------
+    UsageError
+        If the FMU is not this project's Pendulum (another model, another FMI version).
 
     Notes
     -----
@@ -111,17 +146,34 @@ class FmuRunner:
     :meth:`close`, to free the instances and delete the extracted files.
     """
 
-    def __init__(self, fmu: Path) -> None:
+    def __init__(self, fmu: Path, loop: Loop = "auto") -> None:
         self.fmu = Path(fmu)
         self._tempdir = tempfile.mkdtemp(prefix="pendulum-fmu-")
-        self._unzipdir = extract(str(self.fmu), unzipdir=self._tempdir)
-        self.model_description = read_model_description(self._unzipdir, validate=False)
+        try:
+            self._unzipdir = extract(str(self.fmu), unzipdir=self._tempdir)
+            self.model_description = read_model_description(self._unzipdir, validate=False)
+        except Exception as error:  # noqa: BLE001 (zipfile, lxml and fmpy raise many kinds)
+            shutil.rmtree(self._tempdir, ignore_errors=True)
+            raise UsageError("fmu", f"{str(self.fmu)!r} cannot be read as an FMU: {error}") from None
+        problem = description_problem(self.model_description)
+        if problem is not None:
+            shutil.rmtree(self._tempdir, ignore_errors=True)
+            raise UsageError("fmu", f"{str(self.fmu)!r} is not the Pendulum FMU of pendulum-fmu: {problem}")
+        self.fmi_version: int = FMI_VERSIONS[str(self.model_description.fmiVersion)]
         self.vr: dict[str, int] = {v.name: v.valueReference for v in self.model_description.modelVariables}
-        self._slave: FMU2Slave | None = None
-        self._model: FMU2Model | None = None
+        self._slave: Any = None
+        self._model: Any = None
         self._slave_used = False
         self._model_used = False
+        self._c_loop: driver.CLoop | None = None
         self._log = FmuLog()
+        if loop not in ("auto", "c", "python"):
+            raise ValueError(f"loop must be 'auto', 'c' or 'python', got {loop!r}")
+        if loop == "auto":
+            loop = "python" if os.environ.get("PENDULUM_FMU_LOOP") == "python" or not driver.available() else "c"
+        elif loop == "c" and not driver.available():
+            raise BuildError(f"no pendulum_driver library for this platform: {driver.library_name()} is not installed")
+        self.loop: str = loop
 
     def __enter__(self) -> Self:
         return self
@@ -140,42 +192,66 @@ class FmuRunner:
         shutil.rmtree(self._tempdir, ignore_errors=True)
 
     # -- instances ---------------------------------------------------------------------------
-    def _fresh_slave(self) -> FMU2Slave:
+    def _instance(self, co_simulation: bool) -> Any:
+        """A new instance of the FMU, instantiated with this runner's log as its logger."""
+        md = self.model_description
+        kind = md.coSimulation if co_simulation else md.modelExchange
+        name = unique_instance_name("pendulum_cs" if co_simulation else "pendulum_me")
+        if self.fmi_version == 2:
+            instance = (FMU2Slave if co_simulation else FMU2Model)(
+                guid=md.guid, unzipDirectory=self._unzipdir, modelIdentifier=kind.modelIdentifier, instanceName=name)
+            register(instance.instanceName, self._log)   # before instantiate: it may log already
+            instance.instantiate(callbacks=shared_callbacks())
+            return instance
+        # FMI 3.0: the logger is the instance's own callback (no variadic proxy, no routing);
+        # fmpy keeps it alive on the instance.
+        instance = (FMU3Slave if co_simulation else FMU3Model)(
+            guid=md.instantiationToken, unzipDirectory=self._unzipdir, modelIdentifier=kind.modelIdentifier,
+            instanceName=name)
+        instance.instantiate(logMessage=self._log.fmi3_callback)
+        return instance
+
+    def _fresh_slave(self) -> Any:
         if self._slave is None:
-            md = self.model_description
-            self._slave = FMU2Slave(guid=md.guid, unzipDirectory=self._unzipdir,
-                                    modelIdentifier=md.coSimulation.modelIdentifier,
-                                    instanceName=unique_instance_name("pendulum_cs"))
-            register(self._slave.instanceName, self._log)   # before instantiate: it may log already
-            self._slave.instantiate(callbacks=shared_callbacks())
+            self._slave = self._instance(co_simulation=True)
         elif self._slave_used:
             self._slave.reset()
         self._slave_used = True
         return self._slave
 
-    def _fresh_model(self) -> FMU2Model:
+    def _fresh_model(self) -> Any:
         if self._model is None:
-            md = self.model_description
-            self._model = FMU2Model(guid=md.guid, unzipDirectory=self._unzipdir,
-                                    modelIdentifier=md.modelExchange.modelIdentifier,
-                                    instanceName=unique_instance_name("pendulum_me"))
-            register(self._model.instanceName, self._log)
-            self._model.instantiate(callbacks=shared_callbacks())
+            self._model = self._instance(co_simulation=False)
         elif self._model_used:
             self._model.reset()
         self._model_used = True
         return self._model
 
-    def _initialize(self, instance: FMU2Slave | FMU2Model, pendulum: Pendulum, method: Method) -> float:
-        """setupExperiment, start values, initialization; returns the FMU's ``period``."""
-        instance.setupExperiment(tolerance=method.effective_tolerance, startTime=0.0)
+    def _initialize(self, instance: Any, pendulum: Pendulum, method: Method) -> float:
+        """Experiment, start values, initialization; returns the FMU's ``period``."""
         values = pendulum.start_values()
-        instance.setReal([self.vr[name] for name in values], list(values.values()))
-        if method.interface == "CS":
-            instance.setInteger([self.vr["solver"]], [CS_SOLVERS.index(method.solver) + 1])
-        instance.enterInitializationMode()
+        references = [self.vr[name] for name in values]
+        solver = [CS_SOLVERS.index(method.solver) + 1] if method.interface == "CS" else None
+        if self.fmi_version == 2:
+            instance.setupExperiment(tolerance=method.effective_tolerance, startTime=0.0)
+            instance.setReal(references, list(values.values()))
+            if solver:
+                instance.setInteger([self.vr["solver"]], solver)
+            instance.enterInitializationMode()
+            instance.exitInitializationMode()
+            return float(instance.getReal([self.vr["period"]])[0])
+        instance.setFloat64(references, list(values.values()))
+        if solver:
+            instance.setInt64([self.vr["solver"]], solver)   # an Enumeration is set as Int64 (FMI 3.0 2.2.6.1)
+        instance.enterInitializationMode(tolerance=method.effective_tolerance, startTime=0.0)
         instance.exitInitializationMode()
-        return float(instance.getReal([self.vr["period"]])[0])
+        return float(instance.getFloat64([self.vr["period"]])[0])
+
+    def _integers(self, instance: Any, names: tuple[str, ...]) -> list[int]:
+        """Integer variables by name (Integer in FMI 2.0, Int32 in 3.0)."""
+        references = [self.vr[name] for name in names]
+        values = instance.getInteger(references) if self.fmi_version == 2 else instance.getInt32(references)
+        return [int(value) for value in values]
 
     # -- runs --------------------------------------------------------------------------------
     def period(self, pendulum: Pendulum) -> float:
@@ -209,6 +285,8 @@ class FmuRunner:
         ------
         SimulationError
             If an FMI call fails.
+        RunInterrupted
+            On Ctrl-C during a Co-Simulation run's output loop, with the points finished.
         """
         try:
             if method.interface == "CS":
@@ -224,17 +302,29 @@ class FmuRunner:
         slave = self._fresh_slave()
         self._log.clear()
         period = self._initialize(slave, pendulum, method)
-        times = grid.times(reference_period(period, pendulum))
-        values = FastStepper(slave, [self.vr[name] for name in RECORDED]).run(times, self._log)
-        steps, rejected, rhs = slave.getInteger([self.vr[name] for name in STATS])
+        times = grid.times_array(reference_period(period, pendulum))
+        result = np.empty(len(times), dtype=RESULT_DTYPE)
+        result["time"] = times
+        references = [self.vr[name] for name in RECORDED]
+        try:
+            if self.loop == "c":
+                if self._c_loop is None:
+                    self._c_loop = driver.CLoop(slave, self.fmi_version, references)
+                self._c_loop.run(times, result, RECORDED[0], self._log)
+            elif self.fmi_version == 2:
+                values = FastStepper(slave, references).run(times, self._log)
+                for column, name in enumerate(RECORDED):
+                    result[name] = values[:, column]
+            else:
+                _python_loop_fmi3(slave, references, times, result)
+        except driver.LoopInterrupted as interrupt:
+            wall = time.perf_counter() - start
+            raise RunInterrupted(Trajectory(pendulum, method, grid, period, result[:interrupt.done].copy(), None,
+                                            None, None, wall, self._log.warnings())) from None
+        steps, rejected, rhs = self._integers(slave, STATS)
         slave.terminate()
         wall = time.perf_counter() - start
-        result = np.empty(len(times), dtype=[("time", float)] + [(name, float) for name in RECORDED])
-        result["time"] = times
-        for column, name in enumerate(RECORDED):
-            result[name] = values[:, column]
-        return Trajectory(pendulum, method, grid, period, result, int(steps), int(rejected), int(rhs), wall,
-                          self._log.warnings())
+        return Trajectory(pendulum, method, grid, period, result, steps, rejected, rhs, wall, self._log.warnings())
 
     def _run_me(self, pendulum: Pendulum, method: Method, grid: TimeGrid) -> Trajectory:
         start = time.perf_counter()
@@ -253,7 +343,19 @@ class FmuRunner:
             start_values=pendulum.start_values(), output=list(RECORDED), validate=False,
             record_events=False)
         wall = time.perf_counter() - start
-        result = np.empty(recorded.size, dtype=[("time", float)] + [(name, float) for name in RECORDED])
+        result = np.empty(recorded.size, dtype=RESULT_DTYPE)
         for name in result.dtype.names or ():
             result[name] = recorded[name]
         return Trajectory(pendulum, method, grid, period, result, None, None, None, wall, self._log.warnings())
+
+
+def _python_loop_fmi3(slave: Any, references: list[int], times: np.ndarray, result: np.ndarray) -> None:
+    """The FMI 3.0 output loop through fmpy's wrappers (when there is no C library)."""
+    for k in range(len(times)):
+        if k:
+            _, terminate, early, reached = slave.doStep(float(times[k - 1]), float(times[k] - times[k - 1]))
+            if terminate or early:
+                raise SimulationError(f"fmi3DoStep stopped at t = {reached:.9g} s "
+                                      f"({'asked to terminate' if terminate else 'returned early'})")
+        for name, value in zip(RECORDED, slave.getFloat64(references), strict=True):
+            result[k][name] = value

@@ -65,7 +65,7 @@ def run_sweep(fmu: Path, sweep: SweepGrid, out: Path, table_format: str = "csv",
     Parameters
     ----------
     fmu : Path
-        ``Pendulum.fmu``.
+        ``Pendulum.fmu``, FMI 2.0 or 3.0.
     sweep : SweepGrid
         The grid.
     out : Path
@@ -86,14 +86,24 @@ def run_sweep(fmu: Path, sweep: SweepGrid, out: Path, table_format: str = "csv",
     SweepOutcome
         The rows in grid order and what was done.
 
+    Raises
+    ------
+    UsageError
+        If ``fmu`` is not this project's Pendulum FMU.
+
     Notes
     -----
     The local cluster starts its workers as new processes (multiprocessing's "spawn"), which
     import the calling script again: call this from a script under
     ``if __name__ == "__main__":``.
     """
+    from pendulum_fmu.errors import UsageError
+    from pendulum_fmu.fmu.identity import pendulum_problem
     from pendulum_fmu.sweep.journal import Journal, read_journal
 
+    problem = pendulum_problem(fmu)   # before any worker starts: another model would fail every run
+    if problem is not None:
+        raise UsageError("fmu", problem)
     points = sweep.points()
     journal_path, stamp = out / JOURNAL, out / JOURNAL_FMU
     digest = hashlib.sha256(fmu.read_bytes()).hexdigest()

@@ -30,27 +30,42 @@ def configure(parser: argparse.ArgumentParser) -> None:
                         help="worker counts to time, the first one is the baseline (default: 1 2)")
     parser.add_argument("--repeat", type=integer(1, 100), default=5,
                         help="sweeps timed per worker count; the median counts (default 5)")
+    parser.add_argument("--loop", choices=("c", "python", "both"), default="both",
+                        help="the workers' output loop: c (the package's), python (before it) or both, "
+                             "to compare runs/s per worker (default both)")
     add_fmu_argument(parser)
 
 
 def run(args: argparse.Namespace) -> int:
-    """Run the benchmark and print runs/s per worker count and the speed-ups."""
+    """Run the benchmark and print runs/s per worker count and loop, and the speed-ups."""
     fmu = locate_fmu(args.fmu)
     points = bench_points(args.runs, args.periods)
+    loops = ["c", "python"] if args.loop == "both" else [args.loop]
     print(f"sweep of {len(points)} runs (amplitudes 1-179 deg from rest, {args.periods:g} periods, dopri5 "
           f"at 1e-8), median of {args.repeat}; FMU {fmu}")
-    print(f"{'workers':>7}  {'runs':>6}  {'seconds':>8}  {'runs/s':>8}  {'speed-up':>8}  {'startup (s)':>11}")
+    print(f"{'loop':>6}  {'workers':>7}  {'runs':>6}  {'seconds':>8}  {'runs/s':>8}  {'per worker':>10}  "
+          f"{'speed-up':>8}  {'startup (s)':>11}")
     results = []
-    for workers in args.workers:
-        result = measure(fmu, points, workers, args.repeat)
-        results.append(result)
-        speedup = result.rate / results[0].rate
-        print(f"{workers:>7}  {result.runs:>6}  {statistics.median(result.seconds):>8.3f}  {result.rate:>8.1f}  "
-              f"{speedup:>7.2f}x  {result.startup:>11.2f}", flush=True)
+    for loop in loops:
+        first = None
+        for workers in args.workers:
+            result = measure(fmu, points, workers, args.repeat, loop)
+            results.append(result)
+            first = first or result
+            print(f"{loop:>6}  {workers:>7}  {result.runs:>6}  {statistics.median(result.seconds):>8.3f}  "
+                  f"{result.rate:>8.1f}  {result.rate / workers:>10.1f}  {result.rate / first.rate:>7.2f}x  "
+                  f"{result.startup:>11.2f}", flush=True)
     for result in results:
-        print(f"bench_sweep workers={result.workers} runs={result.runs} rate={result.rate:.2f} "
-              f"seconds={','.join(f'{s:.3f}' for s in result.seconds)}")
-    if len(results) > 1:
-        print(f"speed-up {results[-1].workers} vs {results[0].workers} workers: "
-              f"{results[-1].rate / results[0].rate:.2f}x")
+        print(f"bench_sweep loop={result.loop} workers={result.workers} runs={result.runs} rate={result.rate:.2f} "
+              f"per_worker={result.rate / result.workers:.2f} seconds={','.join(f'{s:.3f}' for s in result.seconds)}")
+    by_key = {(r.loop, r.workers): r for r in results}
+    for workers in args.workers:
+        if ("c", workers) in by_key and ("python", workers) in by_key:
+            print(f"C loop / Python loop, {workers} worker(s): "
+                  f"{by_key['c', workers].rate / by_key['python', workers].rate:.2f}x runs per second per worker")
+    if len(args.workers) > 1:
+        last, first_count = args.workers[-1], args.workers[0]
+        for loop in loops:
+            print(f"speed-up {last} vs {first_count} workers ({loop} loop): "
+                  f"{by_key[loop, last].rate / by_key[loop, first_count].rate:.2f}x")
     return 0
