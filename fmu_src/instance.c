@@ -46,7 +46,7 @@ void instance_release_name(Instance *inst) {
 }
 
 void instance_log(const Instance *inst, Status status, LogCategory category, const char *format, ...) {
-    char message[512];
+    char message[1024];
     va_list args;
     if (!inst->log_enabled[category] || inst->host.log == NULL) {
         return;

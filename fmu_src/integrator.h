@@ -38,8 +38,13 @@ typedef struct {
 typedef struct {
     SolverKind kind;
     double w0sq;                 /* g / L */
-    double rtol, atol;           /* error tolerances of the local error test: the user's tol
-                                    (adaptive methods: at least 1e-14, integrator.c) */
+    double rtol;                 /* relative tolerance of the local error test: the user's tol
+                                    (adaptive methods: scaled near the separatrix and at least
+                                    1e-14, integrator.c) */
+    double atol[2];              /* absolute tolerances of theta and omega: rtol and rtol w0, the
+                                    states in units of 1 rad and of the motion's rate w0 (so the
+                                    step rules see only dimensionless numbers: the same steps
+                                    for every L and g) */
     double t;                    /* time of the internal solution point: t + t_lo, kept as a
                                     compensated sum of the steps (without it, the rounding of
                                     t += h, ulp(t)/2 a step, was a phase error of 2.5e-9 after

@@ -2,6 +2,7 @@
  * shared by the FMI 2.0 and FMI 3.0 layers. */
 #include "model.h"
 
+#include <float.h>
 #include <limits.h>
 #include <math.h>
 #include <string.h>
@@ -85,6 +86,10 @@ const char *model_check_state(const ModelData *data, InterfaceType type) {
     }
     if (data->hard_case_reported != 0 && data->hard_case_reported != 1) {
         return "the hard-case flag is out of range";
+    }
+    if (!(data->certificate_logged == 0.0 || (data->certificate_logged > 1.0 && data->certificate_logged <= DBL_MAX)) ||
+        (data->certificate_logged != 0.0 && (data->mode & (MODE_INSTANTIATED | MODE_INITIALIZATION)) != 0)) {
+        return "the certificate's last logged departure is out of range (0, or above 1 after initialization)";
     }
     if (!(isfinite(data->L) && data->L > 0.0 && isfinite(data->g) && data->g > 0.0)) {
         return "L or g out of range (finite, greater than 0)";

@@ -22,6 +22,7 @@
 #include <math.h>
 
 #include "integrator.h"
+#include "integrator_core.h"
 #include "integrator_methods.h"
 
 /* tol per unit of rate t, scaled for the global error over ten periods */

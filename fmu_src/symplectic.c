@@ -35,6 +35,7 @@
 #include <math.h>
 
 #include "integrator.h"
+#include "integrator_core.h"
 #include "integrator_methods.h"
 
 #define SYMP_STAGES 15

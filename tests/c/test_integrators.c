@@ -139,7 +139,7 @@ static double fixed_step_error(SolverKind kind, double hw0, double periods, int 
     integrator_init(&it, kind, W0SQ, 1e-6, 0.0, theta0, 0.0);
     it.h = h;
     if (kind == SOLVER_DOPRI5 || kind == SOLVER_RKN) {
-        it.rtol = it.atol = 1e200;
+        it.rtol = it.atol[0] = it.atol[1] = 1e200;
         it.hmax = h;
         it.project_energy = project;
     }
