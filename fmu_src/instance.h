@@ -129,17 +129,14 @@ Status instance_do_step(Instance *inst, const char *function, double point, doub
 /* OK certifies |theta - theta_exact| <= CERTIFICATE_FACTOR tol max(1, |theta_exact|) and
  * |omega - omega_exact| <= CERTIFICATE_FACTOR tol max(w0, |omega_exact|). */
 #define CERTIFICATE_FACTOR 100.0
-/* Smallest tol |1 - m| / max(1, m) at which a double-precision solver holds the bound over ten
- * periods (measured: docs/certificate.md, tests/c/test_certificate.c). */
-#define CERTIFICATE_REACH 1e-17
 /* The departure of (theta, omega) at t from the exact solution in units of the bound: the larger
  * of the two ratios (<= 1: certified; +inf where the exact solution does not resolve t, or the
  * state is not finite). Writes the exact state. */
 double certificate_departure(const PendulumExact *exact, double t, double tolerance, double theta, double omega,
                              double *theta_exact, double *omega_exact);
-/* 1 if tol |1 - m| / max(1, m) >= CERTIFICATE_REACH: a solver in double precision can hold the
- * bound for a motion of parameter m (m1 = 1 - m from its cosine form). */
-int certificate_reachable(double tolerance, double m1, double m);
+/* 1 if the solver holds the bound over ten periods for a motion of parameter m (m1 = 1 - m from
+ * its cosine form) at this tolerance: tol |1 - m| / max(1, m) >= integrator_reach(solver). */
+int certificate_reachable(int solver, double tolerance, double m1, double m);
 /* After a DoStep has moved the state to data.time: the certificate (unless certificate_off) and
  * the hard-case check, their messages, and the step's status (OK or WARNING). */
 Status instance_check_step(Instance *inst);

@@ -17,9 +17,13 @@
  * limit. */
 #define INTEG_HMAX_W0 1.0
 
-/* Closeness to the separatrix below which no step rule tightens further (the tolerance is
- * promised down to 1e-6, README): without a floor the steps would vanish on it. */
-#define INTEG_MIN_CLOSENESS 1e-7
+/* Closeness to the separatrix below which no step rule tightens further: tol closeness =
+ * INTEGRATOR_REACH, where the accuracy the bound needs falls below rounding and no
+ * double-precision solver can hold it (integrator.h); without a floor the steps would vanish
+ * on the separatrix. */
+
+/* Closeness below which the fixed-step methods project onto the energy as well. */
+#define INTEG_PROJECT_CLOSENESS 1e-2
 
 /* DOPRI5's local tolerance relative to the user's, scaled by the closeness too. */
 #define INTEG_DOPRI5_TOL_FACTOR 0.1
@@ -55,7 +59,7 @@ int integrator_init(Integrator *it, SolverKind kind, double w0sq, double tol,
         const double q = fabs(omega0) / (2.0 * w0);
         const double m = s * s + q * q, m1 = (c - q) * (c + q);
         it->rate = isfinite(m) ? w0 * fmax(1.0, sqrt(m)) : INFINITY;
-        it->closeness = fmin(1.0, fmax(INTEG_MIN_CLOSENESS, fabs(m1) / fmax(1.0, m)));
+        it->closeness = fmin(1.0, fmax(INTEGRATOR_REACH / tol, fabs(m1) / fmax(1.0, m)));
         if (!(it->rate > 0.0) || !isfinite(it->rate))
             return -1;
     }
@@ -71,7 +75,10 @@ int integrator_init(Integrator *it, SolverKind kind, double w0sq, double tol,
     it->y[1] = omega0;
     it->hmax = INTEG_HMAX_W0 / it->rate;
     it->err_prev = 1e-4;
-    it->project_energy = (kind == SOLVER_DOPRI5 || kind == SOLVER_RKN);
+    /* the fixed-step methods project too near the separatrix: there the energy error of their
+     * steps, not their phase error, is what the period amplifies (rk4 and symplectic were 1e3
+     * to 1e4 times their bound at 1 - m = 2e-12 without; docs/certificate.md) */
+    it->project_energy = (kind == SOLVER_DOPRI5 || kind == SOLVER_RKN || it->closeness < INTEG_PROJECT_CLOSENESS);
     it->t_prev = t0;
     it->y_prev[0] = theta0;
     it->y_prev[1] = omega0;
@@ -81,7 +88,7 @@ int integrator_init(Integrator *it, SolverKind kind, double w0sq, double tol,
          * top both of its terms are small, so it keeps its relative accuracy where
          * H = omega^2/2 + 2 w0sq sin^2(theta/2) would lose it to cancellation */
         double c = cos(0.5 * theta0);
-        it->energy0 = 0.5 * omega0 * omega0 - 2.0 * w0sq * c * c;
+        it->energy0 = integ_energy_dd(w0sq, omega0, c, &it->energy0_lo);
         it->stats.rhs_evals++;
     }
     integ_rhs(it, it->y, it->f);
@@ -95,6 +102,11 @@ int integrator_init(Integrator *it, SolverKind kind, double w0sq, double tol,
     case SOLVER_SYMPLECTIC: integ_symplectic_start(it); break;
     }
     return (isfinite(it->h) && it->h > 0.0) ? 0 : -1;
+}
+
+double integrator_reach(SolverKind kind)
+{
+    return kind == SOLVER_RK4 ? INTEGRATOR_REACH_RK4 : INTEGRATOR_REACH;
 }
 
 static int method_step(Integrator *it)
@@ -194,7 +206,7 @@ const char *integrator_check(const Integrator *it, const Integrator *fresh)
     if (it->kind != fresh->kind || !(it->w0sq == fresh->w0sq) || !(it->rtol == fresh->rtol) ||
         !(it->rate == fresh->rate) || !(it->closeness == fresh->closeness) ||
         !(it->atol[0] == fresh->atol[0]) || !(it->atol[1] == fresh->atol[1]) || !(it->hmax == fresh->hmax) ||
-        !(it->energy0 == fresh->energy0) || it->project_energy != fresh->project_energy)
+        !(it->energy0 == fresh->energy0) || !(it->energy0_lo == fresh->energy0_lo) || it->project_energy != fresh->project_energy)
         return "solver settings differ from those of the state's own start values";
     if (is_fixed_step(it->kind) ? !(it->h == fresh->h) : !(it->h > 0.0 && it->h <= it->hmax))
         return "solver step size out of range";

@@ -58,7 +58,7 @@ typedef struct {
                                     (half the largest speed) in rotation; sets the time scale
                                     of the fixed steps */
     double closeness;            /* distance from the separatrix, |m1| / max(1, m) (at least
-                                    INTEG_MIN_CLOSENESS): the period's sensitivity to energy
+                                    INTEGRATOR_REACH / tol): the period's sensitivity to energy
                                     errors grows like 1/closeness there */
     double h;                    /* next step size to try (fixed-step methods: the step) */
     double hmax;                 /* largest step the adaptive methods may take */
@@ -72,6 +72,10 @@ typedef struct {
                                     the energy H = omega^2/2 + 2 w0sq sin^2(theta/2) measured
                                     from the separatrix, G = H - 2 w0sq, which keeps its
                                     relative accuracy near the top, where H loses it */
+    double energy0_lo;           /* low part of energy0 (double-double): rounded to a double, G
+                                    near the separatrix was off by ~1e-16 of 2 w0sq, a bias of
+                                    1 - m that the period turns into a phase error growing like
+                                    1 / (1 - m) (docs/certificate.md) */
     int project_energy;          /* 1: the adaptive methods project every accepted point back
                                     onto G = energy0 (set by integrator_init for DOPRI5 and
                                     RKN; 0 runs the plain Runge-Kutta methods) */
@@ -79,6 +83,17 @@ typedef struct {
     double dense[INTEGRATOR_MAX_STAGES][2]; /* method-specific dense-output data */
     SolverStats stats;
 } Integrator;
+
+/* Smallest tol |1 - m| / max(1, m) (1 - m: the distance from the separatrix) at which a method
+ * holds 100 tol over ten periods (measured, docs/certificate.md, tests/c/test_certificate.c):
+ * DOPRI5, RKN and the symplectic method (projecting onto the energy near the separatrix) down to
+ * 1e-21, where the rounding of the state itself moves the period by more; RK4 down to 1e-19.
+ * The FMU's certificate names the line in its warning. */
+#define INTEGRATOR_REACH 1e-21
+#define INTEGRATOR_REACH_RK4 1e-19
+
+/* That line for a method (INTEGRATOR_REACH for an unknown one). */
+double integrator_reach(SolverKind kind);
 
 /* Prepares integration from (theta0, omega0) at t0. tol is the relative tolerance
  * (fmi2SetupExperiment's); w0sq = g / L > 0. Returns 0, or -1 for invalid input.

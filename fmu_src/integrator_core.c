@@ -13,6 +13,19 @@ double integ_hmin(double t)
     return fmax(16.0 * DBL_EPSILON * fabs(t), 1e-300);
 }
 
+double integ_energy_dd(double w0sq, double omega, double c, double *lo)
+{
+    /* products split exactly with fma (Dekker's TwoProduct), the difference with Knuth's
+     * TwoSum; the low parts added in double */
+    const double k = 0.5 * omega * omega, k_lo = 0.5 * fma(omega, omega, -(omega * omega));
+    const double cc = c * c, cc_lo = fma(c, c, -cc);
+    const double p = 2.0 * (w0sq * cc), p_lo = 2.0 * (fma(w0sq, cc, -(w0sq * cc)) + w0sq * cc_lo);
+    const double g = k - p, gb = g - k;
+    const double g_err = (k - (g - gb)) + (-p - gb);
+    *lo = g_err + (k_lo - p_lo);
+    return g;
+}
+
 double integ_initial_step(Integrator *it, int order)
 {
     /* HNW I, II.4: d0 = ||y0||, d1 = ||f0||, h0 = 0.01 d0/d1; one explicit Euler step
@@ -169,7 +182,7 @@ int integ_project(Integrator *it, const double y0[2], double ynew[2], double fne
         const double sc_om = it->atol[1] + it->rtol * fmax(fabs(y0[1]), fabs(om_in));
         for (int iter = 0; iter < 4; iter++) {
             const double kin = 0.5 * om * om, pot = 2.0 * w0sq * c * c;
-            const double r = it->energy0 - (kin - pot);
+            const double r = (it->energy0 - (kin - pot)) + it->energy0_lo;
             if (fabs(r) <= 4.0 * DBL_EPSILON * (kin + pot))
                 break;   /* at the rounding level of G itself */
             const double g0 = 2.0 * w0sq * s * c, g1 = om;

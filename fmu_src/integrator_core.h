@@ -52,7 +52,20 @@ static inline double integ_err_norm(const Integrator *it, const double e[2],
     return sqrt(0.5 * s);
 }
 
+/* The closeness the fixed-step rules use: below INTEG_FIXED_MIN_CLOSENESS they tighten no
+ * further, since there they project onto the energy (integrator.c), and the projection, not the
+ * step, holds the energy that the period amplifies. */
+#define INTEG_FIXED_MIN_CLOSENESS 1e-7
+static inline double integ_step_closeness(const Integrator *it)
+{
+    return it->project_energy ? fmax(it->closeness, INTEG_FIXED_MIN_CLOSENESS) : it->closeness;
+}
+
 /* integrator_core.c: shared helpers. */
+
+/* G = omega^2/2 - 2 w0sq c^2 (c = cos(theta/2)) in double-double: the high part returned, the
+ * low part in *lo (exact products by fma; the result to ~1e-32 of the terms). */
+double integ_energy_dd(double w0sq, double omega, double c, double *lo);
 
 /* Initial step for an adaptive method of order `order` (HNW I, II.4, algorithm after
  * (4.14)); uses it->f at (t, y) and costs one right-hand side. */

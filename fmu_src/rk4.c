@@ -31,7 +31,7 @@
 void integ_rk4_start(Integrator *it)
 {
     /* rate and closeness: integrator.c (the motion's time scale, the separatrix's sensitivity) */
-    it->h = fmin(pow(120.0 * it->rtol * it->closeness * RK4_TOL_FACTOR, 0.25), 0.5) / it->rate;
+    it->h = fmin(pow(120.0 * it->rtol * integ_step_closeness(it) * RK4_TOL_FACTOR, 0.25), 0.5) / it->rate;
 }
 
 int integ_rk4_step(Integrator *it)
@@ -58,7 +58,16 @@ int integ_rk4_step(Integrator *it)
                                         &it->dense[0][i]);
     if (!isfinite(ynew[0]) || !isfinite(ynew[1]))
         return -1;
-    integ_rhs(it, ynew, fnew);   /* next step's k1 and the interpolation's end slope */
+    if (it->project_energy) {
+        /* near the separatrix: back onto the initial energy (integrator.c); f comes with it,
+         * and the rounding carried so far belongs to the point before the move */
+        double trig[2];
+        if (integ_project(it, y, ynew, fnew, trig) == 1) {
+            it->dense[0][0] = it->dense[0][1] = 0.0;
+        }
+    } else {
+        integ_rhs(it, ynew, fnew);   /* next step's k1 and the interpolation's end slope */
+    }
     integ_accept(it, h, ynew, fnew);
     return 0;
 }

@@ -65,7 +65,7 @@ static double jerk(Integrator *it, double theta, double omega)
 void integ_symplectic_start(Integrator *it)
 {
     /* rate and closeness: integrator.c (the motion's time scale, the separatrix's sensitivity) */
-    it->h = fmin(SYMP_SAFETY * pow(it->rtol * it->closeness * SYMP_TOL_FACTOR / SYMP_PHASE_C, 0.125),
+    it->h = fmin(SYMP_SAFETY * pow(it->rtol * integ_step_closeness(it) * SYMP_TOL_FACTOR / SYMP_PHASE_C, 0.125),
                  SYMP_HMAX_W0) / it->rate;
     it->dense[0][1] = jerk(it, it->y[0], it->y[1]);
 }
@@ -90,6 +90,14 @@ int integ_symplectic_step(Integrator *it)
     if (!isfinite(x) || !isfinite(v))
         return -1;
     double y1[2] = {x, v}, f1[2] = {v, a};
+    if (it->project_energy) {
+        /* near the separatrix: back onto the initial energy (integrator.c), f with it; the
+         * rounding carried so far belongs to the point before the move */
+        double trig[2];
+        if (integ_project(it, it->y, y1, f1, trig) == 1) {
+            carry[0] = carry[1] = 0.0;
+        }
+    }
     it->dense[0][0] = it->dense[0][1];   /* third derivative at the start / end of the step */
     it->dense[0][1] = jerk(it, x, v);
     integ_accept(it, h, y1, f1);
