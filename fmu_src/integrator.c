@@ -6,6 +6,9 @@
 
 #include "integrator.h"
 #include "integrator_core.h"
+
+/* Below this, g - w0sq L may be subnormal and inexact: no low part then. */
+#define DBL_MIN_NORMAL_GUARD 0x1p-900
 #include "integrator_methods.h"
 
 /* The adaptive methods never go below this tolerance (about 45 ulp of 1): tighter
@@ -28,8 +31,8 @@
 /* DOPRI5's local tolerance relative to the user's, scaled by the closeness too. */
 #define INTEG_DOPRI5_TOL_FACTOR 0.1
 
-int integrator_init(Integrator *it, SolverKind kind, double w0sq, double tol,
-                    double t0, double theta0, double omega0)
+static int init_common(Integrator *it, SolverKind kind, double w0sq, double w0sq_lo, double tol,
+                       double t0, double theta0, double omega0)
 {
     if (it == NULL || !isfinite(w0sq) || !(w0sq > 0.0) || !isfinite(tol) || !(tol > 0.0) ||
         !isfinite(t0) || !isfinite(theta0) || !isfinite(omega0))
@@ -41,6 +44,7 @@ int integrator_init(Integrator *it, SolverKind kind, double w0sq, double tol,
     memset(it, 0, sizeof *it);
     it->kind = kind;
     it->w0sq = w0sq;
+    it->w0sq_lo = w0sq_lo;
     /* Local error test rtol = atol = tol (states have nominal value 1). The fixed-step
      * methods turn tol into their step (rk4.c, symplectic.c). The adaptive methods also
      * project onto the initial energy: without it, the energy error of the local steps
@@ -87,8 +91,7 @@ int integrator_init(Integrator *it, SolverKind kind, double w0sq, double tol,
         /* the energy measured from the separatrix, G = H - 2 w0sq (integrator.h): near the
          * top both of its terms are small, so it keeps its relative accuracy where
          * H = omega^2/2 + 2 w0sq sin^2(theta/2) would lose it to cancellation */
-        double c = cos(0.5 * theta0);
-        it->energy0 = integ_energy_dd(w0sq, omega0, c, &it->energy0_lo);
+        it->energy0 = integ_energy0(w0sq, w0sq_lo, theta0, omega0, &it->energy0_lo);
         it->stats.rhs_evals++;
     }
     integ_rhs(it, it->y, it->f);
@@ -102,6 +105,23 @@ int integrator_init(Integrator *it, SolverKind kind, double w0sq, double tol,
     case SOLVER_SYMPLECTIC: integ_symplectic_start(it); break;
     }
     return (isfinite(it->h) && it->h > 0.0) ? 0 : -1;
+}
+
+int integrator_init(Integrator *it, SolverKind kind, double w0sq, double tol,
+                    double t0, double theta0, double omega0)
+{
+    return init_common(it, kind, w0sq, 0.0, tol, t0, theta0, omega0);
+}
+
+int integrator_init_gl(Integrator *it, SolverKind kind, double g, double L, double tol,
+                       double t0, double theta0, double omega0)
+{
+    const double w0sq = g / L;
+    if (!(g > 0.0) || !(L > 0.0) || !isfinite(w0sq) || !(w0sq > DBL_MIN_NORMAL_GUARD))
+        return init_common(it, kind, w0sq, 0.0, tol, t0, theta0, omega0);
+    /* g / L = w0sq + lo: the residual g - w0sq L is exact (fma), lo = residual / L */
+    const double lo = fma(-w0sq, L, g) / L;
+    return init_common(it, kind, w0sq, isfinite(lo) ? lo : 0.0, tol, t0, theta0, omega0);
 }
 
 double integrator_reach(SolverKind kind)
@@ -203,7 +223,7 @@ static int all_finite(const double *values, int n)
 
 const char *integrator_check(const Integrator *it, const Integrator *fresh)
 {
-    if (it->kind != fresh->kind || !(it->w0sq == fresh->w0sq) || !(it->rtol == fresh->rtol) ||
+    if (it->kind != fresh->kind || !(it->w0sq == fresh->w0sq) || !(it->w0sq_lo == fresh->w0sq_lo) || !(it->rtol == fresh->rtol) ||
         !(it->rate == fresh->rate) || !(it->closeness == fresh->closeness) ||
         !(it->atol[0] == fresh->atol[0]) || !(it->atol[1] == fresh->atol[1]) || !(it->hmax == fresh->hmax) ||
         !(it->energy0 == fresh->energy0) || !(it->energy0_lo == fresh->energy0_lo) || it->project_energy != fresh->project_energy)

@@ -38,6 +38,11 @@ typedef struct {
 typedef struct {
     SolverKind kind;
     double w0sq;                 /* g / L */
+    double w0sq_lo;              /* its low part, g / L - w0sq (integrator_init_gl; 0 from
+                                    integrator_init): the right-hand side uses both, so that the
+                                    ODE is the one of the doubles g and L (rounded, g/L moved
+                                    1 - m by 1e-16, which the period amplifies near the
+                                    separatrix) */
     double rtol;                 /* relative tolerance of the local error test: the user's tol
                                     (adaptive methods: scaled near the separatrix and at least
                                     1e-14, integrator.c) */
@@ -100,6 +105,10 @@ double integrator_reach(SolverKind kind);
  * Resets the statistics. */
 int integrator_init(Integrator *it, SolverKind kind, double w0sq, double tol,
                     double t0, double theta0, double omega0);
+
+/* The same for the parameters g > 0 and L > 0: w0sq = g / L in double-double. */
+int integrator_init_gl(Integrator *it, SolverKind kind, double g, double L, double tol,
+                       double t0, double theta0, double omega0);
 
 /* Most internal steps (accepted or rejected) one integrator_advance may take (a fuzzing
  * build may set a smaller one on the command line, so that each of its runs stays short). */

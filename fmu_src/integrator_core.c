@@ -6,6 +6,7 @@
 #include <float.h>
 #include <math.h>
 
+#include "elliptic.h"
 #include "integrator_core.h"
 
 double integ_hmin(double t)
@@ -13,17 +14,26 @@ double integ_hmin(double t)
     return fmax(16.0 * DBL_EPSILON * fabs(t), 1e-300);
 }
 
-double integ_energy_dd(double w0sq, double omega, double c, double *lo)
+double integ_energy0(double w0sq, double w0sq_lo, double theta0, double omega0, double *lo)
 {
-    /* products split exactly with fma (Dekker's TwoProduct), the difference with Knuth's
-     * TwoSum; the low parts added in double */
-    const double k = 0.5 * omega * omega, k_lo = 0.5 * fma(omega, omega, -(omega * omega));
-    const double cc = c * c, cc_lo = fma(c, c, -cc);
-    const double p = 2.0 * (w0sq * cc), p_lo = 2.0 * (fma(w0sq, cc, -(w0sq * cc)) + w0sq * cc_lo);
-    const double g = k - p, gb = g - k;
-    const double g_err = (k - (g - gb)) + (-p - gb);
-    *lo = g_err + (k_lo - p_lo);
-    return g;
+    /* G = omega0^2/2 - 2 w0sq cos^2(theta0/2): the cosine in double-double (elliptic.c; a
+     * correctly rounded cos alone is 1e-16 off, a bias of 1 - m that near the separatrix became
+     * the error), the products split exactly (two-product), the sum in double-double. Beyond
+     * |theta0| <= 4 pi (where elliptic_dd_sincos applies), the double cosine. */
+    EllipticDD c;
+    if (fabs(theta0) <= 4.0 * 3.141592653589793) {
+        EllipticDD s;
+        elliptic_dd_sincos(elliptic_dd(0.5 * theta0), &s, &c);
+    } else {
+        c = elliptic_dd(cos(0.5 * theta0));
+    }
+    const EllipticDD kin = elliptic_two_prod(0.5 * omega0, omega0);   /* 0.5 omega0 exact scaling */
+    const EllipticDD cc = elliptic_dd_mul(c, c);
+    const EllipticDD w2 = {2.0 * w0sq, 2.0 * w0sq_lo};
+    const EllipticDD pot = elliptic_dd_mul(w2, cc);
+    const EllipticDD g = elliptic_dd_add(kin, elliptic_dd_neg(pot));
+    *lo = g.lo;
+    return g.hi;
 }
 
 double integ_initial_step(Integrator *it, int order)
@@ -181,7 +191,7 @@ int integ_project(Integrator *it, const double y0[2], double ynew[2], double fne
         const double sc_th = it->atol[0] + it->rtol * fmax(fabs(y0[0]), fabs(th_in));
         const double sc_om = it->atol[1] + it->rtol * fmax(fabs(y0[1]), fabs(om_in));
         for (int iter = 0; iter < 4; iter++) {
-            const double kin = 0.5 * om * om, pot = 2.0 * w0sq * c * c;
+            const double kin = 0.5 * om * om, pot = 2.0 * w0sq * c * c + 2.0 * it->w0sq_lo * c * c;
             const double r = (it->energy0 - (kin - pot)) + it->energy0_lo;
             if (fabs(r) <= 4.0 * DBL_EPSILON * (kin + pot))
                 break;   /* at the rounding level of G itself */
@@ -214,7 +224,7 @@ int integ_project(Integrator *it, const double y0[2], double ynew[2], double fne
     trig[0] = 2.0 * s * c;          /* sin theta */
     trig[1] = (c - s) * (c + s);    /* cos theta */
     fnew[0] = ynew[1];
-    fnew[1] = -w0sq * trig[0];
+    fnew[1] = -(w0sq * trig[0] + it->w0sq_lo * trig[0]);
     return moved;
 }
 

@@ -14,7 +14,8 @@
 static inline void integ_rhs(Integrator *it, const double y[2], double f[2])
 {
     f[0] = y[1];
-    f[1] = -it->w0sq * sin(y[0]);
+    const double s = sin(y[0]);
+    f[1] = -(it->w0sq * s + it->w0sq_lo * s);
     it->stats.rhs_evals++;
 }
 
@@ -22,7 +23,8 @@ static inline void integ_rhs(Integrator *it, const double y[2], double f[2])
 static inline double integ_accel(Integrator *it, double theta)
 {
     it->stats.rhs_evals++;
-    return -it->w0sq * sin(theta);
+    const double s = sin(theta);
+    return -(it->w0sq * s + it->w0sq_lo * s);
 }
 
 /* x + d with the rounding error carried in *carry (compensated summation, Kahan 1965, with
@@ -63,9 +65,9 @@ static inline double integ_step_closeness(const Integrator *it)
 
 /* integrator_core.c: shared helpers. */
 
-/* G = omega^2/2 - 2 w0sq c^2 (c = cos(theta/2)) in double-double: the high part returned, the
- * low part in *lo (exact products by fma; the result to ~1e-32 of the terms). */
-double integ_energy_dd(double w0sq, double omega, double c, double *lo);
+/* G = omega0^2/2 - 2 w0sq cos^2(theta0/2) in double-double: the high part returned, the low
+ * part in *lo (to ~1e-31 of the terms). */
+double integ_energy0(double w0sq, double w0sq_lo, double theta0, double omega0, double *lo);
 
 /* Initial step for an adaptive method of order `order` (HNW I, II.4, algorithm after
  * (4.14)); uses it->f at (t, y) and costs one right-hand side. */

@@ -56,7 +56,6 @@ static const char *check_parameters(const ModelData *data) {
 
 const char *model_initialize(ModelData *data, InterfaceType type) {
     const char *problem = check_parameters(data);
-    double w0sq = data->g / data->L;
     if (problem != NULL) {
         return problem;
     }
@@ -65,7 +64,7 @@ const char *model_initialize(ModelData *data, InterfaceType type) {
         return "the exact solution cannot be set up for these start values";
     }
     if (type == INTERFACE_CO_SIMULATION &&
-        integrator_init(&data->integrator, (SolverKind)data->solver, w0sq, data->tolerance,
+        integrator_init_gl(&data->integrator, (SolverKind)data->solver, data->g, data->L, data->tolerance,
                         data->time, data->theta, data->omega) != 0) {
         return "the solver cannot be set up for these start values";
     }
@@ -137,7 +136,7 @@ const char *model_check_state(const ModelData *data, InterfaceType type) {
     {
         Integrator fresh;
         const char *problem;
-        if (integrator_init(&fresh, (SolverKind)data->solver, data->g / data->L, data->tolerance, data->start_time,
+        if (integrator_init_gl(&fresh, (SolverKind)data->solver, data->g, data->L, data->tolerance, data->start_time,
                             data->exact.theta0, data->exact.omega0) != 0) {
             return "the solver cannot be set up for the state's start values";
         }

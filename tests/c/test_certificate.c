@@ -18,6 +18,7 @@
  *
  * Arguments: `table` prints the grid's table (docs/certificate.md), `cost` times a step with
  * the certificate on and off. */
+#define _POSIX_C_SOURCE 199309L
 #include <float.h>
 #include <math.h>
 #include <stdio.h>
@@ -212,9 +213,262 @@ static void test_separatrix_grid(int print)
            "pairs out of double precision's reach\n", runs, beyond_runs, unreachable);
 }
 
+/* ---- the certificate changes no number ------------------------------------------------- */
+static void test_bit_identical_on_off(void)
+{
+    const double w0 = sqrt(9.81);
+    const Start starts[] = {{0.0, 2.0 * w0 * (1.0 - 1e-12), 1.0, 9.81},   /* warns (rk4, symplectic) */
+                            {1.3089969389957472, 0.0, 1.0, 9.81},          /* 75 deg */
+                            {3.0849789226170623, 0.034294831419746555, 374.6912982074549, 137.53188593324322},
+                            {0.3, 40.0, 1e-3, 1e3}};
+    static double on[2 * 120], off[2 * 120];
+    int compared = 0, with_warnings = 0;
+    for (size_t i = 0; i < sizeof starts / sizeof starts[0]; i++) {
+        for (int solver = 1; solver <= 4; solver++) {
+            const double tol = solver == 2 ? 1e-10 : 1e-12;
+            const double dt = 0.37 / sqrt(starts[i].g / starts[i].L);
+            const Run a = run(&starts[i], solver, tol, dt, 120, 0, on);
+            const Run b = run(&starts[i], solver, tol, dt, 120, 1, off);
+            check(!a.failed && !b.failed, "on/off: a run failed");
+            check(memcmp(on, off, sizeof on) == 0 && a.steps == b.steps && a.rhs == b.rhs,
+                  "start %zu %s: the numbers differ with the certificate off", i, NAMES[solver]);
+            check(b.log.warnings <= 1 && b.warned <= 1, "start %zu %s: the certificate warned while off", i,
+                  NAMES[solver]);
+            compared++;
+            with_warnings += a.warned > 0;
+        }
+    }
+    check(with_warnings >= 2, "on/off: only %d of the compared runs warned", with_warnings);
+    printf("certificate on/off: %d runs bit-identical (%d of them with warnings)\n", compared, with_warnings);
+}
+
+/* ---- the messages: first crossing, then each tenfold growth --------------------------- */
+static void test_messages(void)
+{
+    /* the case: 1 - m = 1.1e-19, rkn at tol 1e-12, five steps of 16.505 s */
+    const Start s = {3.0849789226170623, 0.034294831419746555, 374.6912982074549, 137.53188593324322};
+    Instance inst;
+    Log log;
+    memset(&log, 0, sizeof log);
+    current_log = &log;
+    check(setup(&inst, &s, SOLVER_RKN, 1e-12, 0) == 0, "1.1e-19 case: set-up");
+    int ok_beyond = 0, warned = 0, messages_expected = 0;
+    double logged = 0.0;
+    for (int i = 0; i < 5; i++) {
+        const Status st = instance_do_step(&inst, "DoStep", inst.data.time, 16.505);
+        const double dep = departure(&inst);
+        ok_beyond += st == STATUS_OK && !(dep <= 1.0);
+        warned += st == STATUS_WARNING;
+        if (dep > 1.0 && (logged == 0.0 || dep >= 10.0 * logged)) {
+            messages_expected++;
+            logged = dep;
+        }
+    }
+    double th_e, om_e;
+    pendulum_exact_eval(&inst.data.exact, inst.data.time, &th_e, &om_e);
+    printf("1 - m = %.2g, rkn at 1e-12, t = %g: theta %.9g, theta_exact %.9g; %d of 5 steps warned, %d messages\n",
+           inst.data.exact.m1, inst.data.time, inst.data.theta, th_e, warned, log.warnings);
+    check(ok_beyond == 0, "1.1e-19 case: %d steps OK beyond the bound", ok_beyond);
+    check(warned >= 1, "1.1e-19 case: theta %g against %g, no warning", inst.data.theta, th_e);
+    check(log.warnings == messages_expected + (inst.data.hard_case_reported && messages_expected == 0),
+          "1.1e-19 case: %d messages, want %d", log.warnings, messages_expected);
+    printf("first message: %s\n", log.first);
+    check(strstr(log.first, "times beyond its bound") != NULL && strstr(log.first, "solver rkn") != NULL &&
+              strstr(log.first, "tolerance 1e-12") != NULL && strstr(log.first, "1 - m = ") != NULL &&
+              strstr(log.first, "No double-precision solver can hold it") != NULL,
+          "1.1e-19 case: message \"%s\"", log.first);
+    instance_release_name(&inst);
+
+    /* rk4 beyond its own line: the message names the solvers that can */
+    const double w0 = sqrt(9.81);
+    const Start near = {0.0, 2.0 * w0 * (1.0 + 1e-11), 1.0, 9.81};
+    const Run r = run(&near, SOLVER_RK4, 1e-10, exact_period(&near) / 20.0, 200, 0, NULL);
+    check(r.warned > 0 && r.log.warnings >= 1 && r.log.warnings <= 1 + (int)ceil(log10(fmax(r.worst, 10.0))),
+          "rk4 near the separatrix: %d warned steps, %d messages, worst %g", r.warned, r.log.warnings, r.worst);
+    check(strstr(r.log.first, "rk4 cannot hold it") != NULL && strstr(r.log.first, "rkn, dopri5 or symplectic") != NULL,
+          "rk4 message \"%s\"", r.log.first);
+    printf("rk4 message: %s\n", r.log.first);
+}
+
+/* ---- an FMU state carries the certificate's field -------------------------------------- */
+static void test_state_carries_the_certificate(void)
+{
+    const double w0 = sqrt(9.81);
+    const Start s = {0.0, 2.0 * w0 * (1.0 + 1e-12), 1.0, 9.81};
+    Instance inst;
+    Log log;
+    void *state = NULL, *back = NULL;
+    memset(&log, 0, sizeof log);
+    current_log = &log;
+    check(setup(&inst, &s, SOLVER_RK4, 1e-10, 0) == 0, "state: set-up");
+    Status st = STATUS_OK;
+    for (int i = 0; i < 40 && st == STATUS_OK; i++) {
+        st = instance_do_step(&inst, "DoStep", inst.data.time, 0.5);
+    }
+    check(st == STATUS_WARNING && inst.data.certificate_logged > 1.0, "state: no warning to carry (%g)",
+          inst.data.certificate_logged);
+    const double logged = inst.data.certificate_logged;
+    size_t size = 0;
+    check(instance_get_state(&inst, "get", &state) == STATUS_OK, "state: get");
+    check(instance_serialized_state_size(&inst, "size", state, &size) == STATUS_OK, "state: size");
+    char *bytes = calloc(1, size);
+    check(bytes != NULL && instance_serialize_state(&inst, "ser", state, bytes, size) == STATUS_OK, "state: serialize");
+    inst.data.certificate_logged = 0.0;
+    check(instance_deserialize_state(&inst, "de", bytes, size, &back) == STATUS_OK &&
+              instance_set_state(&inst, "set", back) == STATUS_OK && inst.data.certificate_logged == logged,
+          "state: the certificate's field did not come back (%g, want %g)", inst.data.certificate_logged, logged);
+    /* forged: a value the certificate can never have written */
+    const double forged[] = {0.5, -1.0, NAN, INFINITY};
+    for (size_t i = 0; i < sizeof forged / sizeof forged[0]; i++) {
+        ((ModelData *)state)->certificate_logged = forged[i];
+        check(model_check_state((ModelData *)state, INTERFACE_CO_SIMULATION) != NULL,
+              "state: a certificate field of %g was accepted", forged[i]);
+    }
+    ((ModelData *)state)->certificate_logged = logged;
+    check(model_check_state((ModelData *)state, INTERFACE_CO_SIMULATION) == NULL, "state: the real one refused");
+    instance_free_state(&inst, "free", &state);
+    instance_free_state(&inst, "free", &back);
+    free(bytes);
+    instance_release_name(&inst);
+    current_log = NULL;
+}
+
+/* ---- the scale ladder: the same dimensionless problem, the same steps and error --------- */
+/* One DoStep over w0 t = 63 from theta0 = 0, omega0 = 2 w0 (1 + 1e-15), rkn at 1e-10. */
+static Run ladder_run(double L, double g)
+{
+    const double w0 = sqrt(g / L);
+    const Start s = {0.0, 2.0 * w0 * (1.0 + 1e-15), L, g};
+    return run(&s, SOLVER_RKN, 1e-10, 63.0 / w0, 1, 0, NULL);
+}
+
+static void test_scale_ladder(void)
+{
+    /* the issue's ladder: (L, g) with g / L from 1e-12 to 1e12; rounding makes 1 - m differ
+     * between them (it is ~1e-15 here), so the steps must agree and no step be OK beyond
+     * its bound */
+    const double Ls[] = {1.0 / 9.81, 1.0, 1e-3, 1e-6, 1e6, 1e3};
+    const double gs[] = {1.0, 9.81, 1e3, 1e6, 1e-6, 1e-3};
+    const Run base = ladder_run(Ls[0], gs[0]);
+    for (int i = 0; i < 6; i++) {
+        const Run r = ladder_run(Ls[i], gs[i]);
+        const double ratio = (double)r.steps / (double)base.steps;
+        printf("scale ladder L = %-8g g = %-8g: %ld steps, departure %.3g of the bound, %s\n", Ls[i], gs[i], r.steps,
+               r.worst, r.warned ? "Warning" : "OK");
+        check(!r.failed && r.ok_beyond == 0, "scale L %g g %g: failed or OK beyond the bound", Ls[i], gs[i]);
+        check(ratio <= 1.5 && ratio >= 1.0 / 1.5, "scale L %g g %g: %ld steps against %ld", Ls[i], gs[i], r.steps,
+              base.steps);
+    }
+    /* the same dimensionless problem exactly (g / L and w0 powers of two, 2^-20 .. 2^20):
+     * the same steps, and errors far within the bound */
+    const Run unit = ladder_run(1.0, 1.0);
+    for (int e = -20; e <= 20; e += 10) {
+        const Run a = ladder_run(ldexp(1.0, -e), ldexp(1.0, e)), b = ladder_run(ldexp(1.0, e), ldexp(1.0, -e));
+        check(a.steps == unit.steps && b.steps == unit.steps, "scale 2^%d: %ld and %ld steps against %ld", e, a.steps,
+              b.steps, unit.steps);
+        /* the error: far within the bound at every scale (the exact port's own rounding at
+         * 1 - m ~ 1e-15 differs between the scales by up to ~3e-3 of the bound) */
+        check(a.worst <= 0.01 && b.worst <= 0.01 && a.ok_beyond == 0 && b.ok_beyond == 0 && !a.warned && !b.warned,
+              "scale 2^%d: departure %g and %g against %g", e, a.worst, b.worst, unit.worst);
+    }
+    printf("scale ladder, w0 = 2^-20 .. 2^20: %ld steps each, departure %.3g of the bound\n", unit.steps, unit.worst);
+}
+
+/* ---- random states: libration, rotation, near the separatrix ---------------------------- */
+static double uniform(unsigned long long *rng)
+{
+    *rng ^= *rng << 13, *rng ^= *rng >> 7, *rng ^= *rng << 17;
+    return (double)(*rng >> 11) * 0x1p-53;
+}
+
+static void test_random_states(void)
+{
+    unsigned long long rng = 0x9e3779b97f4a7c15ull;
+    const double tols[] = {1e-6, 1e-8, 1e-10};
+    int runs = 0, warned_runs = 0, unreachable_runs = 0;
+    for (int k = 0; k < 24; k++) {
+        const double L = pow(10.0, -3.0 + 6.0 * uniform(&rng)), g = pow(10.0, -3.0 + 6.0 * uniform(&rng));
+        const double w0 = sqrt(g / L);
+        const double theta0 = PI * (2.0 * uniform(&rng) - 1.0);
+        double omega0;
+        switch (k % 3) {
+        case 0: omega0 = 2.0 * w0 * cos(0.5 * theta0) * uniform(&rng); break;                 /* libration */
+        case 1: omega0 = 2.0 * w0 * (1.0 + 4.0 * uniform(&rng)); break;                        /* rotation */
+        default: {                                                                              /* near it */
+            const double c = cos(0.5 * theta0), d = pow(10.0, -4.0 - 10.0 * uniform(&rng));
+            omega0 = 2.0 * w0 * sqrt(fmax(0.0, c * c + (uniform(&rng) < 0.5 ? -d : d)));
+        }
+        }
+        if (uniform(&rng) < 0.5) {
+            omega0 = -omega0;
+        }
+        const Start s = {theta0, omega0, L, g};
+        const double period = exact_period(&s);
+        const double dt = isfinite(period) ? period / 20.0 : 0.5 / w0;
+        for (int solver = 1; solver <= 4; solver++) {
+            const double tol = tols[(k + solver) % 3];
+            const Run r = run(&s, solver, tol, dt, 60, 0, NULL);
+            const int reach = reachable(&s, solver, tol);
+            runs++;
+            warned_runs += r.warned > 0;
+            unreachable_runs += !reach;
+            check(!r.failed && r.ok_beyond == 0, "random %d %s: failed or %d steps OK beyond the bound", k,
+                  NAMES[solver], r.ok_beyond);
+            check(!reach || r.warned == 0, "random %d (theta0 %.17g, omega0 %.17g, L %.17g, g %.17g) %s tol %g: "
+                  "warned (departure %.3g) within the solver's reach", k, theta0, omega0, L, g, NAMES[solver], tol,
+                  r.worst);
+        }
+    }
+    printf("random states: %d runs, %d warned, %d beyond the solver's reach\n", runs, warned_runs, unreachable_runs);
+}
+
+/* ---- what the certificate costs: a DoStep timed with it on and off ---------------------- */
+static double seconds(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return ts.tv_sec + 1e-9 * ts.tv_nsec;
+}
+
+static void print_cost(void)
+{
+    const Start s = {1.3089969389957472, 0.0, 1.0, 9.81};
+    const int n = 200000;
+    printf("\ncost of a DoStep (75 deg, default rkn at 1e-8), best of 5 runs of %d steps:\n", n);
+    printf("%-12s %14s %14s %12s\n", "step", "certificate on", "off", "difference");
+    const double dts[] = {1e-3, 1e-2, 0.1};
+    for (int j = 0; j < 3; j++) {
+        double best[2] = {INFINITY, INFINITY};
+        for (int rep = 0; rep < 5; rep++) {
+            for (int off = 0; off <= 1; off++) {
+                Instance inst;
+                current_log = NULL;
+                setup(&inst, &s, SOLVER_RKN, 1e-8, off);
+                const double t0 = seconds();
+                for (int i = 0; i < n; i++) {
+                    instance_do_step(&inst, "DoStep", inst.data.time, dts[j]);
+                }
+                best[off] = fmin(best[off], (seconds() - t0) / n);
+                instance_release_name(&inst);
+            }
+        }
+        printf("%-12g %11.1f ns %11.1f ns %9.1f ns\n", dts[j], 1e9 * best[0], 1e9 * best[1],
+               1e9 * (best[0] - best[1]));
+    }
+}
+
 int main(int argc, char **argv)
 {
     const int print_table = argc > 1 && strcmp(argv[1], "table") == 0;
+    if (argc > 1 && strcmp(argv[1], "cost") == 0) {
+        print_cost();
+        return 0;
+    }
     test_separatrix_grid(print_table);
+    test_bit_identical_on_off();
+    test_messages();
+    test_state_carries_the_certificate();
+    test_scale_ladder();
+    test_random_states();
     return check_summary("test_certificate");
 }
