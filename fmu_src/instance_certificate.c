@@ -73,8 +73,9 @@ Status instance_check_step(Instance *inst) {
     const char *miss = NULL;
     double ratio = 0.0, theta_exact = NAN, omega_exact = NAN;
     int beyond = 0, log_certificate = 0;
-    char certificate[640] = "", hold[256];
+    char certificate[640], hold[256];
 
+    certificate[0] = '\0';
     if (!data->hard_case_reported && pendulum_exact_resolvable(&data->exact, data->time)) {
         miss = pendulum_exact_qualitative_miss(&data->exact, data->theta, data->omega);
     }
