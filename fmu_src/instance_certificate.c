@@ -83,8 +83,10 @@ Status instance_check_step(Instance *inst) {
         ratio = certificate_departure(&data->exact, data->time, data->tolerance, data->theta, data->omega,
                                       &theta_exact, &omega_exact);
         beyond = !(ratio <= 1.0);
-        /* first crossing, then each tenfold growth since the last message */
-        log_certificate = beyond && (data->certificate_logged == 0.0 || ratio >= 10.0 * data->certificate_logged);
+        /* first crossing, then each tenfold growth since the last message (an unresolvable time
+         * or a state that is not finite counts as DBL_MAX: logged once) */
+        log_certificate = beyond && (data->certificate_logged == 0.0 ||
+                                     (ratio >= 10.0 * data->certificate_logged && data->certificate_logged < DBL_MAX));
         if (log_certificate) {
             remedy(data, hold, sizeof hold);
             data->certificate_logged = fmin(ratio, DBL_MAX);
