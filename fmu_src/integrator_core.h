@@ -88,10 +88,10 @@ void integ_accept(Integrator *it, double h, const double ynew[2], const double f
  * theta'' = f(theta) at both ends; omega is the derivative of the same polynomial. */
 void integ_hermite5(const Integrator *it, double s, double y[2]);
 
-/* The end point of an accepted step of the adaptive methods: evaluates sin and cos of
+/* The end point of an accepted step of the projecting methods: evaluates sin and cos of
  * theta at ynew (one pair, counted in rhs_evals) and, if it->project_energy, moves ynew
- * along grad G back onto the initial energy G = it->energy0 (Newton; at most a few
- * iterations). The projection is skipped, leaving ynew alone, where the correction would
+ * along the gradient of G in the dimensionless coordinates (theta, omega / w0) back onto the
+ * initial energy G = energy0 + energy0_lo (Newton; at most a few iterations). The projection is skipped, leaving ynew alone, where the correction would
  * exceed the local error tolerance (near the saddle (pi, 0) grad G vanishes). On return
  * fnew = f(ynew) and trig = (sin, cos) of ynew[0], at the point returned.
  * Returns 1 if projected, 0 if not. */
