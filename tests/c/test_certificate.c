@@ -17,7 +17,8 @@
  *   - an FMU state carries the certificate's field, and a forged value is refused.
  *
  * Arguments: `table` prints the grid's table (docs/certificate.md), `cost` times a step with
- * the certificate on and off. */
+ * the certificate on and off, `steps-on N` / `steps-off N` take N steps of 0.01 s (for
+ * valgrind's instruction counts). */
 #define _POSIX_C_SOURCE 199309L
 #include <float.h>
 #include <math.h>
@@ -475,6 +476,18 @@ int main(int argc, char **argv)
     const int print_table = argc > 1 && strcmp(argv[1], "table") == 0;
     if (argc > 1 && strcmp(argv[1], "cost") == 0) {
         print_cost();
+        return 0;
+    }
+    if (argc > 2 && (strcmp(argv[1], "steps-on") == 0 || strcmp(argv[1], "steps-off") == 0)) {
+        /* N DoSteps of 0.01 s (75 deg, rkn at 1e-8), for an instruction count (valgrind) */
+        const Start s = {1.3089969389957472, 0.0, 1.0, 9.81};
+        Instance inst;
+        setup(&inst, &s, SOLVER_RKN, 1e-8, strcmp(argv[1], "steps-off") == 0);
+        for (long i = 0, n = atol(argv[2]); i < n; i++) {
+            instance_do_step(&inst, "DoStep", inst.data.time, 0.01);
+        }
+        printf("%.17g\n", inst.data.theta);
+        instance_release_name(&inst);
         return 0;
     }
     test_separatrix_grid(print_table);
