@@ -81,9 +81,10 @@ typedef struct {
                                     near the separatrix was off by ~1e-16 of 2 w0sq, a bias of
                                     1 - m that the period turns into a phase error growing like
                                     1 / (1 - m) (docs/certificate.md) */
-    int project_energy;          /* 1: the adaptive methods project every accepted point back
-                                    onto G = energy0 (set by integrator_init for DOPRI5 and
-                                    RKN; 0 runs the plain Runge-Kutta methods) */
+    int project_energy;          /* 1: every accepted point is projected back onto G = energy0
+                                    (set by integrator_init: DOPRI5 and RKN always, RK4 and the
+                                    symplectic method near the separatrix; 0 runs the plain
+                                    methods) */
     int last_rejected;           /* the previous step attempt was rejected */
     double dense[INTEGRATOR_MAX_STAGES][2]; /* method-specific dense-output data */
     SolverStats stats;

@@ -12,6 +12,9 @@
  * measured margin for the global error over ten periods (tests/c/test_solver_tolerance.c):
  *     h = min((30 tol c)^(1/4), 0.5) / r.
  * At tol = 1e-8 and small amplitudes this is h w0 = 0.023 (about 270 steps a period).
+ * Near the separatrix (c < 1e-2) every step is projected onto the initial energy
+ * (integrator.c), and c stops tightening the step at 1e-7 (integ_step_closeness): below, the
+ * projection holds the energy, and smaller steps only added rounding.
  *
  * Output: the internal steps never land on the output times; values in between come
  * from quintic Hermite interpolation of theta using theta, theta' = omega and

@@ -23,6 +23,9 @@
  * rotation), tol is scaled by the closeness c to the separatrix and by SYMP_TOL_FACTOR, the
  * measured margin for the global error over ten periods (the interpolant's included):
  *     h = min(0.8 (1e-3 tol c / C)^(1/8), 1) / r.
+ * Near the separatrix (c < 1e-2) every step is projected onto the initial energy
+ * (integrator.c; the composition is then no longer symplectic there, but its energy is held
+ * to rounding), and c stops tightening the step at 1e-7 (integ_step_closeness).
  *
  * Output: Hermite interpolation of degree 7 for theta from theta, theta' = omega,
  * theta'' = -w0^2 sin(theta) and theta''' = -w0^2 cos(theta) omega at both ends of the
