@@ -87,8 +87,10 @@ const char *model_check_state(const ModelData *data, InterfaceType type) {
         return "the hard-case flag is out of range";
     }
     if (!(data->certificate_logged == 0.0 || (data->certificate_logged > 1.0 && data->certificate_logged <= DBL_MAX)) ||
-        (data->certificate_logged != 0.0 && (data->mode & (MODE_INSTANTIATED | MODE_INITIALIZATION)) != 0)) {
-        return "the certificate's last logged departure is out of range (0, or above 1 after initialization)";
+        (data->certificate_logged != 0.0 &&
+         (type == INTERFACE_MODEL_EXCHANGE || (data->mode & (MODE_INSTANTIATED | MODE_INITIALIZATION)) != 0))) {
+        return "the certificate's last logged departure is out of range (0, or above 1 after a Co-Simulation "
+               "initialization)";
     }
     if (!(isfinite(data->L) && data->L > 0.0 && isfinite(data->g) && data->g > 0.0)) {
         return "L or g out of range (finite, greater than 0)";
