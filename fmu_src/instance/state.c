@@ -18,8 +18,9 @@
 #include "instance.h"
 
 #define STATE_MAGIC "PNDLSTAT"
-#define STATE_FORMAT_VERSION 3u /* 2: the solver state gained fields; 3: interface, hard-case
-                                   flag, exact solution from g and L */
+#define STATE_FORMAT_VERSION 4u /* 2: the solver state gained fields; 3: interface, hard-case
+                                   flag, exact solution from g and L; 4: the certificate's last
+                                   logged departure, the solver's omega scale */
 
 typedef struct {
     char magic[8];

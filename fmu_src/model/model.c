@@ -2,6 +2,7 @@
  * shared by the FMI 2.0 and FMI 3.0 layers. */
 #include "model.h"
 
+#include <float.h>
 #include <limits.h>
 #include <math.h>
 #include <string.h>
@@ -55,7 +56,6 @@ static const char *check_parameters(const ModelData *data) {
 
 const char *model_initialize(ModelData *data, InterfaceType type) {
     const char *problem = check_parameters(data);
-    double w0sq = data->g / data->L;
     if (problem != NULL) {
         return problem;
     }
@@ -64,7 +64,7 @@ const char *model_initialize(ModelData *data, InterfaceType type) {
         return "the exact solution cannot be set up for these start values";
     }
     if (type == INTERFACE_CO_SIMULATION &&
-        integrator_init(&data->integrator, (SolverKind)data->solver, w0sq, data->tolerance,
+        integrator_init_gl(&data->integrator, (SolverKind)data->solver, data->g, data->L, data->tolerance,
                         data->time, data->theta, data->omega) != 0) {
         return "the solver cannot be set up for these start values";
     }
@@ -85,6 +85,12 @@ const char *model_check_state(const ModelData *data, InterfaceType type) {
     }
     if (data->hard_case_reported != 0 && data->hard_case_reported != 1) {
         return "the hard-case flag is out of range";
+    }
+    if (!(data->certificate_logged == 0.0 || (data->certificate_logged > 1.0 && data->certificate_logged <= DBL_MAX)) ||
+        (data->certificate_logged != 0.0 &&
+         (type == INTERFACE_MODEL_EXCHANGE || (data->mode & (MODE_INSTANTIATED | MODE_INITIALIZATION)) != 0))) {
+        return "the certificate's last logged departure is out of range (0, or above 1 after a Co-Simulation "
+               "initialization)";
     }
     if (!(isfinite(data->L) && data->L > 0.0 && isfinite(data->g) && data->g > 0.0)) {
         return "L or g out of range (finite, greater than 0)";
@@ -132,7 +138,7 @@ const char *model_check_state(const ModelData *data, InterfaceType type) {
     {
         Integrator fresh;
         const char *problem;
-        if (integrator_init(&fresh, (SolverKind)data->solver, data->g / data->L, data->tolerance, data->start_time,
+        if (integrator_init_gl(&fresh, (SolverKind)data->solver, data->g, data->L, data->tolerance, data->start_time,
                             data->exact.theta0, data->exact.omega0) != 0) {
             return "the solver cannot be set up for the state's start values";
         }

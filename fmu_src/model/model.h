@@ -43,6 +43,9 @@ typedef struct {
                                    an instance of the other */
     int hard_case_reported;     /* 1 once a step has warned that the numerical solution went
                                    qualitatively wrong (instance/motion.c) */
+    double certificate_logged;  /* the departure (in units of the certificate's bound) of the last
+                                   step whose certificate was logged; 0 before the first
+                                   (instance/certificate.c) */
     double L, g;                /* parameters */
     int solver;                 /* SolverKind */
     double tolerance;           /* relative tolerance of the Co-Simulation solver */

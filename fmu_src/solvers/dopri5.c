@@ -10,6 +10,7 @@
 #include <math.h>
 
 #include "integrator.h"
+#include "integrator_core.h"
 #include "methods.h"
 
 /* nodes c_i */

@@ -38,8 +38,18 @@ typedef struct {
 typedef struct {
     SolverKind kind;
     double w0sq;                 /* g / L */
-    double rtol, atol;           /* error tolerances of the local error test: the user's tol
-                                    (adaptive methods: at least 1e-14, integrator.c) */
+    double w0sq_lo;              /* its low part, g / L - w0sq (integrator_init_gl; 0 from
+                                    integrator_init): the right-hand side uses both, so that the
+                                    ODE is the one of the doubles g and L (rounded, g/L moved
+                                    1 - m by 1e-16, which the period amplifies near the
+                                    separatrix) */
+    double rtol;                 /* relative tolerance of the local error test: the user's tol
+                                    (adaptive methods: scaled near the separatrix and at least
+                                    1e-14, integrator.c) */
+    double atol[2];              /* absolute tolerances of theta and omega: rtol and rtol w0, the
+                                    states in units of 1 rad and of the motion's rate w0 (so the
+                                    step rules see only dimensionless numbers: the same steps
+                                    for every L and g) */
     double t;                    /* time of the internal solution point: t + t_lo, kept as a
                                     compensated sum of the steps (without it, the rounding of
                                     t += h, ulp(t)/2 a step, was a phase error of 2.5e-9 after
@@ -53,7 +63,7 @@ typedef struct {
                                     (half the largest speed) in rotation; sets the time scale
                                     of the fixed steps */
     double closeness;            /* distance from the separatrix, |m1| / max(1, m) (at least
-                                    INTEG_MIN_CLOSENESS): the period's sensitivity to energy
+                                    INTEGRATOR_REACH / tol): the period's sensitivity to energy
                                     errors grows like 1/closeness there */
     double h;                    /* next step size to try (fixed-step methods: the step) */
     double hmax;                 /* largest step the adaptive methods may take */
@@ -67,19 +77,39 @@ typedef struct {
                                     the energy H = omega^2/2 + 2 w0sq sin^2(theta/2) measured
                                     from the separatrix, G = H - 2 w0sq, which keeps its
                                     relative accuracy near the top, where H loses it */
-    int project_energy;          /* 1: the adaptive methods project every accepted point back
-                                    onto G = energy0 (set by integrator_init for DOPRI5 and
-                                    RKN; 0 runs the plain Runge-Kutta methods) */
+    double energy0_lo;           /* low part of energy0 (double-double): rounded to a double, G
+                                    near the separatrix was off by ~1e-16 of 2 w0sq, a bias of
+                                    1 - m that the period turns into a phase error growing like
+                                    1 / (1 - m) (docs/certificate.md) */
+    int project_energy;          /* 1: every accepted point is projected back onto G = energy0
+                                    (set by integrator_init: DOPRI5 and RKN always, RK4 and the
+                                    symplectic method near the separatrix; 0 runs the plain
+                                    methods) */
     int last_rejected;           /* the previous step attempt was rejected */
     double dense[INTEGRATOR_MAX_STAGES][2]; /* method-specific dense-output data */
     SolverStats stats;
 } Integrator;
+
+/* Smallest tol |1 - m| / max(1, m) (1 - m: the distance from the separatrix) at which a method
+ * holds 100 tol over ten periods (measured, docs/certificate.md, tests/c/test_certificate.c):
+ * DOPRI5, RKN and the symplectic method (projecting onto the energy near the separatrix) down to
+ * 1e-21, where the rounding of the state itself moves the period by more; RK4 down to 1e-19.
+ * The FMU's certificate names the line in its warning. */
+#define INTEGRATOR_REACH 1e-21
+#define INTEGRATOR_REACH_RK4 1e-19
+
+/* That line for a method (INTEGRATOR_REACH for an unknown one). */
+double integrator_reach(SolverKind kind);
 
 /* Prepares integration from (theta0, omega0) at t0. tol is the relative tolerance
  * (fmi2SetupExperiment's); w0sq = g / L > 0. Returns 0, or -1 for invalid input.
  * Resets the statistics. */
 int integrator_init(Integrator *it, SolverKind kind, double w0sq, double tol,
                     double t0, double theta0, double omega0);
+
+/* The same for the parameters g > 0 and L > 0: w0sq = g / L in double-double. */
+int integrator_init_gl(Integrator *it, SolverKind kind, double g, double L, double tol,
+                       double t0, double theta0, double omega0);
 
 /* Most internal steps (accepted or rejected) one integrator_advance may take (a fuzzing
  * build may set a smaller one on the command line, so that each of its runs stays short). */

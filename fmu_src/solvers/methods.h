@@ -1,5 +1,6 @@
-/* solvers/methods.h: private interface between integrator.c (init, dispatch) and the
- * per-method files. Not part of the FMU's API.
+/* solvers/methods.h: the per-method entry points, called by integrator.c (init,
+ * dispatch) only. Not part of the FMU's API. The methods themselves build on
+ * integrator_core.h, never on integrator.c.
  *
  * Each method provides
  *   start(it):        called once by integrator_init after the common fields are set
@@ -11,108 +12,7 @@
 #ifndef PENDULUM_INTEGRATOR_METHODS_H
 #define PENDULUM_INTEGRATOR_METHODS_H
 
-#include <math.h>
-
 #include "integrator.h"
-
-/* The right-hand side, one sin per call, counted in rhs_evals. */
-static inline void integ_rhs(Integrator *it, const double y[2], double f[2])
-{
-    f[0] = y[1];
-    f[1] = -it->w0sq * sin(y[0]);
-    it->stats.rhs_evals++;
-}
-
-/* The acceleration alone (Nystrom and symplectic methods), counted the same way. */
-static inline double integ_accel(Integrator *it, double theta)
-{
-    it->stats.rhs_evals++;
-    return -it->w0sq * sin(theta);
-}
-
-/* x + d with the rounding error carried in *carry (compensated summation, Kahan 1965, with
- * Knuth's TwoSum so that |d| > |x| is fine): the fixed-step methods accumulate no rounding
- * drift over millions of steps (near the separatrix an energy drift of a few ulps per step
- * was the error at tol 1e-10). */
-static inline double integ_add_compensated(double x, double d, double *carry)
-{
-    const double b = d + *carry;
-    const double sum = x + b;
-    const double bb = sum - x;
-    *carry = (x - (sum - bb)) + (b - bb);
-    return sum;
-}
-
-/* Weighted RMS norm of a local error estimate e (Hairer, Norsett & Wanner, Solving ODEs I,
- * II.4 (4.11)): sc_i = atol + rtol max(|y0_i|, |y1_i|), err = sqrt(mean (e_i / sc_i)^2). */
-static inline double integ_err_norm(const Integrator *it, const double e[2],
-                                    const double y0[2], const double y1[2])
-{
-    double s = 0.0;
-    for (int i = 0; i < 2; i++) {
-        double sc = it->atol + it->rtol * fmax(fabs(y0[i]), fabs(y1[i]));
-        double r = e[i] / sc;
-        s += r * r;
-    }
-    return sqrt(0.5 * s);
-}
-
-/* integrator.c: shared helpers. */
-
-/* Initial step for an adaptive method of order `order` (HNW I, II.4, algorithm after
- * (4.14)); uses it->f at (t, y) and costs one right-hand side. */
-double integ_initial_step(Integrator *it, int order);
-
-/* Step-size controller shared by the adaptive methods: the PI controller of HNW I, IV.2
- * (beta = 0.4/q, alpha = 0.7/q, factor in [0.2, 10]), q = order of the error estimate
- * + 1, safety factor `safe`. Given the error norm err of a step of size h, returns the
- * next step to try; *accept tells whether the step is accepted.
- * Updates err_prev / last_rejected / stats.rejected. */
-double integ_control(Integrator *it, double h, double err, int q, double safe, int *accept);
-
-/* Accepts a step: (t, y, f) moves to (t_prev, y_prev, f_prev), the new point becomes
- * (t + h, ynew, fnew), the time summed with compensation (t_lo). */
-void integ_accept(Integrator *it, double h, const double ynew[2], const double fnew[2]);
-
-/* Quintic Hermite interpolation on the last step from theta, theta' = omega and
- * theta'' = f(theta) at both ends; omega is the derivative of the same polynomial. */
-void integ_hermite5(const Integrator *it, double s, double y[2]);
-
-/* The end point of an accepted step of the adaptive methods: evaluates sin and cos of
- * theta at ynew (one pair, counted in rhs_evals) and, if it->project_energy, moves ynew
- * along grad G back onto the initial energy G = it->energy0 (Newton; at most a few
- * iterations). The projection is skipped, leaving ynew alone, where the correction would
- * exceed the local error tolerance (near the saddle (pi, 0) grad G vanishes). On return
- * fnew = f(ynew) and trig = (sin, cos) of ynew[0], at the point returned.
- * Returns 1 if projected, 0 if not. */
-int integ_project(Integrator *it, const double y0[2], double ynew[2], double fnew[2],
-                  double trig[2]);
-
-/* Dense output from the differential equation itself: INTEG_TAYLOR_TERMS Taylor
- * coefficients at each end of a step (all of them follow from theta, omega, sin theta and
- * cos theta by recurrences, no further evaluation of sin) fix a two-point Hermite
- * polynomial of degree 2 INTEG_TAYLOR_TERMS - 1 = 15 for theta; omega is its derivative.
- * Its error is of the order of h^16 theta^(16)/16! / 4^8: below the local error of a
- * 12th-order step of the same size. */
-#define INTEG_TAYLOR_TERMS 8
-
-/* a[n] = theta^(n)(t) / n!, n < INTEG_TAYLOR_TERMS, given theta, omega and
- * trig = (sin theta, cos theta) at t. In a time unit h (the step's variable s = (t - t0)/h):
- * pass w0sq h^2 and omega h, get a[n] h^n. */
-void integ_taylor(double w0sq, double theta, double omega, const double trig[2],
-                  double a[INTEG_TAYLOR_TERMS]);
-
-/* Stores the Hermite polynomial matching the scaled Taylor coefficients `left` at the start
- * and `right` at the end of a step in dense[0 .. INTEG_TAYLOR_TERMS - 1]. */
-void integ_hermite_setup(const double left[INTEG_TAYLOR_TERMS],
-                         const double right[INTEG_TAYLOR_TERMS], double dense[][2]);
-
-/* Evaluates that polynomial (theta) and its derivative (omega) at the fraction s of the
- * last step. */
-void integ_hermite_eval(const Integrator *it, double s, double y[2]);
-
-/* The smallest step the adaptive methods may take at time t before reporting underflow. */
-double integ_hmin(double t);
 
 /* Per-method entry points. */
 void integ_dopri5_start(Integrator *it);

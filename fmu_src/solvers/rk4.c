@@ -12,6 +12,9 @@
  * measured margin for the global error over ten periods (tests/c/test_solver_tolerance.c):
  *     h = min((30 tol c)^(1/4), 0.5) / r.
  * At tol = 1e-8 and small amplitudes this is h w0 = 0.023 (about 270 steps a period).
+ * Near the separatrix (c < 1e-2) every step is projected onto the initial energy
+ * (integrator.c), and c stops tightening the step at 1e-7 (integ_step_closeness): below, the
+ * projection holds the energy, and smaller steps only added rounding.
  *
  * Output: the internal steps never land on the output times; values in between come
  * from quintic Hermite interpolation of theta using theta, theta' = omega and
@@ -22,6 +25,7 @@
 #include <math.h>
 
 #include "integrator.h"
+#include "integrator_core.h"
 #include "methods.h"
 
 /* tol per unit of rate t, scaled for the global error over ten periods */
@@ -30,7 +34,7 @@
 void integ_rk4_start(Integrator *it)
 {
     /* rate and closeness: integrator.c (the motion's time scale, the separatrix's sensitivity) */
-    it->h = fmin(pow(120.0 * it->rtol * it->closeness * RK4_TOL_FACTOR, 0.25), 0.5) / it->rate;
+    it->h = fmin(pow(120.0 * it->rtol * integ_step_closeness(it) * RK4_TOL_FACTOR, 0.25), 0.5) / it->rate;
 }
 
 int integ_rk4_step(Integrator *it)
@@ -57,7 +61,16 @@ int integ_rk4_step(Integrator *it)
                                         &it->dense[0][i]);
     if (!isfinite(ynew[0]) || !isfinite(ynew[1]))
         return -1;
-    integ_rhs(it, ynew, fnew);   /* next step's k1 and the interpolation's end slope */
+    if (it->project_energy) {
+        /* near the separatrix: back onto the initial energy (integrator.c); f comes with it,
+         * and the rounding carried so far belongs to the point before the move */
+        double trig[2];
+        if (integ_project(it, y, ynew, fnew, trig) == 1) {
+            it->dense[0][0] = it->dense[0][1] = 0.0;
+        }
+    } else {
+        integ_rhs(it, ynew, fnew);   /* next step's k1 and the interpolation's end slope */
+    }
     integ_accept(it, h, ynew, fnew);
     return 0;
 }

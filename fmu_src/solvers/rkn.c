@@ -41,6 +41,7 @@
 #include <math.h>
 
 #include "integrator.h"
+#include "integrator_core.h"
 #include "methods.h"
 
 #define RKN_STAGES 17

@@ -23,6 +23,9 @@
  * rotation), tol is scaled by the closeness c to the separatrix and by SYMP_TOL_FACTOR, the
  * measured margin for the global error over ten periods (the interpolant's included):
  *     h = min(0.8 (1e-3 tol c / C)^(1/8), 1) / r.
+ * Near the separatrix (c < 1e-2) every step is projected onto the initial energy
+ * (integrator.c; the composition is then no longer symplectic there, but its energy is held
+ * to rounding), and c stops tightening the step at 1e-7 (integ_step_closeness).
  *
  * Output: Hermite interpolation of degree 7 for theta from theta, theta' = omega,
  * theta'' = -w0^2 sin(theta) and theta''' = -w0^2 cos(theta) omega at both ends of the
@@ -35,6 +38,7 @@
 #include <math.h>
 
 #include "integrator.h"
+#include "integrator_core.h"
 #include "methods.h"
 
 #define SYMP_STAGES 15
@@ -64,7 +68,7 @@ static double jerk(Integrator *it, double theta, double omega)
 void integ_symplectic_start(Integrator *it)
 {
     /* rate and closeness: integrator.c (the motion's time scale, the separatrix's sensitivity) */
-    it->h = fmin(SYMP_SAFETY * pow(it->rtol * it->closeness * SYMP_TOL_FACTOR / SYMP_PHASE_C, 0.125),
+    it->h = fmin(SYMP_SAFETY * pow(it->rtol * integ_step_closeness(it) * SYMP_TOL_FACTOR / SYMP_PHASE_C, 0.125),
                  SYMP_HMAX_W0) / it->rate;
     it->dense[0][1] = jerk(it, it->y[0], it->y[1]);
 }
@@ -89,6 +93,14 @@ int integ_symplectic_step(Integrator *it)
     if (!isfinite(x) || !isfinite(v))
         return -1;
     double y1[2] = {x, v}, f1[2] = {v, a};
+    if (it->project_energy) {
+        /* near the separatrix: back onto the initial energy (integrator.c), f with it; the
+         * rounding carried so far belongs to the point before the move */
+        double trig[2];
+        if (integ_project(it, it->y, y1, f1, trig) == 1) {
+            carry[0] = carry[1] = 0.0;
+        }
+    }
     it->dense[0][0] = it->dense[0][1];   /* third derivative at the start / end of the step */
     it->dense[0][1] = jerk(it, x, v);
     integ_accept(it, h, y1, f1);

@@ -139,7 +139,7 @@ static double fixed_step_error(SolverKind kind, double hw0, double periods, int 
     integrator_init(&it, kind, W0SQ, 1e-6, 0.0, theta0, 0.0);
     it.h = h;
     if (kind == SOLVER_DOPRI5 || kind == SOLVER_RKN) {
-        it.rtol = it.atol = 1e200;
+        it.rtol = it.atol[0] = it.atol[1] = 1e200;
         it.hmax = h;
         it.project_energy = project;
     }
@@ -456,7 +456,9 @@ static void test_default_near_separatrix(void)
                "pi - %.2e, %ld evals, %ld rejected\n", e, err, PI - max_abs,
                it.stats.rhs_evals, it.stats.rejected);
         check(ok && max_abs < PI, "P2 tol %g: max |theta| = %.17g", tol, max_abs);
-        check(err <= fmax(tol, floor_err), "P2 tol %g: error %.3g above the tolerance", tol,
+        /* within 2 tol: since omega's absolute tolerance is tol w0 (the same steps at every
+         * scale, issue 21), tol 1e-6 gives 1.8e-6 here (the certificate's bound is 100 tol) */
+        check(err <= fmax(2.0 * tol, floor_err), "P2 tol %g: error %.3g above twice the tolerance", tol,
               err);
         check(err < prev || prev < floor_err, "P2 tol %g: error %.3g did not shrink (%.3g)",
               tol, err, prev);

@@ -170,10 +170,52 @@ static void test_model_exchange_and_derivatives(void) {
     fmi3FreeInstance(c);
 }
 
+/* The certificate (fmu_src/instance/certificate.c) in FMI 3.0: rk4 at tol 1e-10 with 1 - m = -2e-11,
+ * beyond rk4's reach, goes beyond the bound within 10 revolutions: fmi3DoStep returns fmi3Warning
+ * there and logs "certificate: ..."; rkn holds the same case, every step fmi3OK
+ * (docs/certificate.md). */
+static int certificate_run(int solver, LogCapture *capture, int *warnings) {
+    fmi3Instance c = cs_instance(capture);
+    const fmi3ValueReference vrs[2] = {VR_THETA, VR_OMEGA}, vr_solver = VR_SOLVER;
+    const fmi3Float64 start[2] = {0.0, 2.0 * sqrt(9.81) * (1.0 + 1e-11)};
+    const fmi3Int64 kind = solver;
+    fmi3Boolean event, terminate, early;
+    fmi3Float64 last, period = 0.0;
+    const fmi3ValueReference vr_period = VR_PERIOD;
+    int failed = 0;
+    *warnings = 0;
+    fmi3EnterInitializationMode(c, fmi3True, 1e-10, 0.0, fmi3False, 0.0);
+    fmi3SetFloat64(c, vrs, 2, start, 2);
+    fmi3SetInt64(c, &vr_solver, 1, &kind, 1);
+    fmi3ExitInitializationMode(c);
+    fmi3GetFloat64(c, &vr_period, 1, &period, 1);
+    for (int i = 0; i < 200; i++) {
+        const fmi3Status status = fmi3DoStep(c, i * period / 20.0, period / 20.0, fmi3True, &event, &terminate,
+                                             &early, &last);
+        *warnings += status == fmi3Warning;
+        failed += status != fmi3OK && status != fmi3Warning;
+    }
+    fmi3FreeInstance(c);
+    return failed;
+}
+
+static void test_certificate_warns(void) {
+    LogCapture capture = {0, ""};
+    int warnings = 0;
+    CHECK(certificate_run(2, &capture, &warnings) == 0, "rk4 near the separatrix: every step OK or Warning");
+    check(warnings > 0, "rk4 near the separatrix: no fmi3Warning (%d)", warnings);
+    check(strncmp(capture.last, "certificate: ", 13) == 0 && strstr(capture.last, "solver rk4") != NULL,
+          "the certificate's message: \"%s\"", capture.last);
+    LogCapture quiet = {0, ""};
+    CHECK(certificate_run(3, &quiet, &warnings) == 0 && warnings == 0 && quiet.last[0] == '\0',
+          "rkn holds the same case: every step fmi3OK, nothing logged");
+}
+
 int main(void) {
     test_instantiation();
     test_calling_sequence_and_bad_input();
     test_states_round_trip();
     test_model_exchange_and_derivatives();
+    test_certificate_warns();
     return check_summary("test_fmi3_api");
 }
