@@ -66,11 +66,17 @@ def run(args: argparse.Namespace) -> int:
         print("bench exact: the C benchmark (tests/c/bench_exact) is not installed with the package: "
               "timing Python and scipy only")
     results = run_benchmark(program, args.points, tuple(args.amplitudes))
-    print(f"{'amplitude':>14} {'C ns/pt':>9} {'Python ns/pt':>13} {'scipy ns/pt':>12} {'Python/C':>9} {'C/scipy':>8}")
+    with_c = any(math.isfinite(r.c_ns) for r in results)  # no C benchmark: its columns are left out
+    c_head = f" {'C ns/pt':>9}" if with_c else ""
+    c_tail = f" {'Python/C':>9} {'C/scipy':>8}" if with_c else f" {'Python/scipy':>13}"
+    print(f"{'amplitude':>14}{c_head} {'Python ns/pt':>13} {'scipy ns/pt':>12}{c_tail}")
     for r in results:
-        print(f"{r.amplitude_deg:>10.10g} deg {r.c_ns:>9.1f} {r.python_ns:>13.1f} {r.scipy_ns:>12.1f} "
-              f"{r.python_ns / r.c_ns:>9.2f} {r.ratio:>8.3f}")
+        c_value = f" {r.c_ns:>9.1f}" if with_c else ""
+        ratios = (f" {r.python_ns / r.c_ns:>9.2f} {r.ratio:>8.3f}" if with_c
+                  else f" {r.python_ns / r.scipy_ns:>13.3f}")
+        print(f"{r.amplitude_deg:>10.10g} deg{c_value} {r.python_ns:>13.1f} {r.scipy_ns:>12.1f}{ratios}")
     for r in results:
-        print(f"bench_exact amplitude_deg={r.amplitude_deg:.10g} n={r.n} c_ns_per_point={r.c_ns:.3f} "
+        c_field = f" c_ns_per_point={r.c_ns:.3f}" if with_c else ""
+        print(f"bench_exact amplitude_deg={r.amplitude_deg:.10g} n={r.n}{c_field} "
               f"python_ns_per_point={r.python_ns:.3f} scipy_ns_per_point={r.scipy_ns:.3f}")
     return 0

@@ -7,12 +7,12 @@ import statistics
 
 import pendulum_fmu.bench.sweep as bench_sweep
 from pendulum_fmu.bench.sweep import bench_points, measure
-from pendulum_fmu.cli.arguments import add_fmu_argument, integer, positive
+from pendulum_fmu.cli.arguments import add_fmu_argument, integer, plain_text, positive
 from pendulum_fmu.fmu.locate import locate_fmu
 
 NAME = "sweep"
 HELP = "sweep throughput, runs/s with 1 and 2 Dask workers, and the speed-up"
-DESCRIPTION = (bench_sweep.__doc__ or HELP).replace("``", "")
+DESCRIPTION = plain_text(bench_sweep.__doc__ or HELP)
 EPILOG = """\
 examples:
   pendulum-fmu bench sweep                          # 1000 runs, 1 and 2 workers, median of 5

@@ -10,19 +10,22 @@ a failed build or simulation prints its reason and exits with 1; neither shows a
 from __future__ import annotations
 
 import argparse
+import re
 import sys
 from types import ModuleType
-from typing import NoReturn
+from typing import Any, NoReturn
 
 from pendulum_fmu import __version__
 from pendulum_fmu.cli import animate, bench, compare, simulate, study, sweep
 from pendulum_fmu.errors import BuildError, SimulationError, UsageError
+from pendulum_fmu.interrupt import default_dispositions
 
 COMMANDS: tuple[ModuleType, ...] = (simulate, compare, study, animate, sweep, bench)
 
 DESCRIPTION = """\
 Build, run and check Pendulum.fmu: the nonlinear pendulum theta'' + (g/L) sin(theta) = 0,
-FMI 2.0 Co-Simulation and Model Exchange, with its exact Jacobi-elliptic solution inside.
+FMI 2.0 and FMI 3.0, Co-Simulation and Model Exchange, with its exact Jacobi-elliptic
+solution inside.
 """
 EPILOG = """\
 'pendulum-fmu COMMAND --help' shows each command's options. The FMU used is --fmu PATH,
@@ -46,8 +49,20 @@ class _Formatter(argparse.RawDescriptionHelpFormatter):
         super().__init__(prog, max_help_position=34)
 
 
+NEGATIVE_NUMBER = re.compile(r"^-(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?$|^-(inf|infinity|nan)$", re.IGNORECASE)
+"""What argparse takes for a negative number, not an option: -1, -.5, -1e-6, -1.5E+3, -inf."""
+
+
 class OneLineParser(argparse.ArgumentParser):
-    """An argument parser whose errors are one line: what is wrong, and where the help is."""
+    """An argument parser whose errors are one line: what is wrong, and where the help is.
+
+    Negative numbers in exponent notation (``-t -1e-6``) are values, as ``-1`` is: argparse's
+    own pattern knows only ``-1`` and ``-1.5`` and would say "expected one argument".
+    """
+
+    def __init__(self, *args: Any, **kwargs: Any) -> None:
+        super().__init__(*args, **kwargs)
+        self._negative_number_matcher = NEGATIVE_NUMBER
 
     def error(self, message: str) -> NoReturn:
         """Print ``PROG: error: MESSAGE (see PROG --help)`` to stderr and exit with 2."""
@@ -69,6 +84,14 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
+def _unexpected(error: Exception) -> str:
+    """One line for an error no check foresaw: its kind, its text, and a request to report it."""
+    if isinstance(error, OSError) and error.strerror:
+        return f"{error.strerror}" + (f": {error.filename!r}" if error.filename else "")
+    text = " ".join(str(error).split()) or "no message"
+    return f"{type(error).__name__}: {text} (unexpected: please report it with the command that caused it)"
+
+
 def main(argv: list[str] | None = None) -> int:
     """Run ``pendulum-fmu COMMAND [options]``.
 
@@ -83,8 +106,16 @@ def main(argv: list[str] | None = None) -> int:
         The exit code: 0 done, 1 a build or run failed, 2 a bad argument, 130 interrupted.
         argparse's own errors and ``--help`` leave through ``SystemExit`` as usual.
     """
+    default_dispositions()  # Ctrl-C stops the command even if SIGINT was inherited as ignored
     arguments = sys.argv[1:] if argv is None else list(argv)
-    forwarded = bench.forward(arguments)
+    try:
+        forwarded = bench.forward(arguments)
+    except KeyboardInterrupt:
+        print(f"\npendulum-fmu {' '.join(arguments[:2])}: interrupted", file=sys.stderr)
+        return 130
+    except Exception as error:  # noqa: BLE001 -- one line, never a traceback
+        print(f"pendulum-fmu {' '.join(arguments[:2])}: error: {_unexpected(error)}", file=sys.stderr)
+        return 1
     if forwarded is not None:
         return forwarded
     parser = build_parser()
@@ -105,4 +136,7 @@ def main(argv: list[str] | None = None) -> int:
         hint = "; run the same command again to resume" if args.command == "sweep" else ""
         print(f"\n{subparser.prog}: interrupted{hint}", file=sys.stderr)
         return 130
+    except Exception as error:  # noqa: BLE001 -- the promise is one line, never a traceback
+        print(f"{subparser.prog}: error: {_unexpected(error)}", file=sys.stderr)
+        return 1
     return 0  # not reached: subparser.error exits

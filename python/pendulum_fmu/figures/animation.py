@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+import os
 from pathlib import Path
 from typing import Any
 
@@ -38,6 +39,10 @@ class _GifFrames:
         first, *rest = self.frames
         first.save(self.path, save_all=True, append_images=rest, duration=round(1000 / self.fps), loop=0)
 
+    def abort(self) -> None:
+        """Drop the frames: nothing is written."""
+        self.frames.clear()
+
 
 class _Mp4Frames:
     """Stream frames to ffmpeg (the binary imageio-ffmpeg ships): H.264, yuv420p."""
@@ -54,6 +59,13 @@ class _Mp4Frames:
 
     def close(self) -> None:
         self._writer.close()
+
+    def abort(self) -> None:
+        """Stop ffmpeg (the caller deletes its unfinished file)."""
+        try:
+            self._writer.close()
+        except Exception:  # noqa: BLE001 -- ffmpeg may already be gone; the file is deleted anyway
+            pass
 
 
 def render(trajectory: Trajectory, out: Path, fps: int, trail: float = 1.0) -> Path:
@@ -121,8 +133,12 @@ def render(trajectory: Trajectory, out: Path, fps: int, trail: float = 1.0) -> P
     canvas.draw()
     background = canvas.copy_from_bbox(fig.bbox)  # type: ignore[attr-defined]
     width, height = canvas.get_width_height()
-    frames: _GifFrames | _Mp4Frames = (_Mp4Frames(out, fps, (width, height)) if out.suffix.lower() == ".mp4"
-                                       else _GifFrames(out, fps))
+    # Written under a temporary name beside ``out`` and renamed when complete: an interrupted
+    # film leaves no truncated file at ``out`` (and an older complete one stays as it was).
+    partial = out.with_name(f".{out.stem}.{os.getpid()}.partial{out.suffix}")
+    frames: _GifFrames | _Mp4Frames = (_Mp4Frames(partial, fps, (width, height)) if out.suffix.lower() == ".mp4"
+                                       else _GifFrames(partial, fps))
+    finished = False
     try:
         for k in range(time.size):
             canvas.restore_region(background)  # type: ignore[attr-defined]
@@ -143,9 +159,14 @@ def render(trajectory: Trajectory, out: Path, fps: int, trail: float = 1.0) -> P
                              f"g = {p.gravity:g} m/s^2        t = {time[k]:6.2f} s  ({time[k] / period:5.2f} periods)")
             fig.draw_artist(heading)
             frames.add(np.asarray(canvas.buffer_rgba())[:, :, :3])  # type: ignore[attr-defined]
+        frames.close()
+        os.replace(partial, out)
+        finished = True
     finally:
         plt.close(fig)
-        frames.close()
+        if not finished:
+            frames.abort()
+            partial.unlink(missing_ok=True)
     return out
 
 

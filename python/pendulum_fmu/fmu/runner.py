@@ -31,6 +31,8 @@ from fmpy.fmi2 import FMU2Model, FMU2Slave
 
 from pendulum_fmu.errors import SimulationError
 from pendulum_fmu.fmu.fast_cs import FastStepper
+from pendulum_fmu.interrupt import deferred_interrupt
+from pendulum_fmu.interrupt import pending as interrupt_pending
 from pendulum_fmu.fmu.log import FmuLog, register, shared_callbacks, unique_instance_name, unregister
 from pendulum_fmu.spec import CS_SOLVERS, Method, Pendulum, TimeGrid
 
@@ -114,8 +116,14 @@ class FmuRunner:
     def __init__(self, fmu: Path) -> None:
         self.fmu = Path(fmu)
         self._tempdir = tempfile.mkdtemp(prefix="pendulum-fmu-")
-        self._unzipdir = extract(str(self.fmu), unzipdir=self._tempdir)
-        self.model_description = read_model_description(self._unzipdir, validate=False)
+        try:
+            self._unzipdir = extract(str(self.fmu), unzipdir=self._tempdir)
+            self.model_description = read_model_description(self._unzipdir, validate=False)
+        except BaseException as error:  # nothing left behind: not even on Ctrl-C
+            shutil.rmtree(self._tempdir, ignore_errors=True)
+            if isinstance(error, Exception):  # a broken archive or modelDescription.xml (lxml, KeyError, ...)
+                raise SimulationError(f"cannot read {self.fmu} as an FMU: {error}") from error
+            raise
         self.vr: dict[str, int] = {v.name: v.valueReference for v in self.model_description.modelVariables}
         self._slave: FMU2Slave | None = None
         self._model: FMU2Model | None = None
@@ -182,10 +190,11 @@ class FmuRunner:
         """The FMU's exact ``period`` for this problem, s (``inf`` on the separatrix)."""
         slave = self._fresh_slave()
         try:
-            value = self._initialize(slave, pendulum, DEFAULT_METHOD)
-            slave.terminate()
+            with deferred_interrupt():
+                value = self._initialize(slave, pendulum, DEFAULT_METHOD)
+                slave.terminate()
         except Exception as error:  # fmpy raises FMICallException, ctypes may raise OSError
-            raise SimulationError(f"the FMU failed to initialize {pendulum}: {error}") from error
+            raise SimulationError(f"the FMU failed to initialize {pendulum}: {self._reason(error)}") from error
         return value
 
     def run(self, pendulum: Pendulum, method: Method = DEFAULT_METHOD, grid: TimeGrid = DEFAULT_GRID) -> Trajectory:
@@ -211,13 +220,25 @@ class FmuRunner:
             If an FMI call fails.
         """
         try:
-            if method.interface == "CS":
-                return self._run_cs(pendulum, method, grid)
-            return self._run_me(pendulum, method, grid)
+            with deferred_interrupt():  # Ctrl-C inside a ctypes callback would be lost
+                if method.interface == "CS":
+                    return self._run_cs(pendulum, method, grid)
+                return self._run_me(pendulum, method, grid)
         except SimulationError:
             raise
+        except MemoryError:
+            raise SimulationError(f"{method.label} on {pendulum}: not enough memory for the output points "
+                                  "of this run: fewer periods or points per period") from None
         except Exception as error:  # fmpy raises FMICallException or a plain Exception
-            raise SimulationError(f"{method.label} failed on {pendulum}: {error}") from error
+            raise SimulationError(f"{method.label} failed on {pendulum}: {self._reason(error)}") from error
+
+    def _reason(self, error: Exception) -> str:
+        """The error's text, followed by what the FMU logged as its reason (one line)."""
+        text = str(error).strip() or type(error).__name__
+        logged = self._log.last_error()
+        if logged and logged not in text:
+            text = f"{text.rstrip('.')}: {logged}"
+        return " ".join(text.split())
 
     def _run_cs(self, pendulum: Pendulum, method: Method, grid: TimeGrid) -> Trajectory:
         start = time.perf_counter()
@@ -251,7 +272,7 @@ class FmuRunner:
             fmi_type="ModelExchange", solver="CVode", start_time=0.0, stop_time=times[-1],
             output_interval=interval, relative_tolerance=method.effective_tolerance,
             start_values=pendulum.start_values(), output=list(RECORDED), validate=False,
-            record_events=False)
+            record_events=False, step_finished=lambda *_: not interrupt_pending())
         wall = time.perf_counter() - start
         result = np.empty(recorded.size, dtype=[("time", float)] + [(name, float) for name in RECORDED])
         for name in result.dtype.names or ():
