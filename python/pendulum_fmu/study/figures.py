@@ -79,23 +79,20 @@ def plot_solutions(runs: list[Trajectory], field: str, title: str, path: Path) -
                     va="center", fontsize=10)
             ratio = run.period / t0
             ends = np.arange(1, int(cycles[-1] / ratio + 1e-9) + 1) * ratio
-            ax.plot(ends, np.full(ends.size, 112.0), "v", color="0.15", ms=6, clip_on=False,
-                    label="end of each period T" if run is runs[0] else None)
+            ax.plot(ends, np.full(ends.size, 112.0), "v", color="0.15", ms=6, clip_on=False)
             ax.set_ylim(-100, 100)
             ax.set_yticks([-90, 0, 90])
             ax.set_xticks(np.arange(0, math.ceil(cycles[-1]) + 1))
             ax.grid(alpha=0.45, axis="x", color="0.5", lw=0.8)
             ax.grid(alpha=0.2, axis="y")
-            ax.set_ylabel(r"$\theta$ (deg)")
-            ax.text(0.005, 0.04, rf"$\theta_0$ = {amplitude:g}$^\circ$:  T = {ratio:.4f} $T_0$", fontsize=11,
-                    transform=ax.transAxes, va="bottom",
-                    bbox={"boxstyle": "round,pad=0.2", "fc": "white", "ec": "none", "alpha": 0.85})
+            ax.set_ylabel(rf"$\theta_0$ = {amplitude:g}$^\circ$" + "\n" + r"$\theta$ (deg)")
+            ax.text(1.008, 0.5, f"T =\n{ratio:.4f} $T_0$", transform=ax.transAxes, va="center", fontsize=10.5)
         last = axes[-1, 0]
         last.set_xlim(0, max(run.result["time"][-1] / run.pendulum.small_angle_period for run in runs))
         last.set_xlabel(r"$t / T_0$,  $T_0 = 2\pi\sqrt{L/g}$ (grid lines every $T_0$)")
-        fig.legend(loc="upper right", frameon=False, fontsize=11)
-        fig.suptitle(title + r": the larger $\theta_0$, the later each swing ends", x=0.02, ha="left")
-        fig.tight_layout(rect=(0, 0, 0.975, 0.97))
+        fig.suptitle(title + "\n" + r"$\blacktriangledown$ end of each period T: the larger $\theta_0$, the further "
+                     r"behind the $T_0$ grid lines", fontsize=13)
+        fig.tight_layout(rect=(0, 0, 0.965, 1))
         fig.savefig(path, dpi=110)
         plt.close(fig)
 
@@ -147,14 +144,15 @@ def plot_comparison_grid(cs_runs: list[Trajectory], me_runs: list[Trajectory], p
         axes[0, 0].set_ylabel(r"$\theta$ (deg)")
         axes[1, 0].set_ylabel(r"$|\theta - \theta_{exact}|$ (rad)")
         top_handles, top_labels = axes[0, 0].get_legend_handles_labels()
-        axes[0, 0].legend(top_handles, top_labels, loc="lower left", fontsize=9, framealpha=0.9)
+        fig.legend(top_handles, top_labels, loc="upper center", bbox_to_anchor=(0.5, 0.955), ncol=2, frameon=False,
+                   fontsize=10)
         handles, labels = axes[1, 0].get_legend_handles_labels()
         if zeros_seen:
             handles.append(plt.Line2D([], [], ls="none", marker="|", ms=12, mew=1.5, color="0.3"))
             labels.append("error exactly 0 (ticks on the bottom edge: no place on a log axis)")
         fig.legend(handles, labels, loc="lower center", ncol=3, frameon=False, fontsize=10)
         fig.suptitle("Figure 5: numerical against exact (top), and the error over the whole run (bottom)")
-        fig.tight_layout(rect=(0, 0.05, 1, 1))
+        fig.tight_layout(rect=(0, 0.05, 1, 0.93))
         fig.savefig(path, dpi=110)
         plt.close(fig)
 
@@ -196,8 +194,8 @@ def plot_period_ratio(curve: PeriodCurve, seed_amplitudes_deg: tuple[float, ...]
         left.plot(marker_a[shown], measured[shown], **markers)
         hidden = marker_a[~shown]
         if hidden.size:
-            left.annotate(f"measured at {', '.join(f'{v:g}' for v in hidden)}$^\\circ$:\nT/$T_0$ > {top_ratio:g}, "
-                          "see the right panel", xy=(178, top_ratio), xytext=(112, 2.55), fontsize=10,
+            left.annotate(f"measured at {', '.join(f'{v:g}' for v in hidden)}$^\\circ$:\nT/$T_0$ > {top_ratio:g},\n"
+                          "see the right panel", xy=(178.5, top_ratio), xytext=(108, 3.0), fontsize=10,
                           ha="left", va="top", arrowprops={"arrowstyle": "->", "color": "0.3"})
         left.set_xlim(0, 181)
         left.set_xticks(range(0, 181, 30))
@@ -220,7 +218,7 @@ def plot_period_ratio(curve: PeriodCurve, seed_amplitudes_deg: tuple[float, ...]
                        label=r"asymptote $(2/\pi)\ln(8/(\pi-\theta_0))$")
         top = marker_a >= 150.0
         right.semilogx(180.0 - marker_a[top], measured[top], **markers)
-        right.invert_xaxis()
+        right.set_xlim(60.0, 3e-7)  # decreasing: theta0 grows to the right
         right.set_xlabel(r"$180^\circ - \theta_0$ (deg), log scale: $\theta_0$ grows to the right $\rightarrow$")
         right.set_ylabel(r"$T / T_0$")
         right.set_title(r"the approach to 180$^\circ$: T grows like a logarithm")
