@@ -71,7 +71,7 @@ def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="pendulum-fmu bench solvers",
         description=(__doc__ or "").split("Usage::")[0].replace("``", ""),
-        epilog="examples:\n  pendulum-fmu bench solvers --quick                # about 10 s\n"
+        epilog="examples:\n  pendulum-fmu bench solvers --quick                # about 30 s\n"
                "  pendulum-fmu bench solvers --out out/bench       # the full study, about 6 min on 2 cores\n"
                "  pendulum-fmu bench solvers --problems P1 --no-peers\n",
         formatter_class=_HelpFormatter)

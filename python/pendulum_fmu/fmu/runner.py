@@ -237,7 +237,8 @@ class FmuRunner:
         text = str(error).strip() or type(error).__name__
         logged = self._log.last_error()
         if logged and logged not in text:
-            text = f"{text.rstrip('.')}: {logged}"
+            call, _, rest = logged.partition(": ")  # "fmi2ExitInitializationMode: why", the call named already
+            text = f"{text.rstrip('.')}: {rest if rest and call in text else logged}"
         return " ".join(text.split())
 
     def _run_cs(self, pendulum: Pendulum, method: Method, grid: TimeGrid) -> Trajectory:

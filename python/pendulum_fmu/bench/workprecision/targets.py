@@ -83,12 +83,12 @@ def default_vs_dop853(points: list[Point], default: str,
     met = bool(rows) and not unreached and all(ratio < 1.0 for ratio in ratios)
     worst = max(ratios) if ratios else math.inf
     levels = f"{rows[0][0]:.0e}..{rows[-1][0]:.0e}" if rows else "no error level"
-    figure = (f"largest ratio {default} / DOP853 = {worst:.2f} (the cheaper of solve_ivp and ode dop853 at "
-              f"each level)" if ratios else "no level to compare")
+    figure = (f"largest ratio {default} / DOP853 = {worst:.2f}, the cheaper of solve_ivp and ode dop853 at "
+              f"each level" if ratios else "no level to compare")
     if unreached:
         figure += f"; {default} does not reach {', '.join(f'{level:.0e}' for level in unreached)}"
     if reachable_only:
-        figure += " (a quick run: judged only at the errors its tolerances reach)"
+        figure += "; a quick run: judged only at the errors its tolerances reach"
     return Verdict(f"T1: fewer evaluations than DOP853 at every error {levels} on P1", met, figure), rows
 
 
@@ -248,7 +248,8 @@ def default_near_separatrix(points: list[Point], default: str) -> tuple[Verdict,
     bounded = all(p.max_err <= max(p.tol, P2_FLOOR) for p in pts)
     strict = all(b < a for a, b in zip(errors, errors[1:]))
     sequence = ", ".join(f"{e:.1e}" for e in errors)
-    return Verdict("P2: default keeps |theta| < pi at every tol 1e-3..1e-12 and its error shrinks with tol "
+    tols = f"{pts[0].tol:.0e}..{pts[-1].tol:.0e}" if pts else "no tol"  # the tolerances run, not a fixed range
+    return Verdict(f"P2: default keeps |theta| < pi at every tol {tols} and its error shrinks with tol "
                    f"(down to the rounding floor {P2_FLOOR:.0e})",
                    not flips and bool(pts) and shrinking and bounded,
                    f"flips at {flips or 'no tolerance'}; errors {sequence} "
