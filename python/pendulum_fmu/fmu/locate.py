@@ -57,7 +57,7 @@ def fmu_problem(path: Path) -> str | None:
                 return f"{str(path)!r} is not an FMU: the archive has no modelDescription.xml"
             text = archive.read("modelDescription.xml")
     except (zipfile.BadZipFile, OSError, RuntimeError, ValueError) as error:  # RuntimeError: encrypted
-        return f"{str(path)!r} is not an FMU (not a readable zip archive: {error})"
+        return f"{str(path)!r} is not an FMU (not a zip archive: {error})"
     try:
         root = ElementTree.fromstring(text)
     except ElementTree.ParseError as error:
