@@ -246,6 +246,12 @@ def test_negative_numbers_are_values_not_options(installed: Path, folder: Path, 
     assert expected in line, line
 
 
+def test_negative_values_in_every_form_are_read(installed: Path, folder: Path) -> None:
+    done = _run(installed, ["simulate", "-a", "-1.4rad", "-w", "-1e-1", "-p", "1"], folder)
+    assert done.returncode == 0, done.stderr
+    assert "initial angle -80.2141 deg, omega0 -0.1 rad/s" in done.stdout, done.stdout
+
+
 def test_a_run_of_one_period_and_a_push_are_worded_right(installed: Path, folder: Path) -> None:
     one = _run(installed, ["simulate", "-p", "1"], folder)
     assert one.returncode == 0 and "(1 period);" in one.stdout and "amplitude 75 deg" in one.stdout, one.stdout

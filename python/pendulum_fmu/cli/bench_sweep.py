@@ -35,8 +35,13 @@ def configure(parser: argparse.ArgumentParser) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Run the benchmark and print runs/s per worker count and the speed-ups."""
+    from pendulum_fmu.fmu.runner import FmuRunner
+
     fmu = locate_fmu(args.fmu)
     points = bench_points(args.runs, args.periods)
+    with FmuRunner(fmu) as runner:  # a run that fails here would be timed as a fast one: refuse now
+        first = points[0]
+        runner.run(first.pendulum(), first.method(), first.grid())
     print(f"sweep of {len(points)} runs (amplitudes 1-179 deg from rest, {args.periods:g} periods, dopri5 "
           f"at 1e-8), median of {args.repeat}; FMU {fmu}")
     print(f"{'workers':>7}  {'runs':>6}  {'seconds':>8}  {'runs/s':>8}  {'speed-up':>8}  {'startup (s)':>11}")

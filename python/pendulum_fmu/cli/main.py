@@ -49,20 +49,27 @@ class _Formatter(argparse.RawDescriptionHelpFormatter):
         super().__init__(prog, max_help_position=34)
 
 
-NEGATIVE_NUMBER = re.compile(r"^-(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?$|^-(inf|infinity|nan)$", re.IGNORECASE)
-"""What argparse takes for a negative number, not an option: -1, -.5, -1e-6, -1.5E+3, -inf."""
+NEGATIVE_NUMBER = re.compile(r"^-(\d|\.\d)|^-(inf|infinity|nan)$", re.IGNORECASE)
+"""An argument that is a value, not an option: a minus, then a digit (-1, -.5, -1e-6, -1.4rad,
+-1:1:3, -10,20) or -inf / -nan. No option of this command starts with a digit."""
 
 
 class OneLineParser(argparse.ArgumentParser):
     """An argument parser whose errors are one line: what is wrong, and where the help is.
 
-    Negative numbers in exponent notation (``-t -1e-6``) are values, as ``-1`` is: argparse's
-    own pattern knows only ``-1`` and ``-1.5`` and would say "expected one argument".
+    Negative numbers are values (``-t -1e-6``, ``-a -1.4rad``, ``-w -1:1:3``), as ``-1`` is:
+    argparse's own pattern knows only ``-1`` and ``-1.5`` and says "expected one argument".
     """
 
     def __init__(self, *args: Any, **kwargs: Any) -> None:
         super().__init__(*args, **kwargs)
         self._negative_number_matcher = NEGATIVE_NUMBER
+
+    def _parse_optional(self, arg_string: str) -> Any:
+        """A negative number is a value even where it starts like an option (``-inf`` like ``-i nf``)."""
+        if NEGATIVE_NUMBER.match(arg_string) and not self._has_negative_number_optionals:
+            return None
+        return super()._parse_optional(arg_string)
 
     def error(self, message: str) -> NoReturn:
         """Print ``PROG: error: MESSAGE (see PROG --help)`` to stderr and exit with 2."""
