@@ -299,3 +299,17 @@ def test_bench_solvers_quick_passes_with_an_honest_report(tmp_path: Path) -> Non
     ratio = float(re.search(r"= ([\d.]+)", t1)[1])  # type: ignore[index]
     assert ratio < 1.0 and "quick run" in t1, t1
     assert "| NO |" not in report, report
+
+
+def test_a_skip_reason_names_only_the_missing_tool() -> None:
+    import sys
+
+    from platform_runs import Target
+
+    zig_here = Target("win64 (zig)", (sys.executable, "cc"), ("no-such-wine-here",), ("ziglang", "wine64"))
+    assert zig_here.missing() == ("no-such-wine-here not found: install wine64 "
+                                  "(sudo bash scripts/install-system-packages.sh)")
+    neither = Target("win64 (zig)", ("no-such-zig-here",), ("no-such-wine-here",), ("ziglang", "wine64"))
+    assert neither.missing() == ("no-such-zig-here and no-such-wine-here not found: install ziglang and wine64 "
+                                 "(python/requirements.lock; sudo bash scripts/install-system-packages.sh)")
+    assert Target("here", (sys.executable,), (sys.executable,), ("a", "b")).missing() is None

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import math
 import os
+import sys
 from pathlib import Path
 from typing import Any
 
@@ -16,6 +17,8 @@ from pendulum_fmu.spec import Method, Pendulum, StopUnit, TimeGrid
 
 MAX_FRAMES = 1500
 """Most frames an animation may have (a minute at 25 frames/s; a GIF is assembled in memory)."""
+SLOW_FRAMES = 250
+"""Films of more frames say so before they are drawn (about 100 frames a second here)."""
 
 
 def _frame_count(grid: TimeGrid, period: float, pendulum: Pendulum) -> int:
@@ -209,5 +212,7 @@ def animate(fmu: Path, pendulum: Pendulum, method: Method, stop: float, unit: St
             raise UsageError(argument, f"the animation would have {frames} frames, at most {MAX_FRAMES} are "
                                        "allowed: shorten it, lower --fps or raise --speed")
         trajectory = runner.run(pendulum, method, grid)
+    if frames > SLOW_FRAMES:
+        print(f"animate: drawing {frames} frames into {out} ...", file=sys.stderr, flush=True)
     render(trajectory, out, fps)
     return trajectory
