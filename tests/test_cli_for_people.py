@@ -113,7 +113,11 @@ def test_another_models_fmu_is_one_line_in_every_command(installed: Path, bad_fm
         assert done.returncode == 1 and "Traceback" not in done.stderr, done.stderr
         assert "every run failed" in done.stderr
     else:
-        _one_clean_line(done, (1, 2))
+        line = _one_clean_line(done, (1, 2))
+        if argv[0] != "bench":  # the benchmarks read the model description themselves: their one line
+            # names the missing variable or says "unexpected" until a model that is not this Pendulum is
+            # refused by name (issue 19, defect 5)
+            assert "unexpected" not in line and "BouncingBall.so" in line, line
     _no_leftovers(folder)
 
 

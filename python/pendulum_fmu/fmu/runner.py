@@ -188,9 +188,9 @@ class FmuRunner:
     # -- runs --------------------------------------------------------------------------------
     def period(self, pendulum: Pendulum) -> float:
         """The FMU's exact ``period`` for this problem, s (``inf`` on the separatrix)."""
-        slave = self._fresh_slave()
         try:
             with deferred_interrupt():
+                slave = self._fresh_slave()  # loading the binary may fail too (another model, another platform)
                 value = self._initialize(slave, pendulum, DEFAULT_METHOD)
                 slave.terminate()
         except Exception as error:  # fmpy raises FMICallException, ctypes may raise OSError
