@@ -23,7 +23,7 @@ SECONDS_PER_POINT = 3e-6
 """Wall time per output point of a Co-Simulation run at the default tolerance (rounded up)."""
 BYTES_PER_SWEEP_RUN = 4096
 """Memory per sweep run kept by the client: the grid point, its row (about 25 values) and the journal's copy."""
-SECONDS_PER_SWEEP_RUN = 2e-3
+SECONDS_PER_SWEEP_RUN = 3e-3
 """Wall time per sweep run besides its points: the reset, initialization and the row."""
 MEMORY_SHARE = 0.5
 """Share of the memory available now that one command may plan to use."""
