@@ -195,7 +195,8 @@ def test_an_interrupted_animation_leaves_no_file(installed: Path, folder: Path) 
     os.killpg(process.pid, signal.SIGINT)
     _, stderr = process.communicate(timeout=60)
     assert process.returncode == 130, stderr
-    assert [line for line in stderr.splitlines() if line.strip()] == ["pendulum-fmu animate: interrupted"]
+    assert [line for line in stderr.splitlines() if line.strip()] == [
+        "animate: drawing 1379 frames into long.gif ...", "pendulum-fmu animate: interrupted"], stderr
     assert list(folder.iterdir()) == [], "an interrupted animation left a file"
     _no_leftovers(folder)
 
