@@ -30,6 +30,17 @@ def _note(signum: int, frame: FrameType | None) -> None:
     _flag[0] = True
 
 
+def _sticky(signum: int, frame: FrameType | None) -> None:
+    """The command's SIGINT handler outside runs: raise ``KeyboardInterrupt`` and remember it.
+
+    Should a library swallow the exception (a bare ``except:`` while a module is imported),
+    the flag stays set and the next run (:func:`deferred_interrupt`) or :func:`check`
+    raises it again: the interrupt is not lost.
+    """
+    _flag[0] = True
+    raise KeyboardInterrupt
+
+
 def flag() -> list[bool]:
     """The flag itself, ``[bool]``, for a loop that tests ``flag[0]`` between steps."""
     return _flag
@@ -47,6 +58,11 @@ def check() -> None:
         raise KeyboardInterrupt
 
 
+def forget() -> None:
+    """Clear the flag: the interrupt it stands for has been reported."""
+    _flag[0] = False
+
+
 @contextmanager
 def deferred_interrupt() -> Iterator[None]:
     """SIGINT inside the block sets a flag; leaving the block raises it as ``KeyboardInterrupt``.
@@ -61,21 +77,22 @@ def deferred_interrupt() -> Iterator[None]:
         On leaving the block when SIGINT arrived in it, in place of any exception the body
         raised (a solver that stopped because of the interrupt is not a failure).
     """
+    previous = signal.getsignal(signal.SIGINT)
     if threading.current_thread() is not threading.main_thread() \
-            or signal.getsignal(signal.SIGINT) is not signal.default_int_handler:
+            or (previous is not signal.default_int_handler and previous is not _sticky):
         yield
         return
-    _flag[0] = False
+    check()  # an interrupt that arrived before, and was swallowed on its way
     signal.signal(signal.SIGINT, _note)
     try:
         yield
     except BaseException:
-        signal.signal(signal.SIGINT, signal.default_int_handler)
+        signal.signal(signal.SIGINT, previous)
         if _flag[0]:
             _flag[0] = False
             raise KeyboardInterrupt from None
         raise
-    signal.signal(signal.SIGINT, signal.default_int_handler)
+    signal.signal(signal.SIGINT, previous)
     check()
 
 
@@ -84,7 +101,9 @@ def default_dispositions() -> None:
 
     A program started in the background by a non-interactive shell inherits SIGINT as
     ignored, and Python then installs no handler: such a command could not be stopped with
-    Ctrl-C or ``kill -INT``. Called first thing by the command line (main thread only).
+    Ctrl-C or ``kill -INT``. The handler installed also remembers the interrupt (see
+    ``_sticky``). Called by the command line as soon as its package is imported, before
+    the heavy imports, and again by ``main`` (main thread only).
     """
     if threading.current_thread() is threading.main_thread():
-        signal.signal(signal.SIGINT, signal.default_int_handler)
+        signal.signal(signal.SIGINT, _sticky)

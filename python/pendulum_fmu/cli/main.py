@@ -18,7 +18,9 @@ from typing import Any, NoReturn
 from pendulum_fmu import __version__
 from pendulum_fmu.cli import animate, bench, compare, simulate, study, sweep
 from pendulum_fmu.errors import BuildError, SimulationError, UsageError
+from pendulum_fmu.interrupt import check as check_interrupt
 from pendulum_fmu.interrupt import default_dispositions
+from pendulum_fmu.interrupt import forget as forget_interrupt
 
 COMMANDS: tuple[ModuleType, ...] = (simulate, compare, study, animate, sweep, bench)
 
@@ -116,8 +118,10 @@ def main(argv: list[str] | None = None) -> int:
     default_dispositions()  # Ctrl-C stops the command even if SIGINT was inherited as ignored
     arguments = sys.argv[1:] if argv is None else list(argv)
     try:
+        check_interrupt()  # one that came during the imports and was swallowed there
         forwarded = bench.forward(arguments)
     except KeyboardInterrupt:
+        forget_interrupt()
         print(f"\npendulum-fmu {' '.join(arguments[:2])}: interrupted", file=sys.stderr)
         return 130
     except Exception as error:  # noqa: BLE001 -- one line, never a traceback
@@ -125,10 +129,16 @@ def main(argv: list[str] | None = None) -> int:
         return 1
     if forwarded is not None:
         return forwarded
-    parser = build_parser()
-    args = parser.parse_args(arguments)
+    try:
+        parser = build_parser()
+        args = parser.parse_args(arguments)
+    except KeyboardInterrupt:
+        forget_interrupt()
+        print("\npendulum-fmu: interrupted", file=sys.stderr)
+        return 130
     subparser: argparse.ArgumentParser = args.subparser
     try:
+        check_interrupt()
         return int(args.handler(args))
     except UsageError as error:
         subparser.error(str(error))  # one line: "error: argument ...", exit 2
@@ -140,6 +150,7 @@ def main(argv: list[str] | None = None) -> int:
         print(f"{subparser.prog}: error: {error.strerror or error}{where}", file=sys.stderr)
         return 1
     except KeyboardInterrupt:
+        forget_interrupt()
         hint = "; run the same command again to resume" if args.command == "sweep" else ""
         print(f"\n{subparser.prog}: interrupted{hint}", file=sys.stderr)
         return 130
