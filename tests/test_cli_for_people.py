@@ -167,9 +167,10 @@ def test_a_driver_that_is_not_executable_is_one_line(installed: Path, folder: Pa
                     "give the C driver tests/c/bench_solvers of a CMake build")
 
 
-@pytest.mark.parametrize("delay", [1.0, 3.0])
+@pytest.mark.parametrize("delay", [0.5, 1.0, 3.0])
 def test_ctrl_c_during_a_long_study_is_one_line_and_exit_130(installed: Path, folder: Path, delay: float) -> None:
-    """SIGINT inside an FMU call (a ctypes callback) is neither lost nor a solver failure."""
+    """SIGINT inside an FMU call (a ctypes callback) is neither lost nor a solver failure; at 0.5 s
+    the command is still importing its modules (about 0.5 s), and says so in one line as well."""
     process = subprocess.Popen([str(installed), "study", "--periods", "1000"], cwd=folder,
                                env=_env(folder.parent / "tmp"), stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                                text=True, start_new_session=True,
@@ -182,7 +183,8 @@ def test_ctrl_c_during_a_long_study_is_one_line_and_exit_130(installed: Path, fo
     assert process.returncode == 130, stderr
     assert "Traceback" not in stderr and "Exception ignored" not in stderr and "failed" not in stderr, stderr
     lines = [line for line in stderr.splitlines() if line.strip() and not line.startswith("study: run ")]
-    assert lines == ["pendulum-fmu study: interrupted"], stderr
+    assert lines == ["pendulum-fmu study: interrupted"] or (delay < 1 and lines == ["pendulum-fmu: interrupted"]), \
+        stderr
     assert not (folder / "out" / "study" / "report.html").exists()
     _no_leftovers(folder)
 
