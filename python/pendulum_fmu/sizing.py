@@ -12,9 +12,13 @@ from __future__ import annotations
 import math
 import os
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from pendulum_fmu.errors import UsageError
-from pendulum_fmu.spec import TimeGrid
+from pendulum_fmu.spec import Pendulum, TimeGrid
+
+if TYPE_CHECKING:
+    from pendulum_fmu.fmu.runner import FmuRunner
 
 BYTES_PER_POINT = 256
 """Memory per output point of one run: the recorded values, the result table, the time list
@@ -164,7 +168,7 @@ def check_sweep(runs: int, points_per_run: int, workers: int, memory: int | None
     return seconds
 
 
-def plan_run(runner: object, pendulum: object, grid: TimeGrid, argument: str = "-T/--stop-time",
+def plan_run(runner: FmuRunner, pendulum: Pendulum, grid: TimeGrid, argument: str = "-T/--stop-time",
              what: str = "simulating") -> int:
     """Check one run's size before it starts, and say so when it will take a while.
 
@@ -193,10 +197,8 @@ def plan_run(runner: object, pendulum: object, grid: TimeGrid, argument: str = "
     """
     import sys
 
-    from pendulum_fmu.fmu.runner import FmuRunner, reference_period
-    from pendulum_fmu.spec import Pendulum
+    from pendulum_fmu.fmu.runner import reference_period  # fmpy: imported when a run is planned
 
-    assert isinstance(runner, FmuRunner) and isinstance(pendulum, Pendulum)
     points = grid_points(grid, reference_period(runner.period(pendulum), pendulum))
     seconds = check_run(points, argument)
     if seconds > SLOW_SECONDS:
