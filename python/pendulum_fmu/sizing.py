@@ -128,7 +128,8 @@ def check_run(points: int, argument: str = "-T/--stop-time", memory: int | None 
     return seconds
 
 
-def check_sweep(runs: int, points_per_run: int, workers: int, memory: int | None = None) -> float:
+def check_sweep(runs: int, points_per_run: int, workers: int, memory: int | None = None,
+                runs_argument: str = "-a/--amplitudes", fewer: str = "use fewer values on its axes") -> float:
     """Refuse a sweep that does not fit in memory or in :data:`MAX_SECONDS`; return its estimated seconds.
 
     Parameters
@@ -141,6 +142,8 @@ def check_sweep(runs: int, points_per_run: int, workers: int, memory: int | None
         Worker threads that share the runs (and each hold one run's points).
     memory : int, optional
         Bytes available (default :func:`available_memory`).
+    runs_argument, fewer : str
+        The option a refusal for too many runs names, and what it advises.
 
     Raises
     ------
@@ -157,14 +160,14 @@ def check_sweep(runs: int, points_per_run: int, workers: int, memory: int | None
     need = runs * BYTES_PER_SWEEP_RUN
     if need > memory * MEMORY_SHARE:
         fits = int(memory * MEMORY_SHARE / BYTES_PER_SWEEP_RUN)
-        raise UsageError("-a/--amplitudes", f"this sweep has {quantity(runs)} runs, about {size_text(need)} of "
-                                            f"memory for their rows, and {size_text(memory)} is available: use "
-                                            f"fewer values on its axes (at most about {quantity(fits)} runs fit)")
+        raise UsageError(runs_argument, f"this sweep has {quantity(runs)} runs, about {size_text(need)} of "
+                                        f"memory for their rows, and {size_text(memory)} is available: {fewer} "
+                                        f"(at most about {quantity(fits)} runs fit)")
     seconds = runs * (SECONDS_PER_SWEEP_RUN + points_per_run * SECONDS_PER_POINT) / max(workers, 1)
     if seconds > MAX_SECONDS:
-        raise UsageError("-a/--amplitudes", f"this sweep has {quantity(runs)} runs of {quantity(points_per_run)} "
-                                            f"points, about {duration_text(seconds)} on {workers} workers: use "
-                                            "fewer values on its axes, fewer periods or points per period")
+        raise UsageError(runs_argument, f"this sweep has {quantity(runs)} runs of {quantity(points_per_run)} "
+                                        f"points, about {duration_text(seconds)} on {workers} workers: {fewer}, "
+                                        "fewer periods or points per period")
     return seconds
 
 

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import sys
 import statistics
 
 import pendulum_fmu.bench.sweep as bench_sweep
@@ -35,8 +36,16 @@ def configure(parser: argparse.ArgumentParser) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Run the benchmark and print runs/s per worker count and the speed-ups."""
-    from pendulum_fmu.fmu.runner import FmuRunner
+    import math
 
+    from pendulum_fmu.fmu.runner import FmuRunner
+    from pendulum_fmu.sizing import SLOW_SECONDS, check_sweep, duration_text
+
+    # Every timed sweep, on the fewest workers asked for: refused at once past a week or the memory.
+    seconds = check_sweep(args.runs * args.repeat * len(args.workers), math.ceil(args.periods * 50) + 1,
+                          min(args.workers), runs_argument="--runs", fewer="fewer --runs, --repeat or --workers counts")
+    if seconds > SLOW_SECONDS:
+        print(f"bench sweep: about {duration_text(seconds)} of sweeps ...", file=sys.stderr, flush=True)
     fmu = locate_fmu(args.fmu)
     points = bench_points(args.runs, args.periods)
     with FmuRunner(fmu) as runner:  # a run that fails here would be timed as a fast one: refuse now
