@@ -2,10 +2,12 @@
 
 from __future__ import annotations
 
+import hashlib
 import os
 import shutil
 import subprocess
 import sys
+import zipfile
 from pathlib import Path
 
 import pytest
@@ -73,3 +75,33 @@ def pytest_runtest_makereport(item: pytest.Item, call: pytest.CallInfo[None]):  
     if os.environ.get("PENDULUM_NO_SKIP") == "1" and report.skipped:
         report.outcome = "failed"
         report.longrepr = f"skipped, but PENDULUM_NO_SKIP=1 requires every test to run: {report.longrepr}"
+
+
+LOCK = REPO / "python" / "requirements.lock"
+VENV = REPO / "build" / "wheel-venv"
+
+
+def _run_quietly(command: list[str], cwd: Path) -> subprocess.CompletedProcess[str]:
+    return subprocess.run(command, cwd=cwd, capture_output=True, text=True, timeout=600, check=False)
+
+
+@pytest.fixture(scope="session")
+def installed(built_wheel: Path) -> Path:
+    """The ``pendulum-fmu`` program of a fresh environment with the wheel installed."""
+    wheel = built_wheel
+    assert wheel.name.endswith("-py3-none-any.whl")
+    names = zipfile.ZipFile(wheel).namelist()
+    assert "pendulum_fmu/Pendulum.fmu" in names and "pendulum_fmu/lib/linux64/libpendulum_exact.so" in names
+    assert "pendulum_fmu/fmi3/Pendulum.fmu" in names and "pendulum_fmu/lib/linux64/libpendulum_driver.so" in names
+    stamp = hashlib.sha256(LOCK.read_bytes()).hexdigest()
+    python = VENV / "bin" / "python"
+    stamp_file = VENV / ".lock"
+    if not python.is_file() or not stamp_file.is_file() or stamp_file.read_text() != stamp:
+        created = _run_quietly([sys.executable, "-m", "venv", "--clear", str(VENV)], REPO)
+        assert created.returncode == 0, created.stderr
+        deps = _run_quietly([str(python), "-m", "pip", "install", "-q", "-r", str(LOCK)], REPO)
+        assert deps.returncode == 0, deps.stderr[-3000:]
+        stamp_file.write_text(stamp)
+    done = _run_quietly([str(python), "-m", "pip", "install", "-q", "--no-deps", "--force-reinstall", str(wheel)], REPO)
+    assert done.returncode == 0, done.stderr[-3000:]
+    return VENV / "bin" / "pendulum-fmu"

@@ -44,27 +44,32 @@ class Target:
     name: str
     compiler: tuple[str, ...]
     runner: tuple[str, ...]
-    tools_package: str
-    """Where ``compiler`` and the runner come from (Debian packages)."""
+    packages: tuple[str, str]
+    """Where the compiler and the runner come from: (compiler's package, runner's package)."""
     env: tuple[tuple[str, str], ...] = ()
     """Extra environment of the compiler."""
 
     def missing(self) -> str | None:
-        """Why this target cannot run here (with the install command), or None."""
-        for tool in (self.compiler[0], *self.runner[:1]):
-            if shutil.which(tool) is None:
-                return f"{tool} not found: install {self.tools_package} ({INSTALL})"
-        return None
+        """Why this target cannot run here, naming only the tools that are missing and their
+        packages (with the install command), or None."""
+        tools = [(self.compiler[0], self.packages[0])] + [(self.runner[0], self.packages[1])] * bool(self.runner)
+        absent = [(tool, package) for tool, package in tools if shutil.which(tool) is None]
+        if not absent:
+            return None
+        sources = ["python/requirements.lock" if package == "ziglang" else INSTALL for _, package in absent]
+        where = "; ".join(dict.fromkeys(sources))
+        return (f"{' and '.join(tool for tool, _ in absent)} not found: install "
+                f"{' and '.join(package for _, package in absent)} ({where})")
 
     @property
     def windows(self) -> bool:
         return self.runner[:1] == ("wine",)
 
 
-WIN64 = Target("win64", ("x86_64-w64-mingw32-gcc",), ("wine",), "mingw-w64 wine64")
+WIN64 = Target("win64", ("x86_64-w64-mingw32-gcc",), ("wine",), ("mingw-w64", "wine64"))
 AARCH64 = Target("aarch64-linux", ("aarch64-linux-gnu-gcc",), ("qemu-aarch64", "-L", "/usr/aarch64-linux-gnu"),
-                 "gcc-aarch64-linux-gnu libc6-dev-arm64-cross qemu-user")
-LINUX64 = Target("linux64", ("gcc",), (), "gcc")
+                 ("gcc-aarch64-linux-gnu libc6-dev-arm64-cross", "qemu-user"))
+LINUX64 = Target("linux64", ("gcc",), (), ("gcc", ""))
 
 
 def zig_win64(zig_cache: Path) -> Target:
@@ -77,7 +82,7 @@ def zig_win64(zig_cache: Path) -> Target:
         zig = "zig"
     cache = str(zig_cache)
     return Target("win64 (zig)", (zig, "cc", "-target", "x86_64-windows-gnu", "-s"), ("wine",),
-                  "ziglang (python/requirements.lock) and wine64",
+                  ("ziglang", "wine64"),
                   (("ZIG_GLOBAL_CACHE_DIR", cache), ("ZIG_LOCAL_CACHE_DIR", cache)))
 
 

@@ -10,14 +10,22 @@ import sys
 import time
 from pathlib import Path
 
+import pytest
 
-def test_ctrl_c_prints_one_line_and_leaves_the_finished_runs(fmu_path: Path, tmp_path: Path) -> None:
+
+@pytest.mark.parametrize("inherited", [signal.SIG_DFL, signal.SIG_IGN], ids=["SIGINT default", "SIGINT ignored"])
+def test_ctrl_c_prints_one_line_and_leaves_the_finished_runs(fmu_path: Path, tmp_path: Path,
+                                                             inherited: signal.Handlers) -> None:
+    """Whatever SIGINT disposition the command inherits: set here explicitly, not taken from
+    how pytest was started (``bash scripts/test.sh &`` from a script hands SIGINT on ignored,
+    and the command must still stop on it: it sets its own disposition)."""
     out = tmp_path / "sweep"
     command = [sys.executable, "-m", "pendulum_fmu", "sweep", "-a", "1:179:3000", "-p", "20", "-j", "2", "-q",
                "-o", str(out), "--fmu", str(fmu_path)]
     # A terminal's Ctrl-C goes to the whole process group: the command's own session stands for it.
     process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
-                               start_new_session=True, cwd=tmp_path)
+                               start_new_session=True, cwd=tmp_path,
+                               preexec_fn=lambda: signal.signal(signal.SIGINT, inherited))
     journal = out / "runs.journal.csv"
     deadline = time.monotonic() + 120
     while time.monotonic() < deadline and (not journal.is_file() or journal.read_text().count("\n") < 3):

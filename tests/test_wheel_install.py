@@ -10,46 +10,19 @@ and library inside the installed package and write under that folder.
 
 from __future__ import annotations
 
-import hashlib
 import os
 import shutil
 import subprocess
-import sys
-import zipfile
 from pathlib import Path
 
 import pytest
 
 REPO = Path(__file__).resolve().parents[1]
-LOCK = REPO / "python" / "requirements.lock"
-VENV = REPO / "build" / "wheel-venv"
 
 
 def _run(command: list[str], cwd: Path, env: dict[str, str] | None = None,
          timeout: float = 600) -> subprocess.CompletedProcess[str]:
     return subprocess.run(command, cwd=cwd, env=env, capture_output=True, text=True, timeout=timeout, check=False)
-
-
-@pytest.fixture(scope="module")
-def installed(built_wheel: Path) -> Path:
-    """The ``pendulum-fmu`` program of a fresh environment with the wheel installed."""
-    wheel = built_wheel
-    assert wheel.name.endswith("-py3-none-any.whl")
-    names = zipfile.ZipFile(wheel).namelist()
-    assert "pendulum_fmu/Pendulum.fmu" in names and "pendulum_fmu/lib/linux64/libpendulum_exact.so" in names
-    assert "pendulum_fmu/fmi3/Pendulum.fmu" in names and "pendulum_fmu/lib/linux64/libpendulum_driver.so" in names
-    stamp = hashlib.sha256(LOCK.read_bytes()).hexdigest()
-    python = VENV / "bin" / "python"
-    stamp_file = VENV / ".lock"
-    if not python.is_file() or not stamp_file.is_file() or stamp_file.read_text() != stamp:
-        created = _run([sys.executable, "-m", "venv", "--clear", str(VENV)], REPO)
-        assert created.returncode == 0, created.stderr
-        deps = _run([str(python), "-m", "pip", "install", "-q", "-r", str(LOCK)], REPO)
-        assert deps.returncode == 0, deps.stderr[-3000:]
-        stamp_file.write_text(stamp)
-    done = _run([str(python), "-m", "pip", "install", "-q", "--no-deps", "--force-reinstall", str(wheel)], REPO)
-    assert done.returncode == 0, done.stderr[-3000:]
-    return VENV / "bin" / "pendulum-fmu"
 
 
 COMMANDS: list[tuple[list[str], list[str]]] = [  # arguments, files it must write under the folder

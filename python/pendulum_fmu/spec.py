@@ -87,6 +87,11 @@ class Pendulum:
         """The FMU's start values for this problem, by variable name."""
         return {"L": self.length, "g": self.gravity, "theta": self.amplitude_rad, "omega": self.omega0}
 
+    def __str__(self) -> str:
+        """``the pendulum at theta0 = 75 deg, omega0 = 0 rad/s, L = 1 m, g = 9.81 m/s^2`` (for messages)."""
+        return (f"the pendulum at theta0 = {self.amplitude_deg:.9g} deg, omega0 = {self.omega0:.9g} rad/s, "
+                f"L = {self.length:.9g} m, g = {self.gravity:.9g} m/s^2")
+
 
 @dataclass(frozen=True)
 class Method:

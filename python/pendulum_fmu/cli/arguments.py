@@ -178,8 +178,10 @@ def output_folder(text: str) -> Path:
 
 
 def existing_file(text: str) -> Path:
-    """A type for a file that must exist."""
+    """A type for a file that must exist (a folder is named as one)."""
     path = Path(text)
+    if path.is_dir():
+        raise argparse.ArgumentTypeError(f"{text!r} is a folder: give a file")
     if not path.is_file():
         raise argparse.ArgumentTypeError(f"no such file: {text!r}")
     return path
@@ -292,6 +294,22 @@ def grid_from(args: argparse.Namespace) -> TimeGrid:
         return TimeGrid(args.stop_time, "s", args.points_per_period)
     periods = args.default_periods if args.periods is None else args.periods
     return TimeGrid(periods, "periods", args.points_per_period)
+
+
+_ROLE = re.compile(r":[a-z]+:`(~?)([^`<]*?)(?:\s*<([^>]*)>)?`")
+"""A Sphinx cross-reference: ``:class:`~pkg.mod.Name```, ``:func:`text <target>```."""
+
+
+def plain_text(doc: str) -> str:
+    """A docstring as ``--help`` shows it: Sphinx roles and double back-quotes become plain words.
+
+    ``:class:`~pendulum_fmu.fmu.runner.FmuRunner``` becomes ``FmuRunner`` (the ``~`` keeps the
+    last name), ``:mod:`pendulum_fmu.bench.speed``` stays a dotted name, ````x```` becomes ``x``.
+    """
+    def word(match: re.Match[str]) -> str:
+        text = match[2].strip()
+        return text.rsplit(".", 1)[-1] if match[1] else text
+    return _ROLE.sub(word, doc).replace("``", "")
 
 
 def describe(values: Sequence[float], unit: str = "") -> str:

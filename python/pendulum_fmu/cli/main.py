@@ -10,14 +10,18 @@ a failed build or simulation prints its reason and exits with 1; neither shows a
 from __future__ import annotations
 
 import argparse
+import re
 import sys
 from types import ModuleType
-from typing import NoReturn
+from typing import Any, NoReturn
 
 from pendulum_fmu import __version__
 from pendulum_fmu.cli import animate, bench, compare, judge, simulate, study, sweep
 from pendulum_fmu.cli.arguments import resolve_fmu
 from pendulum_fmu.errors import BuildError, SimulationError, UsageError
+from pendulum_fmu.interrupt import check as check_interrupt
+from pendulum_fmu.interrupt import default_dispositions
+from pendulum_fmu.interrupt import forget as forget_interrupt
 
 COMMANDS: tuple[ModuleType, ...] = (simulate, compare, study, animate, sweep, bench, judge)
 
@@ -48,8 +52,27 @@ class _Formatter(argparse.RawDescriptionHelpFormatter):
         super().__init__(prog, max_help_position=34)
 
 
+NEGATIVE_NUMBER = re.compile(r"^-(\d|\.\d)|^-(inf|infinity|nan)$", re.IGNORECASE)
+"""An argument that is a value, not an option: a minus, then a digit (-1, -.5, -1e-6, -1.4rad,
+-1:1:3, -10,20) or -inf / -nan. No option of this command starts with a digit."""
+
+
 class OneLineParser(argparse.ArgumentParser):
-    """An argument parser whose errors are one line: what is wrong, and where the help is."""
+    """An argument parser whose errors are one line: what is wrong, and where the help is.
+
+    Negative numbers are values (``-t -1e-6``, ``-a -1.4rad``, ``-w -1:1:3``), as ``-1`` is:
+    argparse's own pattern knows only ``-1`` and ``-1.5`` and says "expected one argument".
+    """
+
+    def __init__(self, *args: Any, **kwargs: Any) -> None:
+        super().__init__(*args, **kwargs)
+        self._negative_number_matcher = NEGATIVE_NUMBER
+
+    def _parse_optional(self, arg_string: str) -> Any:
+        """A negative number is a value even where it starts like an option (``-inf`` like ``-i nf``)."""
+        if NEGATIVE_NUMBER.match(arg_string) and not self._has_negative_number_optionals:
+            return None
+        return super()._parse_optional(arg_string)
 
     def error(self, message: str) -> NoReturn:
         """Print ``PROG: error: MESSAGE (see PROG --help)`` to stderr and exit with 2."""
@@ -71,6 +94,14 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
+def _unexpected(error: Exception) -> str:
+    """One line for an error no check foresaw: its kind, its text, and a request to report it."""
+    if isinstance(error, OSError) and error.strerror:
+        return f"{error.strerror}" + (f": {error.filename!r}" if error.filename else "")
+    text = " ".join(str(error).split()) or "no message"
+    return f"{type(error).__name__}: {text} (unexpected: please report it with the command that caused it)"
+
+
 def main(argv: list[str] | None = None) -> int:
     """Run ``pendulum-fmu COMMAND [options]``.
 
@@ -85,15 +116,31 @@ def main(argv: list[str] | None = None) -> int:
         The exit code: 0 done, 1 a build or run failed, 2 a bad argument, 130 interrupted.
         argparse's own errors and ``--help`` leave through ``SystemExit`` as usual.
     """
+    default_dispositions()  # Ctrl-C stops the command even if SIGINT was inherited as ignored
     arguments = sys.argv[1:] if argv is None else list(argv)
-    forwarded = bench.forward(arguments)
+    try:
+        check_interrupt()  # one that came during the imports and was swallowed there
+        forwarded = bench.forward(arguments)
+    except KeyboardInterrupt:
+        forget_interrupt()
+        print(f"\npendulum-fmu {' '.join(arguments[:2])}: interrupted", file=sys.stderr)
+        return 130
+    except Exception as error:  # noqa: BLE001 -- one line, never a traceback
+        print(f"pendulum-fmu {' '.join(arguments[:2])}: error: {_unexpected(error)}", file=sys.stderr)
+        return 1
     if forwarded is not None:
         return forwarded
-    parser = build_parser()
-    args = parser.parse_args(arguments)
+    try:
+        parser = build_parser()
+        args = parser.parse_args(arguments)
+    except KeyboardInterrupt:
+        forget_interrupt()
+        print("\npendulum-fmu: interrupted", file=sys.stderr)
+        return 130
     subparser: argparse.ArgumentParser = args.subparser
     try:
         resolve_fmu(args)
+        check_interrupt()
         return int(args.handler(args))
     except UsageError as error:
         subparser.error(str(error))  # one line: "error: argument ...", exit 2
@@ -105,7 +152,11 @@ def main(argv: list[str] | None = None) -> int:
         print(f"{subparser.prog}: error: {error.strerror or error}{where}", file=sys.stderr)
         return 1
     except KeyboardInterrupt:
+        forget_interrupt()
         hint = "; run the same command again to resume" if args.command == "sweep" else ""
         print(f"\n{subparser.prog}: interrupted{hint}", file=sys.stderr)
         return 130
+    except Exception as error:  # noqa: BLE001 -- the promise is one line, never a traceback
+        print(f"{subparser.prog}: error: {_unexpected(error)}", file=sys.stderr)
+        return 1
     return 0  # not reached: subparser.error exits

@@ -43,7 +43,11 @@ def run(args: argparse.Namespace) -> int:
 
     fmu = locate_fmu(args.fmu)
     make_output_folder(args.out)
-    outcome = write_study(fmu, args.out, args.periods)
+    def progress(line: str) -> None:
+        print(f"study: {line} ...", file=sys.stderr, flush=True)
+
+    # About 1 s at the default 10 periods; longer studies say what they are doing.
+    outcome = write_study(fmu, args.out, args.periods, progress if args.periods > 20 else None)
     print(outcome.table)
     if outcome.warnings:
         print(f"warning: the FMU warned during the study (column fmu_warning of runs.csv): "

@@ -8,10 +8,21 @@ from pendulum_fmu.fmu.runner import Trajectory, reference_period
 
 
 def pendulum_text(trajectory: Trajectory) -> str:
-    """``amplitude 75 deg, omega0 0 rad/s, L 1 m, g 9.81 m/s^2``."""
+    """``amplitude 75 deg, omega0 0 rad/s, L 1 m, g 9.81 m/s^2``.
+
+    The initial angle is the amplitude only when the pendulum is released from rest; with
+    omega0 != 0 it swings further (or goes over the top), so it is called the initial angle.
+    """
     p = trajectory.pendulum
-    return (f"amplitude {p.amplitude_deg:.6g} deg, omega0 {p.omega0:g} rad/s, L {p.length:g} m, "
+    angle = "amplitude" if p.omega0 == 0.0 else "initial angle"
+    return (f"{angle} {p.amplitude_deg:.6g} deg, omega0 {p.omega0:g} rad/s, L {p.length:g} m, "
             f"g {p.gravity:g} m/s^2")
+
+
+def periods_text(count: float) -> str:
+    """``1 period``, ``2.5 periods`` (the number to 6 significant digits)."""
+    text = f"{count:.6g}"
+    return f"{text} period" if text == "1" else f"{text} periods"
 
 
 def summary_lines(trajectory: Trajectory) -> list[str]:
@@ -32,7 +43,7 @@ def summary_lines(trajectory: Trajectory) -> list[str]:
         f"method    {t.method.label}",
         f"period    {period_text}",
         (f"run       {t.result.size} output points to t = {stop:.6g} s "
-         f"({stop / reference_period(period, p):.6g} periods); {cost}"),
+         f"({periods_text(stop / reference_period(period, p))}); {cost}"),
         (f"error     max |theta - theta_exact| = {t.max_error:.3e} rad, "
          f"max |omega - omega_exact| = {t.max_omega_error:.3e} rad/s"),
     ] + warning_lines(t.warnings)

@@ -5,6 +5,7 @@ prints the outcome."""
 from __future__ import annotations
 
 import argparse
+import math
 import re
 import sys
 from pathlib import Path
@@ -85,6 +86,11 @@ def runs_text(count: int) -> str:
     return f"{count} run" if count == 1 else f"{count} runs"
 
 
+def periods_text(count: float) -> str:
+    """``period`` for exactly 1, else ``periods``."""
+    return "period" if count == 1 else "periods"
+
+
 def grid_from(args: argparse.Namespace) -> SweepGrid:
     """The :class:`SweepGrid` of parsed sweep options."""
     return SweepGrid(tuple(args.amplitudes), tuple(args.omega0), tuple(args.lengths),
@@ -98,18 +104,25 @@ def run(args: argparse.Namespace) -> int:
 
     if args.scheduler is not None and args.workers is not None:
         raise UsageError("--workers", "sets the size of the local cluster: not allowed with --scheduler")
+    from pendulum_fmu.sizing import SLOW_SECONDS, check_sweep, duration_text
+
     sweep = grid_from(args)
-    fmu = locate_fmu(args.fmu)
     total = len(sweep)
+    workers = args.workers or os.cpu_count() or 1
+    seconds = check_sweep(total, math.ceil(args.periods * args.points_per_period) + 1,
+                          1 if args.scheduler else workers)  # refused at once when it cannot fit
+    fmu = locate_fmu(args.fmu)
     print(f"sweep of {runs_text(total)}: amplitude {describe(sweep.amplitudes_deg, ' deg')}, "
           f"omega0 {describe(sweep.omega0s, ' rad/s')}, L {describe(sweep.lengths, ' m')}, "
           f"g {describe(sweep.gravities, ' m/s^2')}, solvers {', '.join(sweep.solvers)}, "
-          f"tolerance {describe(sweep.tolerances)}; {sweep.periods:g} periods each")
+          f"tolerance {describe(sweep.tolerances)}; {sweep.periods:g} {periods_text(sweep.periods)} each"
+          + (f"; about {duration_text(seconds)} on {workers} workers" if seconds > SLOW_SECONDS
+             and args.scheduler is None else ""), flush=True)
     from pendulum_fmu.output.paths import make_output_folder
     from pendulum_fmu.sweep.run import run_sweep
 
     make_output_folder(args.out)
-    outcome = run_sweep(fmu, sweep, args.out, args.format, args.scheduler, args.workers or os.cpu_count() or 1,
+    outcome = run_sweep(fmu, sweep, args.out, args.format, args.scheduler, workers,
                         progress=not args.quiet, plots=not args.no_plots)
     failed = sum(1 for row in outcome.rows if row["status"] != "ok")
     if outcome.computed:
@@ -118,10 +131,14 @@ def run(args: argparse.Namespace) -> int:
     else:
         print(f"all {runs_text(outcome.skipped)} already done")
     if failed:
-        print(f"{runs_text(failed)} failed: see the status column", file=sys.stderr)
+        reasons = sorted({str(row["status"]).removeprefix("failed: ") for row in outcome.rows if row["status"] != "ok"})
+        every = "every run failed" if failed == len(outcome.rows) else f"{runs_text(failed)} failed"
+        print(f"{every} (see the status column), e.g.: {reasons[0]}", file=sys.stderr)
     warned = [row["fmu_warning"] for row in outcome.rows if row.get("fmu_warning")]
     if warned:
         print(f"warning: the FMU warned in {runs_text(len(warned))} (column fmu_warning), e.g. {warned[0]}",
               file=sys.stderr)
-    print(f"written   {outcome.table}" + ("" if args.no_plots else f" and the plots sweep_*.png in {args.out}"))
+    plots = ", ".join(path.name for path in outcome.plots)
+    print(f"written   {outcome.table}" + (f" and {plots} in {args.out}" if plots else
+                                          "" if args.no_plots else " (no plots: no run has an error to show)"))
     return 1 if failed else 0

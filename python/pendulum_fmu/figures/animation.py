@@ -3,6 +3,8 @@
 from __future__ import annotations
 
 import math
+import os
+import sys
 from pathlib import Path
 from typing import Any
 
@@ -15,6 +17,8 @@ from pendulum_fmu.spec import Method, Pendulum, StopUnit, TimeGrid
 
 MAX_FRAMES = 1500
 """Most frames an animation may have (a minute at 25 frames/s; a GIF is assembled in memory)."""
+SLOW_FRAMES = 250
+"""Films of more frames say so before they are drawn (about 100 frames a second here)."""
 
 
 def _frame_count(grid: TimeGrid, period: float, pendulum: Pendulum) -> int:
@@ -38,6 +42,10 @@ class _GifFrames:
         first, *rest = self.frames
         first.save(self.path, save_all=True, append_images=rest, duration=round(1000 / self.fps), loop=0)
 
+    def abort(self) -> None:
+        """Drop the frames: nothing is written."""
+        self.frames.clear()
+
 
 class _Mp4Frames:
     """Stream frames to ffmpeg (the binary imageio-ffmpeg ships): H.264, yuv420p."""
@@ -54,6 +62,13 @@ class _Mp4Frames:
 
     def close(self) -> None:
         self._writer.close()
+
+    def abort(self) -> None:
+        """Stop ffmpeg (the caller deletes its unfinished file)."""
+        try:
+            self._writer.close()
+        except Exception:  # noqa: BLE001 -- ffmpeg may already be gone; the file is deleted anyway
+            pass
 
 
 def render(trajectory: Trajectory, out: Path, fps: int, trail: float = 1.0) -> Path:
@@ -121,8 +136,12 @@ def render(trajectory: Trajectory, out: Path, fps: int, trail: float = 1.0) -> P
     canvas.draw()
     background = canvas.copy_from_bbox(fig.bbox)  # type: ignore[attr-defined]
     width, height = canvas.get_width_height()
-    frames: _GifFrames | _Mp4Frames = (_Mp4Frames(out, fps, (width, height)) if out.suffix.lower() == ".mp4"
-                                       else _GifFrames(out, fps))
+    # Written under a temporary name beside ``out`` and renamed when complete: an interrupted
+    # film leaves no truncated file at ``out`` (and an older complete one stays as it was).
+    partial = out.with_name(f".{out.stem}.{os.getpid()}.partial{out.suffix}")
+    frames: _GifFrames | _Mp4Frames = (_Mp4Frames(partial, fps, (width, height)) if out.suffix.lower() == ".mp4"
+                                       else _GifFrames(partial, fps))
+    finished = False
     try:
         for k in range(time.size):
             canvas.restore_region(background)  # type: ignore[attr-defined]
@@ -143,9 +162,14 @@ def render(trajectory: Trajectory, out: Path, fps: int, trail: float = 1.0) -> P
                              f"g = {p.gravity:g} m/s^2        t = {time[k]:6.2f} s  ({time[k] / period:5.2f} periods)")
             fig.draw_artist(heading)
             frames.add(np.asarray(canvas.buffer_rgba())[:, :, :3])  # type: ignore[attr-defined]
+        frames.close()
+        os.replace(partial, out)
+        finished = True
     finally:
         plt.close(fig)
-        frames.close()
+        if not finished:
+            frames.abort()
+            partial.unlink(missing_ok=True)
     return out
 
 
@@ -188,5 +212,7 @@ def animate(fmu: Path, pendulum: Pendulum, method: Method, stop: float, unit: St
             raise UsageError(argument, f"the animation would have {frames} frames, at most {MAX_FRAMES} are "
                                        "allowed: shorten it, lower --fps or raise --speed")
         trajectory = runner.run(pendulum, method, grid)
+    if frames > SLOW_FRAMES:
+        print(f"animate: drawing {frames} frames into {out} ...", file=sys.stderr, flush=True)
     render(trajectory, out, fps)
     return trajectory

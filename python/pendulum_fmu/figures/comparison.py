@@ -72,7 +72,10 @@ def compare(fmu: Path, pendulum: Pendulum, method: Method, grid: TimeGrid, out: 
     Trajectory
         The run drawn.
     """
+    from pendulum_fmu.sizing import plan_run
+
     with FmuRunner(fmu) as runner:
+        plan_run(runner, pendulum, grid)  # refused at once when it cannot fit
         trajectory = runner.run(pendulum, method, grid)
     plot_comparison(trajectory, out)
     return trajectory

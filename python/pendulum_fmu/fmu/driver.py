@@ -8,11 +8,11 @@ output straight into the rows of the caller's numpy array, checking every status
 per point. The FMU's log messages still arrive through fmpy's logger while the loop runs (a
 ctypes call releases the GIL; the callback takes it back).
 
-Ctrl-C: the loop runs in stretches of about :data:`STRETCH_SECONDS` each. While it runs in
-the main thread, SIGINT only sets a flag (the handler is swapped for the run, when it is
-Python's default one), so that no ``KeyboardInterrupt`` can land inside the FMU's logger
-callback; after each stretch the flag is looked at, and an interrupted loop raises
-:class:`LoopInterrupted` holding how many points it finished.
+Ctrl-C: the loop runs in stretches of about :data:`STRETCH_SECONDS` each, inside
+:func:`pendulum_fmu.interrupt.deferred_interrupt` (SIGINT only sets a flag, so that no
+``KeyboardInterrupt`` can land inside the FMU's logger callback); after each stretch the flag
+is looked at, and an interrupted loop raises :class:`LoopInterrupted` holding how many points
+it finished.
 
 Where the library is looked for: ``$PENDULUM_DRIVER_LIB``, the package's ``lib/<platform>/``
 (a wheel carries linux64, win64 and darwin64), the repository's ``build/``. Without one the
@@ -22,22 +22,18 @@ speed; :func:`library_path` says which.
 
 from __future__ import annotations
 
-import _signal  # signal's C module: the same calls without the enum wrapping (a few us a run)
 import ctypes
 import os
-import signal
-import threading
 import time
-from collections.abc import Iterator
-from contextlib import contextmanager
 from functools import lru_cache
 from pathlib import Path
-from types import FrameType
 from typing import Any
 
 import numpy as np
 
 from pendulum_fmu.errors import BuildError, SimulationError
+from pendulum_fmu.interrupt import deferred_interrupt
+from pendulum_fmu.interrupt import pending as interrupt_pending
 from pendulum_fmu.fmu.build import DEFAULT_BUILD_DIR
 from pendulum_fmu.fmu.library import PACKAGE_LIB_DIR, platform_folder
 from pendulum_fmu.fmu.log import FmuLog
@@ -126,25 +122,6 @@ def _address(function: Any) -> int:
     return ctypes.cast(function, ctypes.c_void_p).value or 0
 
 
-@contextmanager
-def deferred_sigint() -> Iterator[list[bool]]:
-    """While inside, SIGINT sets ``flag[0]`` instead of raising (main thread, default handler only)."""
-    flag = [False]
-    if threading.current_thread() is not threading.main_thread() \
-            or _signal.getsignal(signal.SIGINT) is not signal.default_int_handler:
-        yield flag
-        return
-
-    def note(_signum: int, _frame: FrameType | None) -> None:
-        flag[0] = True
-
-    _signal.signal(signal.SIGINT, note)
-    try:
-        yield flag
-    finally:
-        _signal.signal(signal.SIGINT, signal.default_int_handler)
-
-
 class CLoop:
     """Steps an initialized fmpy Co-Simulation instance (FMI 2.0 or 3.0) over a grid, in C.
 
@@ -198,12 +175,12 @@ class CLoop:
         base, stride = rows.ctypes.data + offset, rows.itemsize // 8
         fmu, pointer = ctypes.byref(self._fmu), times.ctypes.data
         first, count, stretch = 0, len(times), FIRST_STRETCH
-        with deferred_sigint() as interrupted:
+        with deferred_interrupt():
             while first < count:
                 last = min(count, first + stretch)
                 start = time.perf_counter()
                 call = self._drive(fmu, pointer, first, last, base, stride, ctypes.byref(outcome))
-                if interrupted[0]:   # Ctrl-C wins over a failure in the same stretch: it is what the user did
+                if interrupt_pending():   # Ctrl-C wins over a failure in the same stretch: it is what the user did
                     raise LoopInterrupted(outcome.done)
                 if call:
                     self._fail(outcome, log)

@@ -21,6 +21,7 @@ import numpy as np
 
 from pendulum_fmu.errors import SimulationError
 from pendulum_fmu.fmu.log import FMI2_WARNING, FmuLog
+from pendulum_fmu.interrupt import check, flag
 
 _DO_STEP = ctypes.CFUNCTYPE(ctypes.c_int, ctypes.c_void_p, ctypes.c_double, ctypes.c_double, ctypes.c_int)
 """fmi2DoStep(c, currentCommunicationPoint, communicationStepSize, noSetFMUStatePriorToCurrentPoint)."""
@@ -79,7 +80,10 @@ class FastStepper:
         status = get_real(component, vrs, count, row)
         self._check(status, "fmi2GetReal", float(times[0]), log)
         previous = float(times[0])
+        interrupted = flag()  # Ctrl-C during the run (pendulum_fmu.interrupt): stop at the next point
         for k in range(1, len(times)):
+            if interrupted[0]:
+                check()
             current = float(times[k])
             status = do_step(component, previous, current - previous, 1)
             if status > FMI2_WARNING:

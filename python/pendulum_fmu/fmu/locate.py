@@ -14,6 +14,7 @@ from __future__ import annotations
 import os
 import shutil
 import zipfile
+from xml.etree import ElementTree
 from pathlib import Path
 
 from pendulum_fmu.fmu.build import DEFAULT_BUILD_DIR, PACKAGED_FMU, PACKAGED_FMU3, REPO_ROOT, build_fmu, fmu3_in, fmu_in
@@ -52,13 +53,23 @@ def fmu_problem(path: Path) -> str | None:
     str or None
         One line naming the file and the problem; None when it looks like an FMU.
     """
+    if path.is_dir():
+        return f"{str(path)!r} is a folder, not an FMU file"
     try:
         with zipfile.ZipFile(path) as archive:
             names = set(archive.namelist())
-    except (zipfile.BadZipFile, OSError) as error:
+            if "modelDescription.xml" not in names:
+                return f"{str(path)!r} is not an FMU: the archive has no modelDescription.xml"
+            text = archive.read("modelDescription.xml")
+    except (zipfile.BadZipFile, OSError, RuntimeError, ValueError) as error:  # RuntimeError: encrypted
         return f"{str(path)!r} is not an FMU (not a zip archive: {error})"
-    if "modelDescription.xml" not in names:
-        return f"{str(path)!r} is not an FMU: the archive has no modelDescription.xml"
+    try:
+        root = ElementTree.fromstring(text)
+    except ElementTree.ParseError as error:
+        return f"{str(path)!r} is not an FMU: its modelDescription.xml is not well-formed XML ({error})"
+    if root.tag != "fmiModelDescription":
+        return f"{str(path)!r} is not an FMU: the root of its modelDescription.xml is <{root.tag}>, " \
+               "not <fmiModelDescription>"
     return None
 
 
@@ -89,7 +100,7 @@ def locate_fmu(explicit: Path | None = None, build: bool = True, fmi_version: in
         If CMake fails.
     """
     if explicit is not None:
-        if not Path(explicit).is_file():
+        if not Path(explicit).exists():
             raise UsageError("--fmu", f"no such file: {str(explicit)!r}")
         problem = fmu_problem(Path(explicit)) or pendulum_problem(Path(explicit))
         if problem is not None:

@@ -37,6 +37,8 @@ from pendulum_fmu.errors import BuildError, SimulationError, UsageError
 from pendulum_fmu.fmu import driver
 from pendulum_fmu.fmu.fast_cs import FastStepper
 from pendulum_fmu.fmu.identity import FMI_VERSIONS, description_problem
+from pendulum_fmu.interrupt import deferred_interrupt
+from pendulum_fmu.interrupt import pending as interrupt_pending
 from pendulum_fmu.fmu.log import FmuLog, register, shared_callbacks, unique_instance_name, unregister
 from pendulum_fmu.spec import CS_SOLVERS, Method, Pendulum, TimeGrid
 
@@ -152,9 +154,11 @@ class FmuRunner:
         try:
             self._unzipdir = extract(str(self.fmu), unzipdir=self._tempdir)
             self.model_description = read_model_description(self._unzipdir, validate=False)
-        except Exception as error:  # noqa: BLE001 (zipfile, lxml and fmpy raise many kinds)
+        except BaseException as error:  # nothing left behind: not even on Ctrl-C
             shutil.rmtree(self._tempdir, ignore_errors=True)
-            raise UsageError("fmu", f"{str(self.fmu)!r} cannot be read as an FMU: {error}") from None
+            if isinstance(error, Exception):  # zipfile, lxml and fmpy raise many kinds
+                raise UsageError("fmu", f"{str(self.fmu)!r} cannot be read as an FMU: {error}") from None
+            raise
         problem = description_problem(self.model_description)
         if problem is not None:
             shutil.rmtree(self._tempdir, ignore_errors=True)
@@ -256,12 +260,13 @@ class FmuRunner:
     # -- runs --------------------------------------------------------------------------------
     def period(self, pendulum: Pendulum) -> float:
         """The FMU's exact ``period`` for this problem, s (``inf`` on the separatrix)."""
-        slave = self._fresh_slave()
         try:
-            value = self._initialize(slave, pendulum, DEFAULT_METHOD)
-            slave.terminate()
+            with deferred_interrupt():
+                slave = self._fresh_slave()  # loading the binary may fail too (another model, another platform)
+                value = self._initialize(slave, pendulum, DEFAULT_METHOD)
+                slave.terminate()
         except Exception as error:  # fmpy raises FMICallException, ctypes may raise OSError
-            raise SimulationError(f"the FMU failed to initialize {pendulum}: {error}") from error
+            raise SimulationError(f"the FMU failed to initialize {pendulum}: {self._reason(error)}") from error
         return value
 
     def run(self, pendulum: Pendulum, method: Method = DEFAULT_METHOD, grid: TimeGrid = DEFAULT_GRID) -> Trajectory:
@@ -289,13 +294,26 @@ class FmuRunner:
             On Ctrl-C during a Co-Simulation run's output loop, with the points finished.
         """
         try:
-            if method.interface == "CS":
-                return self._run_cs(pendulum, method, grid)
-            return self._run_me(pendulum, method, grid)
+            with deferred_interrupt():  # Ctrl-C inside a ctypes callback would be lost
+                if method.interface == "CS":
+                    return self._run_cs(pendulum, method, grid)
+                return self._run_me(pendulum, method, grid)
         except SimulationError:
             raise
+        except MemoryError:
+            raise SimulationError(f"{method.label} on {pendulum}: not enough memory for the output points "
+                                  "of this run: fewer periods or points per period") from None
         except Exception as error:  # fmpy raises FMICallException or a plain Exception
-            raise SimulationError(f"{method.label} failed on {pendulum}: {error}") from error
+            raise SimulationError(f"{method.label} failed on {pendulum}: {self._reason(error)}") from error
+
+    def _reason(self, error: Exception) -> str:
+        """The error's text, followed by what the FMU logged as its reason (one line)."""
+        text = str(error).strip() or type(error).__name__
+        logged = self._log.last_error()
+        if logged and logged not in text:
+            call, _, rest = logged.partition(": ")  # "fmi2ExitInitializationMode: why", the call named already
+            text = f"{text.rstrip('.')}: {rest if rest and call in text else logged}"
+        return " ".join(text.split())
 
     def _run_cs(self, pendulum: Pendulum, method: Method, grid: TimeGrid) -> Trajectory:
         start = time.perf_counter()
@@ -341,7 +359,7 @@ class FmuRunner:
             fmi_type="ModelExchange", solver="CVode", start_time=0.0, stop_time=times[-1],
             output_interval=interval, relative_tolerance=method.effective_tolerance,
             start_values=pendulum.start_values(), output=list(RECORDED), validate=False,
-            record_events=False)
+            record_events=False, step_finished=lambda *_: not interrupt_pending())
         wall = time.perf_counter() - start
         result = np.empty(recorded.size, dtype=RESULT_DTYPE)
         for name in result.dtype.names or ():

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -19,7 +20,8 @@ class StudyOutcome:
     warnings: tuple[str, ...]
 
 
-def write_study(fmu: Path, out: Path, periods: float = 10.0) -> StudyOutcome:
+def write_study(fmu: Path, out: Path, periods: float = 10.0,
+                progress: Callable[[str], None] | None = None) -> StudyOutcome:
     """Run the seed's study on ``fmu`` and write every output into the existing folder ``out``.
 
     Parameters
@@ -30,6 +32,8 @@ def write_study(fmu: Path, out: Path, periods: float = 10.0) -> StudyOutcome:
         An existing, writable folder.
     periods : float
         Exact periods to simulate.
+    progress : callable, optional
+        Called with one line at each step (each run, the period curve, the figures).
 
     Returns
     -------
@@ -37,8 +41,12 @@ def write_study(fmu: Path, out: Path, periods: float = 10.0) -> StudyOutcome:
         The error table and the distinct warnings the FMU logged during the runs.
     """
     with FmuRunner(fmu) as runner:
-        runs = run_study(runner, periods)
+        runs = run_study(runner, periods, progress)
+        if progress is not None:
+            progress("the period curve: the FMU's period at 477 amplitudes, and 15 runs that measure it")
         curve = period_curve(runner)
+    if progress is not None:
+        progress("the figures and the reports")
     cs_runs = [r for r in runs if r.method.interface == "CS"]
     me_runs = [r for r in runs if r.method.interface == "ME"]
     plot_solutions(cs_runs, "theta", "Figure 3: the numerical solution (FMU, Co-Simulation, rkn)",

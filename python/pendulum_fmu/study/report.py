@@ -18,7 +18,7 @@ The measured period is the slope of the downward zero crossings of theta.
 
 {table}
 
-- Figure 3 (numerical solution, one panel per amplitude): `fig3_numeric.png`
+- Figure 3 (numerical solution, one row per amplitude on a time axis in T0, period ends marked): `fig3_numeric.png`
 - Figure 4 (exact Jacobi elliptic solution, the same panels): `fig4_exact.png`
 - Figure 5 (numerical over exact, and |theta - theta_exact| of CS and ME on a log axis): `fig5_overlay.png`
 - Period ratio T/T0 against amplitude, and its approach to 180 deg, with measured periods: `period_ratio.png`
@@ -43,16 +43,20 @@ def write_html(out: Path, rows: list[tuple[str, ...]], periods: float) -> Path:
         f"Largest error: {worst[-1]} rad ({worst[1]}, {worst[0]} deg).",
     ]
     figures = [
-        Figure("fig3_numeric.png", "Figure 3: the numerical solution theta against w0 t, one panel per amplitude "
-                                   "(FMU, Co-Simulation, rkn); dotted lines at +-theta0"),
+        Figure("fig3_numeric.png", "Figure 3: the numerical solution theta (FMU, Co-Simulation, rkn), one row per "
+                                   "amplitude on one time axis in small-angle periods T0; triangles mark the end of "
+                                   "each of the run's own periods T, which fall further behind the T0 grid lines "
+                                   "the larger the amplitude; dashed lines at +theta0 and -theta0"),
         Figure("fig4_exact.png", "Figure 4: the exact solution (Jacobi elliptic functions, computed in the FMU); "
                                  "it matches Figure 3 to about 1e-12 rad, which Figure 5 shows"),
-        Figure("fig5_overlay.png", "Figure 5: top, the last two periods, numerical (line) over exact (circles); "
-                                   "bottom, |theta - theta_exact| over the whole run on a log axis, Co-Simulation "
-                                   "(rkn) and Model Exchange (CVODE)"),
+        Figure("fig5_overlay.png", "Figure 5: top, the last two periods, the numerical solution (thin line) inside "
+                                   "the exact one (wide grey band); bottom, |theta - theta_exact| over the whole "
+                                   "run on a log axis, Co-Simulation (rkn) and Model Exchange (CVODE), errors "
+                                   "exactly 0 as ticks on the bottom edge"),
         Figure("period_ratio.png", "The period ratio T/T0 against amplitude (left, linear) and its logarithmic "
-                                   "growth toward 180 deg (right), from the FMU's period output; circles: periods "
-                                   "measured from simulations"),
+                                   "growth toward 180 deg (right, against the distance 180 deg - theta0, which "
+                                   "shrinks to the right), from the FMU's period output; circles: periods measured "
+                                   "from simulations; crosses: scipy's 2K(m)/pi, on the FMU's curve"),
     ]
     files = [("runs.csv", "every run at every output point"), ("report.md", "this report's table in Markdown")]
     return write_html_report(out / "report.html", "The seed's study: the nonlinear pendulum at 75-90 deg", intro,

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import csv
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -46,7 +47,8 @@ class PeriodCurve:
     measured_ratios: np.ndarray
 
 
-def run_study(runner: FmuRunner, periods: float = 10.0) -> list[Trajectory]:
+def run_study(runner: FmuRunner, periods: float = 10.0,
+              progress: Callable[[str], None] | None = None) -> list[Trajectory]:
     """Simulate every seed amplitude in CS (the FMU's default method) and ME (CVODE, rtol 1e-10).
 
     Parameters
@@ -55,6 +57,8 @@ def run_study(runner: FmuRunner, periods: float = 10.0) -> list[Trajectory]:
         The loaded FMU.
     periods : float
         Exact periods to simulate.
+    progress : callable, optional
+        Called with one line before each run (what it is, and how many are left).
 
     Returns
     -------
@@ -63,7 +67,13 @@ def run_study(runner: FmuRunner, periods: float = 10.0) -> list[Trajectory]:
     """
     grid = TimeGrid(periods, "periods", POINTS_PER_PERIOD)
     methods = (Method(), Method("cvode", ME_TOLERANCE))
-    return [runner.run(Pendulum.from_degrees(a), method, grid) for method in methods for a in SEED_AMPLITUDES_DEG]
+    todo = [(method, a) for method in methods for a in SEED_AMPLITUDES_DEG]
+    runs = []
+    for k, (method, a) in enumerate(todo, 1):
+        if progress is not None:
+            progress(f"run {k} of {len(todo)}: {a:g} deg, {method.label}, {periods:g} periods")
+        runs.append(runner.run(Pendulum.from_degrees(a), method, grid))
+    return runs
 
 
 def table_rows(runs: list[Trajectory]) -> list[tuple[str, ...]]:

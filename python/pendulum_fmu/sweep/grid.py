@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import itertools
+import math
 from dataclasses import astuple, dataclass, fields
 from typing import Any
 
@@ -147,4 +148,6 @@ class SweepGrid:
         return list(unique)
 
     def __len__(self) -> int:
-        return len(self.points())
+        """The number of distinct runs, without building them (a product of distinct values per axis)."""
+        return math.prod(len(set(axis)) for axis in (self.solvers, self.tolerances, self.gravities, self.lengths,
+                                                     self.omega0s, self.amplitudes_deg))

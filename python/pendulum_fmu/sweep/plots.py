@@ -107,8 +107,27 @@ def plot_cost(rows: Sequence[dict[str, Any]], path: Path) -> None:
 
 
 def plot_sweep(rows: Sequence[dict[str, Any]], folder: Path) -> list[Path]:
-    """Write ``sweep_period.png``, ``sweep_error.png`` and ``sweep_cost.png`` into ``folder``."""
-    paths = [folder / "sweep_period.png", folder / "sweep_error.png", folder / "sweep_cost.png"]
-    for plot, path in zip((plot_period, plot_error, plot_cost), paths):
-        plot(rows, path)
-    return paths
+    """Write ``sweep_period.png``, ``sweep_error.png`` and ``sweep_cost.png`` into ``folder``.
+
+    A plot with nothing to show is not drawn (and one left by an earlier sweep into the same
+    folder is removed): no period plot when every run failed, no error or cost plot (log
+    axes) when no run has an error > 0.
+
+    Returns
+    -------
+    list of Path
+        The plots written.
+    """
+    ok = _ok(rows)
+    measurable = [row for row in ok if np.isfinite(row["max_error_rad"]) and row["max_error_rad"] > 0.0]
+    plots = [(plot_period, folder / "sweep_period.png", bool(ok)),
+             (plot_error, folder / "sweep_error.png", bool(measurable)),
+             (plot_cost, folder / "sweep_cost.png", bool(measurable))]
+    written = []
+    for plot, path, drawable in plots:
+        if drawable:
+            plot(rows, path)
+            written.append(path)
+        else:
+            path.unlink(missing_ok=True)
+    return written

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import hashlib
 import sys
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -46,6 +46,8 @@ class SweepOutcome:
         Worker threads that ran them (0 if nothing was computed).
     table : Path or None
         The table written.
+    plots : list of Path
+        The plots written (none of a sweep in which every run failed).
     """
 
     rows: list[dict[str, Any]]
@@ -54,6 +56,7 @@ class SweepOutcome:
     seconds: float
     workers: int
     table: Path | None = None
+    plots: list[Path] = field(default_factory=list)
 
 
 # -- Dask -------------------------------------------------------------------------------------
@@ -139,11 +142,12 @@ def run_sweep(fmu: Path, sweep: SweepGrid, out: Path, table_format: str = "csv",
             journal.close()
     rows = [done[point.key] for point in points]
     table = _write_rows(rows, out, table_format, fmu)
+    drawn: list[Path] = []
     if plots:
         from pendulum_fmu.sweep.plots import plot_sweep
 
-        plot_sweep(rows, out)
-    return SweepOutcome(rows, len(pending), skipped, seconds, threads, table)
+        drawn = plot_sweep(rows, out)
+    return SweepOutcome(rows, len(pending), skipped, seconds, threads, table, drawn)
 
 
 def _write_rows(rows: list[dict[str, Any]], out: Path, table_format: str, fmu: Path) -> Path:

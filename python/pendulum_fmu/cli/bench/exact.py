@@ -76,23 +76,31 @@ def run(args: argparse.Namespace) -> int:
         print("bench exact: the C benchmark (tests/c/bench_exact) is not installed with the package: "
               "timing Python and scipy only")
     results = run_benchmark(program, args.points, tuple(args.amplitudes), args.rounds)
+    with_c = program is not None  # without the C benchmark its columns are left out, not printed as nan
     print("one state, many times (ns per point, best over the rounds):")
-    print(f"{'amplitude':>14} {'C ns/pt':>9} {'Python ns/pt':>13} {'scipy ns/pt':>12} {'Python/C':>9} {'C/scipy':>8}")
+    c_head = f" {'C ns/pt':>9}" if with_c else ""
+    c_tail = f" {'Python/C':>9} {'C/scipy':>8}" if with_c else f" {'Python/scipy':>13}"
+    print(f"{'amplitude':>14}{c_head} {'Python ns/pt':>13} {'scipy ns/pt':>12}{c_tail}")
     for r in results:
-        print(f"{r.amplitude_deg:>10.10g} deg {r.c_ns:>9.1f} {r.python_ns:>13.1f} {r.scipy_ns:>12.1f} "
-              f"{r.python_ns / r.c_ns:>9.2f} {r.ratio:>8.3f}")
+        c_value = f" {r.c_ns:>9.1f}" if with_c else ""
+        ratios = (f" {r.python_ns / r.c_ns:>9.2f} {r.ratio:>8.3f}" if with_c
+                  else f" {r.python_ns / r.scipy_ns:>13.3f}")
+        print(f"{r.amplitude_deg:>10.10g} deg{c_value} {r.python_ns:>13.1f} {r.scipy_ns:>12.1f}{ratios}")
     print("ratios side by side (best | median over the rounds; > 1: the project is faster):")
-    print(f"{'amplitude':>14} {'GSL/eval':>15} {'GSL/batch':>15} {'eval/batch':>15} "
-          f"{'scipy/(init+eval)':>19} {'scipy/exact()':>15}")
+    c_heads = f" {'GSL/eval':>15} {'GSL/batch':>15} {'eval/batch':>15} {'scipy/(init+eval)':>19}" if with_c else ""
+    print(f"{'amplitude':>14}{c_heads} {'scipy/exact()':>15}")
     for r in results:
         c = r.c
-        print(f"{r.amplitude_deg:>10.10g} deg {both(c.gsl.best, c.gsl.median, c.eval.best, c.eval.median):>15} "
-              f"{both(c.gsl.best, c.gsl.median, c.batch.best, c.batch.median):>15} "
-              f"{both(c.eval.best, c.eval.median, c.batch.best, c.batch.median):>15} "
-              f"{both(r.scipy_states.best, r.scipy_states.median, c.init.best, c.init.median):>19} "
+        c_ratios = (f" {both(c.gsl.best, c.gsl.median, c.eval.best, c.eval.median):>15}"
+                    f" {both(c.gsl.best, c.gsl.median, c.batch.best, c.batch.median):>15}"
+                    f" {both(c.eval.best, c.eval.median, c.batch.best, c.batch.median):>15}"
+                    f" {both(r.scipy_states.best, r.scipy_states.median, c.init.best, c.init.median):>19}"
+                    if with_c else "")
+        print(f"{r.amplitude_deg:>10.10g} deg{c_ratios} "
               f"{both(r.scipy_states.best, r.scipy_states.median, r.python_states.best, r.python_states.median):>15}")
     for r in results:
-        print(f"bench_exact amplitude_deg={r.amplitude_deg:.10g} n={r.n} c_ns_per_point={r.c_ns:.3f} "
+        c_field = f" c_ns_per_point={r.c_ns:.3f}" if with_c else ""
+        print(f"bench_exact amplitude_deg={r.amplitude_deg:.10g} n={r.n}{c_field} "
               f"python_ns_per_point={r.python_ns:.3f} scipy_ns_per_point={r.scipy_ns:.3f}")
     for r in results:
         fields = {"eval": r.c.eval, "batch": r.c.batch, "gsl": r.c.gsl, "init_eval": r.c.init,

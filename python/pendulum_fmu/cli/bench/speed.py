@@ -6,12 +6,12 @@ import argparse
 import math
 
 import pendulum_fmu.bench.speed as speed
-from pendulum_fmu.cli.arguments import add_fmu_argument, integer
+from pendulum_fmu.cli.arguments import add_fmu_argument, integer, plain_text
 from pendulum_fmu.fmu.locate import locate_fmu
 
 NAME = "speed"
 HELP = "one simulation from Python: this package's path against fmpy and scipy's DOP853, side by side"
-DESCRIPTION = (speed.__doc__ or HELP).replace("``", "")
+DESCRIPTION = plain_text(speed.__doc__ or HELP)
 EPILOG = """\
 examples:
   pendulum-fmu bench speed                 # 10 interleaved rounds: best and median

@@ -3,16 +3,17 @@
 from __future__ import annotations
 
 import argparse
+import sys
 import statistics
 
 import pendulum_fmu.bench.sweep as bench_sweep
 from pendulum_fmu.bench.sweep import bench_points, measure
-from pendulum_fmu.cli.arguments import add_fmu_argument, integer, positive
+from pendulum_fmu.cli.arguments import add_fmu_argument, integer, plain_text, positive
 from pendulum_fmu.fmu.locate import locate_fmu
 
 NAME = "sweep"
 HELP = "sweep throughput, runs/s with 1 and 2 Dask workers, and the speed-up"
-DESCRIPTION = (bench_sweep.__doc__ or HELP).replace("``", "")
+DESCRIPTION = plain_text(bench_sweep.__doc__ or HELP)
 EPILOG = """\
 examples:
   pendulum-fmu bench sweep                          # 1000 runs, 1 and 2 workers, median of 5
@@ -38,9 +39,23 @@ def configure(parser: argparse.ArgumentParser) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Run the benchmark and print runs/s per worker count and loop, and the speed-ups."""
+    import math
+
+    from pendulum_fmu.fmu.runner import FmuRunner
+    from pendulum_fmu.sizing import SLOW_SECONDS, check_sweep, duration_text
+
+    loops = ["c", "python"] if args.loop == "both" else [args.loop]
+    # Every timed sweep, on the fewest workers asked for: refused at once past a week or the memory.
+    seconds = check_sweep(args.runs * args.repeat * len(args.workers) * len(loops), math.ceil(args.periods * 50) + 1,
+                          min(args.workers), runs_argument="--runs",
+                          fewer="fewer --runs, --repeat or --workers counts, or one --loop")
+    if seconds > SLOW_SECONDS:
+        print(f"bench sweep: about {duration_text(seconds)} of sweeps ...", file=sys.stderr, flush=True)
     fmu = locate_fmu(args.fmu)
     points = bench_points(args.runs, args.periods)
-    loops = ["c", "python"] if args.loop == "both" else [args.loop]
+    with FmuRunner(fmu) as runner:  # a run that fails here would be timed as a fast one: refuse now
+        first = points[0]
+        runner.run(first.pendulum(), first.method(), first.grid())
     print(f"sweep of {len(points)} runs (amplitudes 1-179 deg from rest, {args.periods:g} periods, dopri5 "
           f"at 1e-8), median of {args.repeat}; FMU {fmu}")
     print(f"{'loop':>6}  {'workers':>7}  {'runs':>6}  {'seconds':>8}  {'runs/s':>8}  {'per worker':>10}  "

@@ -1,0 +1,115 @@
+"""Ctrl-C (SIGINT) that is never lost inside a call into the FMU.
+
+Python runs a signal handler between two bytecodes of the main thread. During an FMU run
+those bytecodes are often inside a ctypes callback (the FMU's logger, or fmpy's CVODE
+right-hand side called back from C): a ``KeyboardInterrupt`` raised there cannot cross the
+C frames, so ctypes prints "Exception ignored on calling ctypes callback" and drops it.
+The interrupt is then lost, or the solver sees a failed callback and reports a misleading
+error.
+
+:func:`deferred_interrupt` therefore replaces, for the duration of a run, the default
+SIGINT handler by one that only sets a flag; the run's loops look at the flag between steps
+(:func:`pending`, :func:`check`) and the flag becomes a ``KeyboardInterrupt`` as soon as
+the run leaves the block, whatever else the run raised on the way.
+"""
+
+from __future__ import annotations
+
+import signal
+import threading
+from collections.abc import Iterator
+from contextlib import contextmanager
+from types import FrameType
+
+_flag: list[bool] = [False]
+"""``[True]`` once SIGINT arrived inside :func:`deferred_interrupt` (a list: cheap to test in a loop)."""
+
+
+def _note(signum: int, frame: FrameType | None) -> None:
+    """The SIGINT handler inside :func:`deferred_interrupt`: remember, raise nothing."""
+    _flag[0] = True
+
+
+def _sticky(signum: int, frame: FrameType | None) -> None:
+    """The command's SIGINT handler outside runs: raise ``KeyboardInterrupt`` and remember it.
+
+    Should a library swallow the exception (a bare ``except:`` while a module is imported),
+    the flag stays set and the next run (:func:`deferred_interrupt`) or :func:`check`
+    raises it again: the interrupt is not lost.
+    """
+    _flag[0] = True
+    raise KeyboardInterrupt
+
+
+def flag() -> list[bool]:
+    """The flag itself, ``[bool]``, for a loop that tests ``flag[0]`` between steps."""
+    return _flag
+
+
+def pending() -> bool:
+    """True when SIGINT arrived inside :func:`deferred_interrupt` and was not raised yet."""
+    return _flag[0]
+
+
+def check() -> None:
+    """Raise ``KeyboardInterrupt`` now if SIGINT arrived (call it between steps, never in a callback)."""
+    if _flag[0]:
+        _flag[0] = False
+        raise KeyboardInterrupt
+
+
+def forget() -> None:
+    """Clear the flag: the interrupt it stands for has been reported."""
+    _flag[0] = False
+
+
+@contextmanager
+def deferred_interrupt() -> Iterator[None]:
+    """SIGINT inside the block sets a flag; leaving the block raises it as ``KeyboardInterrupt``.
+
+    Only in the main thread and only where SIGINT raises ``KeyboardInterrupt`` (Python's
+    default handler): a worker thread, a process that ignores SIGINT on purpose (a sweep's
+    worker) or a handler of the caller's own are left alone. Nested blocks are one block.
+
+    Raises
+    ------
+    KeyboardInterrupt
+        On leaving the block when SIGINT arrived in it, in place of any exception the body
+        raised (a solver that stopped because of the interrupt is not a failure); a
+        ``KeyboardInterrupt`` the body raises itself on seeing the flag (one that carries the
+        finished part of a run) passes unchanged.
+    """
+    previous = signal.getsignal(signal.SIGINT)
+    if threading.current_thread() is not threading.main_thread() \
+            or (previous is not signal.default_int_handler and previous is not _sticky):
+        yield
+        return
+    check()  # an interrupt that arrived before, and was swallowed on its way
+    signal.signal(signal.SIGINT, _note)
+    try:
+        yield
+    except KeyboardInterrupt:  # raised by the body itself on seeing the flag (it may carry a partial result)
+        signal.signal(signal.SIGINT, previous)
+        _flag[0] = False
+        raise
+    except BaseException:
+        signal.signal(signal.SIGINT, previous)
+        if _flag[0]:
+            _flag[0] = False
+            raise KeyboardInterrupt from None
+        raise
+    signal.signal(signal.SIGINT, previous)
+    check()
+
+
+def default_dispositions() -> None:
+    """Make SIGINT raise ``KeyboardInterrupt`` in this process, whatever it inherited.
+
+    A program started in the background by a non-interactive shell inherits SIGINT as
+    ignored, and Python then installs no handler: such a command could not be stopped with
+    Ctrl-C or ``kill -INT``. The handler installed also remembers the interrupt (see
+    ``_sticky``). Called by the command line as soon as its package is imported, before
+    the heavy imports, and again by ``main`` (main thread only).
+    """
+    if threading.current_thread() is threading.main_thread():
+        signal.signal(signal.SIGINT, _sticky)

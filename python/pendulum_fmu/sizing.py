@@ -1,0 +1,210 @@
+"""The size of a piece of work, estimated before it starts: output points, memory, runs, time.
+
+A command that is asked for more than the machine can hold refuses at once, in one line
+that says how much it would be and what to change, instead of failing after minutes (or
+printing nothing for minutes). The figures per point and per run are measured on this
+project's FMU (``pendulum-fmu bench speed``) and rounded up; they are estimates for a
+refusal and a progress hint, not promises.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+from pendulum_fmu.errors import UsageError
+from pendulum_fmu.spec import Pendulum, TimeGrid
+
+if TYPE_CHECKING:
+    from pendulum_fmu.fmu.runner import FmuRunner
+
+BYTES_PER_POINT = 256
+"""Memory per output point of one run: the recorded values, the result table, the time list
+(Python floats) and the copies a table writer or a plot makes (7 columns of 8 bytes, a few times)."""
+SECONDS_PER_POINT = 3e-6
+"""Wall time per output point of a Co-Simulation run at the default tolerance (rounded up)."""
+BYTES_PER_SWEEP_RUN = 4096
+"""Memory per sweep run kept by the client: the grid point, its row (about 25 values) and the journal's copy."""
+SECONDS_PER_SWEEP_RUN = 3e-3
+"""Wall time per sweep run besides its points: the reset, initialization and the row."""
+MEMORY_SHARE = 0.5
+"""Share of the memory available now that one command may plan to use."""
+MAX_SECONDS = 7 * 24 * 3600.0
+"""Longest work accepted (one week on this machine's speed)."""
+SLOW_SECONDS = 3.0
+"""Work estimated longer than this says so before it starts."""
+
+
+def available_memory() -> int:
+    """Bytes of memory available to a new allocation now (``MemAvailable``; else the physical memory)."""
+    try:
+        for line in Path("/proc/meminfo").read_text().splitlines():
+            if line.startswith("MemAvailable:"):
+                return int(line.split()[1]) * 1024
+    except (OSError, ValueError, IndexError):
+        pass
+    try:
+        return int(os.sysconf("SC_PAGE_SIZE")) * int(os.sysconf("SC_PHYS_PAGES"))
+    except (OSError, ValueError, AttributeError):
+        return 8 * 1024 ** 3
+
+
+def grid_points(grid: TimeGrid, reference_period: float) -> int:
+    """The number of output points :meth:`TimeGrid.times` would return, without building them."""
+    step = grid.output_interval or reference_period / grid.points_per_period
+    stop = grid.stop * reference_period if grid.unit == "periods" else grid.stop
+    ratio = stop / step
+    if not math.isfinite(ratio) or ratio > 1e18:
+        return 10 ** 18
+    return max(1, math.ceil(ratio - 1e-9)) + 1
+
+
+def quantity(count: float) -> str:
+    """``4.5e9`` as ``4.5 billion``, ``25,000`` as ``25,000``."""
+    if count >= 1e9:
+        return f"{count / 1e9:.3g} billion"
+    if count >= 1e6:
+        return f"{count / 1e6:.3g} million"
+    return f"{count:,.0f}"
+
+
+def size_text(count: float) -> str:
+    """Bytes as ``1.2 GB``, ``340 MB``, ``12 kB``."""
+    for unit, scale in (("TB", 1e12), ("GB", 1e9), ("MB", 1e6), ("kB", 1e3)):
+        if count >= scale:
+            return f"{count / scale:.3g} {unit}"
+    return f"{count:.0f} B"
+
+
+def duration_text(seconds: float) -> str:
+    """Seconds as ``2 s``, ``3 min``, ``5.1 h``, ``12 days``."""
+    if seconds < 90:
+        return f"{seconds:.0f} s"
+    if seconds < 5400:
+        return f"{seconds / 60:.0f} min"
+    if seconds < 72 * 3600:
+        return f"{seconds / 3600:.1f} h"
+    return f"{seconds / 86400:.0f} days"
+
+
+def check_run(points: int, argument: str = "-T/--stop-time", memory: int | None = None) -> float:
+    """Refuse a run whose output points do not fit in memory; return its estimated seconds.
+
+    Parameters
+    ----------
+    points : int
+        Output points of the run (:func:`grid_points`).
+    argument : str
+        The option to name in the refusal.
+    memory : int, optional
+        Bytes available (default :func:`available_memory`).
+
+    Returns
+    -------
+    float
+        Estimated wall time, s.
+
+    Raises
+    ------
+    UsageError
+        When the points need more than :data:`MEMORY_SHARE` of the memory available, or the
+        run would take longer than :data:`MAX_SECONDS`.
+    """
+    memory = available_memory() if memory is None else memory
+    need = points * BYTES_PER_POINT
+    fits = int(memory * MEMORY_SHARE / BYTES_PER_POINT)
+    if need > memory * MEMORY_SHARE:
+        raise UsageError(argument, f"this run would record {quantity(points)} output points, about "
+                                   f"{size_text(need)} of memory, and {size_text(memory)} is available: "
+                                   f"shorten the run or lower -n/--points-per-period (at most about "
+                                   f"{quantity(fits)} points fit)")
+    seconds = points * SECONDS_PER_POINT
+    if seconds > MAX_SECONDS:
+        raise UsageError(argument, f"this run would record {quantity(points)} output points, about "
+                                   f"{duration_text(seconds)} of computing: shorten the run or lower "
+                                   "-n/--points-per-period")
+    return seconds
+
+
+def check_sweep(runs: int, points_per_run: int, workers: int, memory: int | None = None,
+                runs_argument: str = "-a/--amplitudes", fewer: str = "use fewer values on its axes") -> float:
+    """Refuse a sweep that does not fit in memory or in :data:`MAX_SECONDS`; return its estimated seconds.
+
+    Parameters
+    ----------
+    runs : int
+        Runs of the grid.
+    points_per_run : int
+        Output points of each run (periods times points per period).
+    workers : int
+        Worker threads that share the runs (and each hold one run's points).
+    memory : int, optional
+        Bytes available (default :func:`available_memory`).
+    runs_argument, fewer : str
+        The option a refusal for too many runs names, and what it advises.
+
+    Raises
+    ------
+    UsageError
+        Naming the number of runs or points, the memory or time it needs, and what to change.
+    """
+    memory = available_memory() if memory is None else memory
+    per_run = points_per_run * BYTES_PER_POINT
+    if per_run * workers > memory * MEMORY_SHARE:
+        raise UsageError("-p/--periods", f"each run would record {quantity(points_per_run)} output points, about "
+                                         f"{size_text(per_run)} of memory per worker ({workers} workers), and "
+                                         f"{size_text(memory)} is available: lower -p/--periods or "
+                                         "-n/--points-per-period, or use fewer -j/--workers")
+    need = runs * BYTES_PER_SWEEP_RUN
+    if need > memory * MEMORY_SHARE:
+        fits = int(memory * MEMORY_SHARE / BYTES_PER_SWEEP_RUN)
+        raise UsageError(runs_argument, f"this sweep has {quantity(runs)} runs, about {size_text(need)} of "
+                                        f"memory for their rows, and {size_text(memory)} is available: {fewer} "
+                                        f"(at most about {quantity(fits)} runs fit)")
+    seconds = runs * (SECONDS_PER_SWEEP_RUN + points_per_run * SECONDS_PER_POINT) / max(workers, 1)
+    if seconds > MAX_SECONDS:
+        raise UsageError(runs_argument, f"this sweep has {quantity(runs)} runs of {quantity(points_per_run)} "
+                                        f"points, about {duration_text(seconds)} on {workers} workers: {fewer}, "
+                                        "fewer periods or points per period")
+    return seconds
+
+
+def plan_run(runner: FmuRunner, pendulum: Pendulum, grid: TimeGrid, argument: str = "-T/--stop-time",
+             what: str = "simulating") -> int:
+    """Check one run's size before it starts, and say so when it will take a while.
+
+    Parameters
+    ----------
+    runner : FmuRunner
+        The loaded FMU (asked for the exact period the grid counts in).
+    pendulum : Pendulum
+        The problem.
+    grid : TimeGrid
+        The output points asked for.
+    argument : str
+        The option to name in a refusal.
+    what : str
+        The verb of the progress line (``simulating``, ``drawing``).
+
+    Returns
+    -------
+    int
+        The run's output points.
+
+    Raises
+    ------
+    UsageError
+        From :func:`check_run`.
+    """
+    import sys
+
+    from pendulum_fmu.fmu.runner import reference_period  # fmpy: imported when a run is planned
+
+    points = grid_points(grid, reference_period(runner.period(pendulum), pendulum))
+    seconds = check_run(points, argument)
+    if seconds > SLOW_SECONDS:
+        print(f"{what} {quantity(points)} output points: about {duration_text(seconds)} ...", file=sys.stderr,
+              flush=True)
+    return points
