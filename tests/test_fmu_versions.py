@@ -91,7 +91,7 @@ def test_every_command_refuses_another_model_in_one_line(argv: list[str], foreig
         assert stop.value.code == 2, kind
         lines = capsys.readouterr().err.strip().splitlines()
         assert len(lines) == 1, (kind, lines)
-        reason = "cannot be read" if kind == "malformed XML" else "is not the Pendulum FMU of pendulum-fmu"
+        reason = "is not an FMU" if kind == "malformed XML" else "is not the Pendulum FMU of pendulum-fmu"
         assert f"argument --fmu: '{fmu}'" in lines[0] and reason in lines[0], lines[0]
     assert list(tmp_path.iterdir()) == [] and _temp_folders() <= before
 
