@@ -83,15 +83,6 @@ def platform_options() -> list[str]:
     return ["-DPENDULUM_PLATFORMS=ON", f"-DPENDULUM_ZIG={zig}", f"-DPENDULUM_PYTHON={sys.executable}"]
 
 
-def fmi3_headers_present() -> bool:
-    """True when this build environment's fmpy carries the FMI 3.0 headers (cmake/Fmi3.cmake)."""
-    try:
-        import fmpy  # noqa: PLC0415 (a build requirement, absent in a plain checkout)
-    except ImportError:
-        return False
-    return (Path(fmpy.__file__).parent / "c-code" / "fmi3Functions.h").is_file()
-
-
 def build_fmu(platforms: bool = False) -> Path | None:
     """Configure and build the FMUs and the ``pendulum_exact`` and ``pendulum_driver`` libraries; the build folder, or None
     (with a warning).
@@ -111,13 +102,7 @@ def build_fmu(platforms: bool = False) -> Path | None:
               "it is looked for at run time", file=sys.stderr)
         return None
     options = platform_options() if platforms else []
-    targets = ["fmu", "pendulum_exact", "pendulum_driver"] + (["pendulum_exact_platforms"] if options else [])
-    if fmi3_headers_present():
-        targets.append("fmu3")
-        options.append(f"-DPENDULUM_PYTHON={sys.executable}")   # the Python whose fmpy has the headers
-    else:
-        print("warning: pendulum-fmu: no fmpy in the build environment: the FMI 3.0 FMU is not built",
-              file=sys.stderr)
+    targets = ["fmu", "fmu3", "pendulum_exact", "pendulum_driver"] + (["pendulum_exact_platforms"] if options else [])
     commands = [[cmake, "-S", str(ROOT), "-B", str(build_dir), "-DCMAKE_BUILD_TYPE=Release", *options],
                 [cmake, "--build", str(build_dir), "--target", *targets, "--parallel", str(os.cpu_count() or 1)]]
     for command in commands:

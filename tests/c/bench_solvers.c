@@ -228,7 +228,9 @@ static RunResult run_solver(const Fmi *fmi, const fmi2CallbackFunctions *cb, dou
         theta[0] = out[0];
         omega[0] = out[1];
         for (long i = 1; i < n && ok; i++) {
-            ok = fmi->do_step(c, times[i - 1], times[i] - times[i - 1], fmi2True) == fmi2OK &&
+            /* fmi2Warning: the step certificate says the error is beyond 100 tol; the study
+             * measures that error itself, so the run counts (docs/certificate.md) */
+            ok = fmi->do_step(c, times[i - 1], times[i] - times[i - 1], fmi2True) <= fmi2Warning &&
                  fmi->get_real(c, vr_out, 2, out) == fmi2OK;
             theta[i] = out[0];
             omega[i] = out[1];
