@@ -103,9 +103,9 @@ def run(args: argparse.Namespace) -> int:
         print(f"bench_exact amplitude_deg={r.amplitude_deg:.10g} n={r.n}{c_field} "
               f"python_ns_per_point={r.python_ns:.3f} scipy_ns_per_point={r.scipy_ns:.3f}")
     for r in results:
-        fields = {"eval": r.c.eval, "batch": r.c.batch, "gsl": r.c.gsl, "init_eval": r.c.init,
-                  "python": r.python, "scipy": r.scipy, "python_states": r.python_states,
-                  "scipy_states": r.scipy_states}
+        fields = {"eval": r.c.eval, "batch": r.c.batch, "gsl": r.c.gsl, "init_eval": r.c.init} if with_c else {}
+        fields.update({"python": r.python, "scipy": r.scipy, "python_states": r.python_states,
+                       "scipy_states": r.scipy_states})
         text = " ".join(f"{name}_best={t.best:.3f} {name}_median={t.median:.3f}" for name, t in fields.items())
         print(f"bench_exact_all amplitude_deg={r.amplitude_deg:.10g} n={r.n} {text}")
     return 0
