@@ -26,14 +26,17 @@ static const char *const SOLVER_NAMES[] = {"?", "dopri5", "rk4", "rkn", "symplec
 
 double certificate_ratio(double w0, double tolerance, double theta, double omega, double theta_exact,
                          double omega_exact) {
-    const double bound_theta = CERTIFICATE_FACTOR * tolerance * fmax(1.0, fabs(theta_exact));
-    const double bound_omega = CERTIFICATE_FACTOR * tolerance * fmax(w0, fabs(omega_exact));
+    /* fmax(1, |theta_exact|) and fmax(w0, |omega_exact|) written out (fmax is a library call
+     * on x86-64): the same value for every argument, NaN included (the other operand) */
+    const double abs_theta = fabs(theta_exact), abs_omega = fabs(omega_exact);
+    const double bound_theta = CERTIFICATE_FACTOR * tolerance * (abs_theta > 1.0 ? abs_theta : 1.0);
+    const double bound_omega = CERTIFICATE_FACTOR * tolerance * (abs_omega > w0 ? abs_omega : w0);
     const double dev_theta = fabs(theta - theta_exact) / bound_theta;
     const double dev_omega = fabs(omega - omega_exact) / bound_omega;
     if (!(dev_theta <= DBL_MAX) || !(dev_omega <= DBL_MAX)) {
         return INFINITY; /* NaN or overflow: nothing is certified */
     }
-    return fmax(dev_theta, dev_omega);
+    return dev_theta > dev_omega ? dev_theta : dev_omega; /* both finite: fmax's value */
 }
 
 double certificate_departure(const PendulumExact *exact, double t, double tolerance, double theta, double omega,
