@@ -30,6 +30,7 @@ static Status take_experiment(Instance *inst, const char *function, int toleranc
     if (stop_time_defined && !(stop_time >= start_time)) {
         return instance_fail(inst, function, "stopTime %g is before startTime %g", stop_time, start_time);
     }
+    model_exact_forget(&inst->exact_now);
     inst->data.tolerance = tolerance_defined ? tolerance : DEFAULT_TOLERANCE;
     inst->data.start_time = start_time;
     inst->data.time = start_time;
@@ -71,6 +72,7 @@ Status instance_exit_initialization(Instance *inst, const char *function) {
     if (!instance_allowed(inst, function, MODE_INITIALIZATION)) {
         return STATUS_ERROR;
     }
+    model_exact_forget(&inst->exact_now); /* the exact solution is set up anew */
     problem = model_initialize(&inst->data, inst->type);
     if (problem != NULL) {
         return instance_fail(inst, function, "%s", problem);
@@ -92,6 +94,7 @@ Status instance_reset(Instance *inst, const char *function) {
         return STATUS_ERROR;
     }
     model_reset(&inst->data, inst->type);
+    model_exact_forget(&inst->exact_now);
     return STATUS_OK;
 }
 
@@ -119,7 +122,7 @@ Status instance_get_reals(Instance *inst, const char *function, const ValueRefer
             value[i] = inst->data.time;
             continue;
         }
-        problem = model_get_real(&inst->data, vr[i], &value[i]);
+        problem = model_get_real(&inst->data, &inst->exact_now, vr[i], &value[i]);
         if (problem != NULL) {
             return instance_fail(inst, function, "%s (value reference %u): %s", variable_name(vr[i]), vr[i],
                                  problem);
@@ -134,6 +137,7 @@ Status instance_set_reals(Instance *inst, const char *function, const ValueRefer
     if (!instance_arrays_allowed(inst, function, SET_MODES, vr, nvr, value)) {
         return STATUS_ERROR;
     }
+    model_exact_forget(&inst->exact_now); /* a parameter or a start value may change */
     for (i = 0; i < nvr; i++) {
         const char *problem = inst->fmi_version == 3 && vr[i] == VR_TIME_FMI3
                                   ? "is the independent variable: set it with fmi3SetTime"
@@ -159,7 +163,9 @@ Status instance_get_integer(Instance *inst, const char *function, ValueReference
 Status instance_set_integer(Instance *inst, const char *function, ValueReference vr, long value) {
     /* a value beyond int is no item of Solver either: narrowed, it is refused as such */
     int narrowed = value > INT_MAX ? INT_MAX : value < INT_MIN ? INT_MIN : (int)value;
-    const char *problem = model_set_integer(&inst->data, vr, narrowed);
+    const char *problem;
+    model_exact_forget(&inst->exact_now);
+    problem = model_set_integer(&inst->data, vr, narrowed);
     if (problem != NULL) {
         return instance_fail(inst, function, "%s (value reference %u) = %ld: %s", variable_name(vr), vr, value,
                              problem);

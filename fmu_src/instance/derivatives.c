@@ -213,9 +213,9 @@ Status instance_output_derivatives(Instance *inst, const char *function, const V
     data = &inst->data;
     a = data->g / data->L;
     theta_derivatives(a, data->theta, data->omega, d);
-    have_exact = pendulum_exact_resolvable(&data->exact, data->time);
+    /* theta_exact and omega_exact at this time: the instance's cached ones (model.h) */
+    have_exact = model_exact_now(data, &inst->exact_now, &theta_exact, &omega_exact) == NULL;
     if (have_exact) {
-        pendulum_exact_eval(&data->exact, data->time, &theta_exact, &omega_exact);
         /* sin and cos of theta_exact from the elliptic functions themselves: -(g/L) sin of the
          * rounded theta_exact is only absolutely accurate near the top and after many turns */
         pendulum_exact_sin_cos(&data->exact, data->time, &sin_exact, &cos_exact);

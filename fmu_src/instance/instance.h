@@ -46,6 +46,9 @@ struct Instance {
     int log_enabled[LOG_CATEGORY_COUNT];
     StateNode *states;       /* the FMU states this instance handed out and has not freed:
                                 the registry FreeFMUstate checks a pointer against */
+    ExactCache exact_now;    /* theta_exact, omega_exact at data.time, evaluated once (model.h):
+                                beside data, so no part of an FMU state; every call that changes
+                                the time, a value or the whole data drops it */
     int certificate_off;     /* 1: DoStep skips the certificate (instance/certificate.c). No FMI
                                 call sets it: only C tests that link the core, to show that the
                                 certificate changes no number (tests/c/test_certificate.c) */
@@ -142,6 +145,10 @@ Status instance_do_step(Instance *inst, const char *function, double point, doub
  * state is not finite). Writes the exact state. */
 double certificate_departure(const PendulumExact *exact, double t, double tolerance, double theta, double omega,
                              double *theta_exact, double *omega_exact);
+/* The same departure for an exact state already evaluated (theta_exact, omega_exact at the same
+ * time; the step uses the instance's exact_now): the same arithmetic, bit for bit. */
+double certificate_ratio(double w0, double tolerance, double theta, double omega, double theta_exact,
+                         double omega_exact);
 /* 1 if the solver holds the bound over ten periods for a motion of parameter m (m1 = 1 - m from
  * its cosine form) at this tolerance: tol |1 - m| / max(1, m) >= integrator_reach(solver). */
 int certificate_reachable(int solver, double tolerance, double m1, double m);

@@ -128,6 +128,7 @@ Status instance_set_state(Instance *inst, const char *function, const void *stat
         return instance_fail(inst, function, "the state is refused: %s", problem);
     }
     memcpy(&inst->data, state, sizeof inst->data);
+    model_exact_forget(&inst->exact_now); /* not part of a state: evaluated again when needed */
     return STATUS_OK;
 }
 

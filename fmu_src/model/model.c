@@ -181,7 +181,45 @@ static const char *current_exact(const ModelData *data, PendulumExact *exact) {
     return NULL;
 }
 
-const char *model_get_real(const ModelData *data, ValueReference vr, double *value) {
+void model_exact_forget(ExactCache *cache) {
+    cache->valid = 0;
+}
+
+#define UNRESOLVED "the exact solution is not representable in double precision at this time: more than " \
+                   "2^60 quarter periods from the start time, the phase is not resolved (rate held to 104 bits)"
+
+const char *model_exact_now(const ModelData *data, ExactCache *cache, double *theta, double *omega) {
+    PendulumExact fresh;
+    const PendulumExact *exact = &data->exact;
+    const int fixed = data->mode != MODE_INITIALIZATION && data->mode != MODE_INSTANTIATED;
+    if (fixed && cache->valid && cache->time == data->time) {
+        *theta = cache->theta;
+        *omega = cache->omega;
+        return NULL;
+    }
+    if (!fixed) {
+        const char *problem = current_exact(data, &fresh);
+        if (problem != NULL) {
+            return problem;
+        }
+        exact = &fresh;
+    }
+    if (!pendulum_exact_resolvable(exact, data->time)) {
+        return UNRESOLVED;
+    }
+    pendulum_exact_eval(exact, data->time, theta, omega);
+    cache->evaluations++;
+    if (fixed) {
+        /* before initialization the exact solution follows every value set: nothing is kept */
+        cache->valid = 1;
+        cache->time = data->time;
+        cache->theta = *theta;
+        cache->omega = *omega;
+    }
+    return NULL;
+}
+
+const char *model_get_real(const ModelData *data, ExactCache *cache, ValueReference vr, double *value) {
     PendulumExact exact;
     double unused;
     const char *problem = NULL;
@@ -194,30 +232,31 @@ const char *model_get_real(const ModelData *data, ValueReference vr, double *val
     case VR_DER_OMEGA: return model_derivatives(data, &unused, value);
     case VR_X: *value = data->L * sin(data->theta); break;
     case VR_Y: *value = -data->L * cos(data->theta); break;
-    case VR_THETA_EXACT:
-    case VR_OMEGA_EXACT:
     case VR_PERIOD:
         problem = current_exact(data, &exact);
         if (problem != NULL) {
             return problem;
         }
-        if (vr == VR_PERIOD) {
-            *value = pendulum_exact_period(&exact); /* +inf on the separatrix */
-        } else {
-            double theta, omega;
-            if (!pendulum_exact_resolvable(&exact, data->time)) {
-                return "the exact solution is not representable in double precision at this time: more than "
-                       "2^60 quarter periods from the start time, the phase is not resolved (rate held to 104 bits)";
-            }
-            pendulum_exact_eval(&exact, data->time, &theta, &omega);
-            *value = vr == VR_THETA_EXACT ? theta : omega;
-        }
-        /* Never hand out a silent NaN: extreme parameters or times (|theta| beyond what a
-         * double holds with any accuracy) are reported instead. */
-        if (isnan(*value) || (vr != VR_PERIOD && !isfinite(*value))) {
+        *value = pendulum_exact_period(&exact); /* +inf on the separatrix */
+        if (isnan(*value)) {
             return "the exact solution is not representable in double precision at this time and these values";
         }
         break;
+    case VR_THETA_EXACT:
+    case VR_OMEGA_EXACT: {
+        double theta, omega;
+        problem = model_exact_now(data, cache, &theta, &omega);
+        if (problem != NULL) {
+            return problem;
+        }
+        *value = vr == VR_THETA_EXACT ? theta : omega;
+        /* Never hand out a silent NaN: extreme parameters or times (|theta| beyond what a
+         * double holds with any accuracy) are reported instead. */
+        if (!isfinite(*value)) {
+            return "the exact solution is not representable in double precision at this time and these values";
+        }
+        break;
+    }
     default: return "unknown value reference of type Real";
     }
     return NULL;

@@ -56,6 +56,30 @@ typedef struct {
     Integrator integrator;      /* Co-Simulation solver */
 } ModelData;
 
+/* The exact state (theta_exact, omega_exact) at the current time, evaluated once by whoever
+ * needs it first (the certificate after a DoStep, a GetReal, the output derivatives) and
+ * reused while `time` and the exact solution stay the same. It is no part of ModelData, so
+ * no part of an FMU state: a restored state recomputes it. The instance owns one beside its
+ * ModelData and drops it (model_exact_forget) at every change of time, parameter, start
+ * value, state restore and reset. Filled only after initialization, when the exact solution
+ * is the one ExitInitializationMode set up; before it every read evaluates afresh. */
+typedef struct {
+    int valid;                  /* 1: theta and omega are those at `time` */
+    double time;
+    double theta, omega;
+    unsigned long evaluations;  /* exact evaluations made for this instance (never reset):
+                                   tests count them, one per time */
+} ExactCache;
+
+/* Drops the cached exact state (the count of evaluations stays). */
+void model_exact_forget(ExactCache *cache);
+
+/* theta_exact and omega_exact at data->time, from the cache or evaluated once and kept.
+ * NULL, or why there is no such value (the time is not resolvable, the start values or
+ * parameters cannot set up an exact solution). The values are pendulum_exact_eval's, bit for
+ * bit. */
+const char *model_exact_now(const ModelData *data, ExactCache *cache, double *theta, double *omega);
+
 /* Sets start values (the just-instantiated state) for an instance of the given interface. */
 void model_reset(ModelData *data, InterfaceType type);
 
@@ -68,8 +92,9 @@ const char *model_check_state(const ModelData *data, InterfaceType type);
  * Returns NULL on success, otherwise a message naming what is wrong. */
 const char *model_initialize(ModelData *data, InterfaceType type);
 
-/* Variable access by value reference; each returns NULL or an error message. */
-const char *model_get_real(const ModelData *data, ValueReference vr, double *value);
+/* Variable access by value reference; each returns NULL or an error message. theta_exact and
+ * omega_exact come through the cache (model_exact_now). */
+const char *model_get_real(const ModelData *data, ExactCache *cache, ValueReference vr, double *value);
 const char *model_set_real(ModelData *data, ValueReference vr, double value);
 const char *model_get_integer(const ModelData *data, ValueReference vr, int *value);
 const char *model_set_integer(ModelData *data, ValueReference vr, int value);

@@ -201,8 +201,9 @@ StepEnd integrator_step_end(double time, double point, double step, double *t_en
 {
     if (!(isfinite(step) && step > 0.0))
         return STEP_END_BAD_SIZE;
+    /* point == time, the usual case, needs no ulp (nextafter is a library call) */
     if (!isfinite(point) ||
-        !(fabs(point - time) <= INTEGRATOR_POINT_ULPS * ulp_of(fmax(fabs(time), fabs(point)))))
+        (point != time && !(fabs(point - time) <= INTEGRATOR_POINT_ULPS * ulp_of(fmax(fabs(time), fabs(point))))))
         return STEP_END_BAD_POINT;
     const double end = point + step;
     if (!isfinite(end))
