@@ -128,6 +128,19 @@ static const char *partial(const ModelData *data, ValueReference unknown, ValueR
     return NULL;
 }
 
+/* No made-up value with OK: a derivative that overflows double precision (extreme g and L, or
+ * a seed that is not finite) is refused with its reason, never handed out. */
+static Status all_finite(Instance *inst, const char *function, const char *what, const double value[], size_t n) {
+    size_t i;
+    for (i = 0; i < n; i++) {
+        if (!isfinite(value[i])) {
+            return instance_fail(inst, function, "%s %zu is %g: beyond double precision at L = %g, g = %g "
+                                 "(or a seed that is not finite)", what, i, value[i], inst->data.L, inst->data.g);
+        }
+    }
+    return STATUS_OK;
+}
+
 Status instance_partials(Instance *inst, const char *function, int adjoint, const ValueReference unknowns[],
                          size_t n_unknowns, const ValueReference knowns[], size_t n_knowns, const double seed[],
                          double sensitivity[]) {
@@ -167,7 +180,7 @@ Status instance_partials(Instance *inst, const char *function, int adjoint, cons
             }
         }
     }
-    return STATUS_OK;
+    return all_finite(inst, function, "sensitivity", sensitivity, n_out);
 }
 
 /* Derivatives 1..3 of theta along the equation at (theta, omega), a = g/L:
@@ -249,5 +262,5 @@ Status instance_output_derivatives(Instance *inst, const char *function, const V
                                  variable_name(vr[i]), vr[i]);
         }
     }
-    return STATUS_OK;
+    return all_finite(inst, function, "output derivative", value, nvr);
 }
