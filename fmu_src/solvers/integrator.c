@@ -93,6 +93,8 @@ static int init_common(Integrator *it, SolverKind kind, double w0sq, double w0sq
          * H = omega^2/2 + 2 w0sq sin^2(theta/2) would lose it to cancellation */
         it->energy0 = integ_energy0(w0sq, w0sq_lo, theta0, omega0, &it->energy0_lo);
         it->stats.rhs_evals++;
+        if (!isfinite(it->energy0))
+            return -1;
     }
     integ_rhs(it, it->y, it->f);
     it->f_prev[0] = it->f[0];

@@ -32,6 +32,13 @@ double integ_energy0(double w0sq, double w0sq_lo, double theta0, double omega0, 
     const EllipticDD w2 = {2.0 * w0sq, 2.0 * w0sq_lo};
     const EllipticDD pot = elliptic_dd_mul(w2, cc);
     const EllipticDD g = elliptic_dd_add(kin, elliptic_dd_neg(pot));
+    if (!(isfinite(g.hi) && isfinite(g.lo))) {
+        /* the exact products split their factors (Dekker), which overflows for factors near
+         * DBL_MAX / 2^27 (g/L or omega0^2 beyond about 1e300): G in double there, finite or
+         * not (integrator_init refuses a G that is not) */
+        *lo = 0.0;
+        return 0.5 * omega0 * omega0 - 2.0 * w0sq * (c.hi * c.hi);
+    }
     *lo = g.lo;
     return g.hi;
 }
