@@ -29,6 +29,7 @@
 
 #include "check.h"
 #include "instance.h"
+#include "core_host.h"
 #include "pendulum_vrs.h"
 
 static const char *const NAMES[] = {"?", "dopri5", "rk4", "rkn", "symplectic"};
@@ -50,16 +51,6 @@ static void host_log(const Instance *inst, Status status, const char *category, 
         }
         snprintf(current_log->last, sizeof current_log->last, "%s", message);
     }
-}
-static void *host_allocate(const Instance *inst, size_t size)
-{
-    (void)inst;
-    return calloc(1, size);
-}
-static void host_release(const Instance *inst, void *memory)
-{
-    (void)inst;
-    free(memory);
 }
 
 typedef struct {

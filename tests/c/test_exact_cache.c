@@ -20,6 +20,7 @@
 
 #include "check.h"
 #include "instance.h"
+#include "core_host.h"
 #include "pendulum_vrs.h"
 
 static void host_log(const Instance *inst, Status status, const char *category, const char *message)
@@ -28,16 +29,6 @@ static void host_log(const Instance *inst, Status status, const char *category, 
     (void)status;
     (void)category;
     (void)message;
-}
-static void *host_allocate(const Instance *inst, size_t size)
-{
-    (void)inst;
-    return calloc(1, size);
-}
-static void host_release(const Instance *inst, void *memory)
-{
-    (void)inst;
-    free(memory);
 }
 
 /* An instance of `type` released from theta0 (L = 1, g = 9.81), solver rkn at tol, initialized. */
