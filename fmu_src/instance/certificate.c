@@ -39,17 +39,6 @@ double certificate_ratio(double w0, double tolerance, double theta, double omega
     return dev_theta > dev_omega ? dev_theta : dev_omega; /* both finite: fmax's value */
 }
 
-double certificate_departure(const PendulumExact *exact, double t, double tolerance, double theta, double omega,
-                             double *theta_exact, double *omega_exact) {
-    if (!pendulum_exact_resolvable(exact, t)) {
-        *theta_exact = NAN;
-        *omega_exact = NAN;
-        return INFINITY;
-    }
-    pendulum_exact_eval(exact, t, theta_exact, omega_exact);
-    return certificate_ratio(exact->w0, tolerance, theta, omega, *theta_exact, *omega_exact);
-}
-
 int certificate_reachable(int solver, double tolerance, double m1, double m) {
     /* near the separatrix an energy error dm1 moves the period by ~dm1 / m1 of itself
      * (dK/dm ~ 1/(2 m1)): the accuracy a solver needs over ten periods is about tol |1 - m|,

@@ -140,13 +140,9 @@ Status instance_do_step(Instance *inst, const char *function, double point, doub
 /* OK certifies |theta - theta_exact| <= CERTIFICATE_FACTOR tol max(1, |theta_exact|) and
  * |omega - omega_exact| <= CERTIFICATE_FACTOR tol max(w0, |omega_exact|). */
 #define CERTIFICATE_FACTOR 100.0
-/* The departure of (theta, omega) at t from the exact solution in units of the bound: the larger
- * of the two ratios (<= 1: certified; +inf where the exact solution does not resolve t, or the
- * state is not finite). Writes the exact state. */
-double certificate_departure(const PendulumExact *exact, double t, double tolerance, double theta, double omega,
-                             double *theta_exact, double *omega_exact);
-/* The same departure for an exact state already evaluated (theta_exact, omega_exact at the same
- * time; the step uses the instance's exact_now): the same arithmetic, bit for bit. */
+/* The departure of (theta, omega) from the exact state (theta_exact, omega_exact) at the same
+ * time, in units of the bound: the larger of the two ratios (<= 1: certified; +inf where the
+ * state is not finite). The step reads the exact state from the instance's exact_now. */
 double certificate_ratio(double w0, double tolerance, double theta, double omega, double theta_exact,
                          double omega_exact);
 /* 1 if the solver holds the bound over ten periods for a motion of parameter m (m1 = 1 - m from

@@ -14,8 +14,7 @@ from collections.abc import Callable, Sequence
 from pathlib import Path
 
 from pendulum_fmu.errors import UsageError
-from pendulum_fmu.fmu.identity import pendulum_problem
-from pendulum_fmu.fmu.locate import fmu_problem, locate_fmu
+from pendulum_fmu.fmu.locate import locate_fmu, runnable_problem
 from pendulum_fmu.output.paths import OutputError, check_output_file, check_output_folder
 from pendulum_fmu.spec import CS_SOLVERS, DEFAULT_CS_SOLVER, ME_SOLVERS, SOLVERS, Method, Pendulum, TimeGrid
 
@@ -191,7 +190,7 @@ def fmu_file(text: str) -> Path:
     """A type for an FMU: an existing zip archive whose ``modelDescription.xml`` is this project's
     Pendulum (FMI 2.0 or 3.0)."""
     path = existing_file(text)
-    problem = fmu_problem(path) or pendulum_problem(path)
+    problem = runnable_problem(path)
     if problem is not None:
         raise argparse.ArgumentTypeError(problem)
     return path

@@ -23,7 +23,6 @@ speed; :func:`library_path` says which.
 from __future__ import annotations
 
 import ctypes
-import os
 import time
 from functools import lru_cache
 from pathlib import Path
@@ -34,8 +33,7 @@ import numpy as np
 from pendulum_fmu.errors import BuildError, SimulationError
 from pendulum_fmu.interrupt import deferred_interrupt
 from pendulum_fmu.interrupt import pending as interrupt_pending
-from pendulum_fmu.fmu.build import DEFAULT_BUILD_DIR
-from pendulum_fmu.fmu.library import PACKAGE_LIB_DIR, platform_folder
+from pendulum_fmu.fmu.library import find_library, library_file, load_library, platform_folder
 from pendulum_fmu.fmu.log import FmuLog
 
 ABI = 1
@@ -69,8 +67,7 @@ class _Outcome(ctypes.Structure):
 
 def library_name() -> str:
     """The library's file name on this platform."""
-    _, exact_name = platform_folder()
-    return exact_name.replace("pendulum_exact", "pendulum_driver")
+    return library_file("pendulum_driver")
 
 
 def library_path() -> Path | None:
@@ -81,16 +78,7 @@ def library_path() -> Path | None:
     BuildError
         If ``$PENDULUM_DRIVER_LIB`` names no file.
     """
-    override = os.environ.get("PENDULUM_DRIVER_LIB")
-    if override:
-        if not Path(override).is_file():
-            raise BuildError(f"$PENDULUM_DRIVER_LIB names no file: {override!r}")
-        return Path(override)
-    folder, _ = platform_folder()
-    for candidate in (PACKAGE_LIB_DIR / folder / library_name(), DEFAULT_BUILD_DIR / library_name()):
-        if candidate.is_file():
-            return candidate
-    return None
+    return find_library("pendulum_driver")
 
 
 @lru_cache(maxsize=1)
@@ -99,13 +87,7 @@ def _library() -> ctypes.CDLL | None:
     path = library_path()
     if path is None:
         return None
-    try:
-        library = ctypes.CDLL(str(path))
-    except OSError as error:
-        raise BuildError(f"cannot load {path}: {error}") from None
-    library.pendulum_driver_abi.restype = ctypes.c_int
-    if library.pendulum_driver_abi() != ABI:
-        raise BuildError(f"{path} speaks interface {library.pendulum_driver_abi()}, this package {ABI}: rebuild it")
+    library = load_library(path, "pendulum_driver", ABI)
     library.pendulum_drive.restype = ctypes.c_int
     library.pendulum_drive.argtypes = [ctypes.POINTER(_Fmu), ctypes.c_void_p, ctypes.c_size_t, ctypes.c_size_t,
                                        ctypes.c_void_p, ctypes.c_size_t, ctypes.POINTER(_Outcome)]

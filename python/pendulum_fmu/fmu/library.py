@@ -50,6 +50,55 @@ def platform_folder() -> tuple[str, str]:
     return folder, "libpendulum_exact.so"
 
 
+def library_file(stem: str) -> str:
+    """The file name of the shipped library ``stem`` (``pendulum_exact``, ``pendulum_driver``) here."""
+    _, exact_name = platform_folder()
+    return exact_name.replace("pendulum_exact", stem)
+
+
+def find_library(stem: str) -> Path | None:
+    """The shipped library ``stem`` for this platform, or None when there is none.
+
+    Looked for in ``$<STEM>_LIB`` (``$PENDULUM_EXACT_LIB``, ``$PENDULUM_DRIVER_LIB``), then the
+    package's ``lib/<platform>/``, then the checkout's ``build/``.
+
+    Raises
+    ------
+    BuildError
+        If the environment variable names no file.
+    """
+    variable = f"{stem.upper()}_LIB"
+    override = os.environ.get(variable)
+    if override:
+        if not Path(override).is_file():
+            raise BuildError(f"${variable} names no file: {override!r}")
+        return Path(override)
+    folder, _ = platform_folder()
+    for candidate in (PACKAGE_LIB_DIR / folder / library_file(stem), DEFAULT_BUILD_DIR / library_file(stem)):
+        if candidate.is_file():
+            return candidate
+    return None
+
+
+def load_library(path: Path, stem: str, abi: int) -> ctypes.CDLL:
+    """Load the library at ``path`` and check that ``<stem>_abi()`` returns ``abi``.
+
+    Raises
+    ------
+    BuildError
+        With one line, when it cannot be loaded or speaks another interface.
+    """
+    try:
+        library = ctypes.CDLL(str(path))
+    except OSError as error:
+        raise BuildError(f"cannot load {path}: {error}") from None
+    version = getattr(library, f"{stem}_abi")
+    version.restype = ctypes.c_int
+    if version() != abi:
+        raise BuildError(f"{path} speaks interface {version()}, this package {abi}: rebuild it")
+    return library
+
+
 def library_path() -> Path:
     """The ``pendulum_exact`` library for this platform.
 
@@ -58,30 +107,17 @@ def library_path() -> Path:
     BuildError
         With one line, when no library for this platform is installed or built.
     """
-    override = os.environ.get("PENDULUM_EXACT_LIB")
-    if override:
-        if not Path(override).is_file():
-            raise BuildError(f"$PENDULUM_EXACT_LIB names no file: {override!r}")
-        return Path(override)
-    folder, name = platform_folder()
-    for candidate in (PACKAGE_LIB_DIR / folder / name, DEFAULT_BUILD_DIR / name):
-        if candidate.is_file():
-            return candidate
-    raise BuildError(f"no pendulum_exact library for this platform ({folder}): this installation ships none; "
-                     f"build it with cmake (target pendulum_exact) and set PENDULUM_EXACT_LIB")
+    path = find_library("pendulum_exact")
+    if path is None:
+        raise BuildError(f"no pendulum_exact library for this platform ({platform_folder()[0]}): this installation "
+                         f"ships none; build it with cmake (target pendulum_exact) and set PENDULUM_EXACT_LIB")
+    return path
 
 
 @lru_cache(maxsize=1)
 def _library() -> ctypes.CDLL:
     """Load the library once and declare the signature of ``pendulum_exact_many``."""
-    path = library_path()
-    try:
-        library = ctypes.CDLL(str(path))
-    except OSError as error:
-        raise BuildError(f"cannot load {path}: {error}") from None
-    library.pendulum_exact_abi.restype = ctypes.c_int
-    if library.pendulum_exact_abi() != ABI:
-        raise BuildError(f"{path} speaks interface {library.pendulum_exact_abi()}, this package {ABI}: rebuild it")
+    library = load_library(library_path(), "pendulum_exact", ABI)
     pointer = np.ctypeslib.ndpointer(dtype=np.float64, flags="C_CONTIGUOUS")
     library.pendulum_exact_many.restype = ctypes.c_size_t
     library.pendulum_exact_many.argtypes = [ctypes.c_size_t] + [pointer] * 7

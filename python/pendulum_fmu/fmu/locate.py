@@ -73,6 +73,12 @@ def fmu_problem(path: Path) -> str | None:
     return None
 
 
+def runnable_problem(path: Path) -> str | None:
+    """Why the package cannot run ``path``: not an FMU file (:func:`fmu_problem`), or not this
+    project's Pendulum (:func:`~pendulum_fmu.fmu.identity.pendulum_problem`); None if it can."""
+    return fmu_problem(path) or pendulum_problem(path)
+
+
 def locate_fmu(explicit: Path | None = None, build: bool = True, fmi_version: int | None = None) -> Path:
     """Return the FMU to run.
 
@@ -102,7 +108,7 @@ def locate_fmu(explicit: Path | None = None, build: bool = True, fmi_version: in
     if explicit is not None:
         if not Path(explicit).exists():
             raise UsageError("--fmu", f"no such file: {str(explicit)!r}")
-        problem = fmu_problem(Path(explicit)) or pendulum_problem(Path(explicit))
+        problem = runnable_problem(Path(explicit))
         if problem is not None:
             raise UsageError("--fmu", problem)
         _check_version("--fmu", Path(explicit), fmi_version)
@@ -112,7 +118,7 @@ def locate_fmu(explicit: Path | None = None, build: bool = True, fmi_version: in
         if not Path(override).is_file():
             raise UsageError("$PENDULUM_FMU", f"no such file: {override!r}: build the FMU "
                              "(cmake -S . -B build && cmake --build build) or unset PENDULUM_FMU")
-        problem = fmu_problem(Path(override)) or pendulum_problem(Path(override))
+        problem = runnable_problem(Path(override))
         if problem is not None:
             raise UsageError("$PENDULUM_FMU", problem)
         if fmi_version is None or fmi_version_of(Path(override)) == fmi_version:
