@@ -33,7 +33,7 @@ import numpy as np
 from pendulum_fmu.errors import BuildError, SimulationError
 from pendulum_fmu.interrupt import deferred_interrupt
 from pendulum_fmu.interrupt import pending as interrupt_pending
-from pendulum_fmu.fmu.library import find_library, library_file, load_library, platform_folder
+from pendulum_fmu.fmu.library import c_address, find_library, library_file, load_library, platform_folder
 from pendulum_fmu.fmu.log import FmuLog
 
 ABI = 1
@@ -99,11 +99,6 @@ def available() -> bool:
     return _library() is not None
 
 
-def _address(function: Any) -> int:
-    """The C address of a ctypes function of a loaded library."""
-    return ctypes.cast(function, ctypes.c_void_p).value or 0
-
-
 class CLoop:
     """Steps an initialized fmpy Co-Simulation instance (FMI 2.0 or 3.0) over a grid, in C.
 
@@ -125,7 +120,7 @@ class CLoop:
         names = ("fmi2DoStep", "fmi2GetReal") if fmi_version == 2 else ("fmi3DoStep", "fmi3GetFloat64")
         self._vrs = np.ascontiguousarray(value_references, dtype=np.uint32)
         self._fmu = _Fmu(fmi_version, ctypes.cast(instance.component, ctypes.c_void_p).value,
-                         _address(getattr(instance.dll, names[0])), _address(getattr(instance.dll, names[1])),
+                         c_address(getattr(instance.dll, names[0])), c_address(getattr(instance.dll, names[1])),
                          self._vrs.ctypes.data, len(value_references))
         self._count = len(value_references)
 

@@ -20,6 +20,7 @@ from typing import Any
 import numpy as np
 
 from pendulum_fmu.errors import SimulationError
+from pendulum_fmu.fmu.library import c_address
 from pendulum_fmu.fmu.log import FMI2_WARNING, FmuLog
 from pendulum_fmu.interrupt import check, flag
 
@@ -28,11 +29,6 @@ _DO_STEP = ctypes.CFUNCTYPE(ctypes.c_int, ctypes.c_void_p, ctypes.c_double, ctyp
 _GET_REAL = ctypes.CFUNCTYPE(ctypes.c_int, ctypes.c_void_p, ctypes.c_void_p, ctypes.c_size_t, ctypes.c_void_p)
 """fmi2GetReal(c, vr[], nvr, value[])."""
 STATUS_NAMES = ("fmi2OK", "fmi2Warning", "fmi2Discard", "fmi2Error", "fmi2Fatal", "fmi2Pending")
-
-
-def _address(function: Any) -> int:
-    """The C address of a ctypes function of a loaded library."""
-    return ctypes.cast(function, ctypes.c_void_p).value or 0
 
 
 class FastStepper:
@@ -48,8 +44,8 @@ class FastStepper:
 
     def __init__(self, slave: Any, value_references: list[int]) -> None:
         self._component = int(ctypes.cast(slave.component, ctypes.c_void_p).value or 0)
-        self._do_step = _DO_STEP(_address(slave.dll.fmi2DoStep))
-        self._get_real = _GET_REAL(_address(slave.dll.fmi2GetReal))
+        self._do_step = _DO_STEP(c_address(slave.dll.fmi2DoStep))
+        self._get_real = _GET_REAL(c_address(slave.dll.fmi2GetReal))
         self._vrs = np.ascontiguousarray(value_references, dtype=np.uint32)  # fmi2ValueReference
         self._count = len(value_references)
 

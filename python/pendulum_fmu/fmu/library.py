@@ -50,6 +50,11 @@ def platform_folder() -> tuple[str, str]:
     return folder, "libpendulum_exact.so"
 
 
+def c_address(function: object) -> int:
+    """The C address of a ctypes function of a loaded library (0 for a NULL pointer)."""
+    return ctypes.cast(function, ctypes.c_void_p).value or 0
+
+
 def library_file(stem: str) -> str:
     """The file name of the shipped library ``stem`` (``pendulum_exact``, ``pendulum_driver``) here."""
     _, exact_name = platform_folder()
