@@ -12,6 +12,7 @@ from contextlib import contextmanager
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from pendulum_fmu import interrupt
 from pendulum_fmu.errors import UsageError
 from pendulum_fmu.sweep.grid import SweepPoint
 
@@ -20,6 +21,8 @@ if TYPE_CHECKING:
 
 TASKS_PER_THREAD = 8
 MAX_BATCH = 64
+POLL_SECONDS = 0.02
+"""How often the client looks for finished tasks and for Ctrl-C."""
 
 
 @contextmanager
@@ -54,16 +57,19 @@ def dask_client(scheduler: str | None = None, workers: int = 2) -> Iterator[Clie
                                    silence_logs=logging.ERROR)
         finally:
             signal.signal(signal.SIGINT, previous)
-        client = Client(cluster)
+        client = None
         interrupted = False
         try:
+            with interrupt.deferred_interrupt():  # see execute: no interrupt inside the client's calls
+                client = Client(cluster)
             yield client
         except KeyboardInterrupt:
             interrupted = True
             quiet_shutdown()
             raise
         finally:
-            client.close(timeout=2 if interrupted else 10)
+            if client is not None:
+                client.close(timeout=2 if interrupted else 10)
             cluster.close(timeout=3 if interrupted else 30)
             if interrupted:
                 stop_worker_processes()
@@ -170,23 +176,34 @@ def execute(client: Client, fmu: Path, points: Sequence[SweepPoint],
     from pendulum_fmu.sweep.worker import run_points, warm
 
     data = fmu.read_bytes()
-    client.run(warm, data)  # every worker loads the FMU now, not inside the timed first task
-    # A key of its own (hash=False): a second sweep on the same client must not reuse the key of
-    # the first one's data, which the scheduler may be releasing at that moment.
-    shared = client.scatter(data, broadcast=True, hash=False)
-    start = time.perf_counter()
-    futures = [client.submit(run_points, shared, batch, pure=False)
-               for batch in batches(points, worker_threads(client), batch_size)]
-    bar = tqdm(total=len(points), unit="run", desc="sweep", disable=not progress, file=sys.stderr,
-               dynamic_ncols=True, smoothing=0.05)
-    try:
-        for future in as_completed(futures):
-            rows = future.result()
-            on_rows(rows)
-            bar.update(len(rows))
-    except BaseException:
-        client.cancel(futures)
-        raise
-    finally:
-        bar.close()
+    # Ctrl-C only sets a flag (deferred_interrupt) and the loop below raises it between results:
+    # a KeyboardInterrupt raised inside one of the client's blocking calls breaks Dask's own
+    # clean-up (distributed 2026.8 then logs a NameError traceback from its event loop thread).
+    with interrupt.deferred_interrupt():
+        client.run(warm, data)  # every worker loads the FMU now, not inside the timed first task
+        # A key of its own (hash=False): a second sweep on the same client must not reuse the key
+        # of the first one's data, which the scheduler may be releasing at that moment.
+        shared = client.scatter(data, broadcast=True, hash=False)
+        interrupt.check()
+        start = time.perf_counter()
+        futures = [client.submit(run_points, shared, batch, pure=False)
+                   for batch in batches(points, worker_threads(client), batch_size)]
+        # with_results: the client's event loop fetches each result; this thread only polls.
+        finished = as_completed(futures, with_results=True)
+        bar = tqdm(total=len(points), unit="run", desc="sweep", disable=not progress, file=sys.stderr,
+                   dynamic_ncols=True, smoothing=0.05)
+        try:
+            while not finished.is_empty():
+                interrupt.check()
+                if not finished.has_ready():
+                    time.sleep(POLL_SECONDS)
+                    continue
+                _, rows = next(finished)  # ready: returns at once, or raises the task's error
+                on_rows(rows)
+                bar.update(len(rows))
+        except BaseException:
+            client.cancel(futures)
+            raise
+        finally:
+            bar.close()
     return time.perf_counter() - start
