@@ -28,7 +28,7 @@ from pendulum_fmu.fmu import driver
 from pendulum_fmu.fmu.runner import RECORDED, RESULT_DTYPE, FmuRunner, RunInterrupted
 from pendulum_fmu.spec import CS_SOLVERS, Method, Pendulum, TimeGrid
 
-HARD_CASE = Pendulum(math.pi, 0.0)
+HARD_CASE = Pendulum(math.pi, 1e-15)   # a rotation the solvers reverse at the top (test_hard_case_warning)
 CASES = [Pendulum.from_degrees(80.0), Pendulum(0.5, 9.0), Pendulum.from_degrees(179.0, 0.3)]
 
 
@@ -124,7 +124,8 @@ def test_warnings_arrive_through_the_c_loop(fixture: str, request: pytest.Fixtur
         method, grid = Method("rkn", 1e-8), TimeGrid(120.0, "s", 10)
         ours, before = c_runner.run(HARD_CASE, method, grid), python_runner.run(HARD_CASE, method, grid)
         assert ours.warnings == before.warnings
-        assert [w.split(":")[0] for w in ours.warnings] == ["certificate", "certificate", "hard case"]
+        kinds = [w.split(":")[0] for w in ours.warnings]
+        assert kinds[0] == "certificate" and "hard case" in kinds and set(kinds) == {"certificate", "hard case"}
         assert c_runner.run(CASES[0], method, TimeGrid(1, "periods", 10)).warnings == ()
 
 

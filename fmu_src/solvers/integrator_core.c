@@ -99,14 +99,14 @@ double integ_control(Integrator *it, double h, double err, int q, double safe, i
         const double e2 = err * err, p2 = it->err_prev * it->err_prev;
         const double ratio = (e2 * e2 * e2 * err) / (p2 * p2);
         double fac = pow(ratio, 0.1 / q) / safe;   /* = h / h_new */
-        fac = fmax(1.0 / fac_max, fmin(1.0 / fac_min, fac));
+        fac = integ_max(1.0 / fac_max, integ_min(1.0 / fac_min, fac));   /* err finite: no NaN here */
         double hnew = h / fac;
         if (it->last_rejected)
-            hnew = fmin(hnew, h);     /* no increase right after a rejection */
-        it->err_prev = fmax(err, 1e-4);
+            hnew = integ_min(hnew, h);     /* no increase right after a rejection */
+        it->err_prev = integ_max(err, 1e-4);
         it->last_rejected = 0;
         *accept = 1;
-        return fmin(hnew, it->hmax);
+        return integ_min(hnew, it->hmax);
     }
     /* rejected: pure I control (err^alpha, alpha = 0.7/q), never shrink by more than fac_min */
     it->last_rejected = 1;
@@ -159,7 +159,7 @@ void integ_hermite5(const Integrator *it, double s, double y[2])
 /* sin and cos of the half angle theta/2 after theta moved by dth: a rotation by dth/2.
  * Small moves (every Newton correction at tolerances below ~1e-6) use the Taylor series of
  * sin and cos of the increment, exact in double for |dth/2| <= 1e-3 (first omitted terms
- * (dth/2)^7/5040 and (dth/2)^8/40320 < 2e-25); larger ones call sin and cos (counted). */
+ * (dth/2)^7/5040 and (dth/2)^8/40320 < 2e-25); larger ones evaluate sin and cos (counted). */
 static void rotate_half_angle(Integrator *it, double th, double dth, double *s, double *c)
 {
     const double d = 0.5 * dth;
@@ -171,8 +171,7 @@ static void rotate_half_angle(Integrator *it, double th, double dth, double *s, 
         *s = s0 * cd + c0 * sd;
         *c = c0 * cd - s0 * sd;
     } else {
-        *s = sin(0.5 * th);
-        *c = cos(0.5 * th);
+        trig_sincos(0.5 * th, s, c);
         it->stats.rhs_evals++;
     }
 }
@@ -193,13 +192,14 @@ int integ_project(Integrator *it, const double y0[2], double ynew[2], double fne
      * trigonometric calls where they are small (rotate_half_angle). */
     const double w0sq = it->w0sq;
     const double th_in = ynew[0], om_in = ynew[1];
-    const double s_in = sin(0.5 * th_in), c_in = cos(0.5 * th_in);
+    double s_in, c_in;
+    trig_sincos(0.5 * th_in, &s_in, &c_in);
     double th = th_in, om = om_in, s = s_in, c = c_in;
     int moved = 0;
     it->stats.rhs_evals++;
     if (it->project_energy) {
-        const double sc_th = it->atol[0] + it->rtol * fmax(fabs(y0[0]), fabs(th_in));
-        const double sc_om = it->atol[1] + it->rtol * fmax(fabs(y0[1]), fabs(om_in));
+        const double sc_th = it->atol[0] + it->rtol * integ_max(fabs(y0[0]), fabs(th_in));
+        const double sc_om = it->atol[1] + it->rtol * integ_max(fabs(y0[1]), fabs(om_in));
         for (int iter = 0; iter < 4; iter++) {
             const double kin = 0.5 * om * om, pot = 2.0 * w0sq * c * c + 2.0 * it->w0sq_lo * c * c;
             const double r = (it->energy0 - (kin - pot)) + it->energy0_lo;

@@ -133,14 +133,20 @@ static const double EBP[RKN_STAGES] = {
  * step's own time unit (integ_taylor with w0^2 h^2 and omega h), so no coefficient overflows
  * however large g/L is (unscaled, the 14th derivative of theta grows like w0^14). */
 #define TRIG_ROW INTEG_TAYLOR_TERMS
-_Static_assert(TRIG_ROW < INTEGRATOR_MAX_STAGES, "dense[] holds the Hermite coefficients and sin/cos");
+/* Rows RIGHT_ROW .. RIGHT_ROW + 3 keep the last step's right-end Taylor coefficients (in its
+ * time unit h_last), which are the next step's left end: A_n h^n = (A_n h_last^n) (h / h_last)^n,
+ * so a step expands only its new end. Row RIGHT_H_ROW [0] is 1 while they are valid, 0 after
+ * integ_rkn_start (the first step expands both ends). */
+#define RIGHT_ROW (TRIG_ROW + 1)
+#define RIGHT_H_ROW (RIGHT_ROW + INTEG_TAYLOR_TERMS / 2)
+_Static_assert(RIGHT_H_ROW < INTEGRATOR_MAX_STAGES, "dense[] holds the Hermite coefficients, sin/cos and the right end");
 
 void integ_rkn_start(Integrator *it)
 {
     it->hmax = RKN_HMAX_W0 / sqrt(it->w0sq);
     it->h = integ_initial_step(it, 12);
-    it->dense[TRIG_ROW][0] = sin(it->y[0]);
-    it->dense[TRIG_ROW][1] = cos(it->y[0]);
+    trig_sincos(it->y[0], &it->dense[TRIG_ROW][0], &it->dense[TRIG_ROW][1]);
+    it->dense[RIGHT_H_ROW][0] = 0.0;
     it->stats.rhs_evals++;
 }
 
@@ -158,7 +164,7 @@ int integ_rkn_step(Integrator *it)
             double s = 0.0;
             for (int j = 0; j < i; j++)
                 s += A[i][j] * k[j];
-            k[i] = integ_accel(it, x0 + h * (C[i] * v0 + h * s));
+            k[i] = integ_accel_moved(it, x0, it->dense[TRIG_ROW], h * (C[i] * v0 + h * s));
         }
         double sx = 0.0, sv = 0.0, ex = 0.0, ev = 0.0;
         for (int i = 0; i < RKN_STAGES; i++) {
@@ -182,9 +188,19 @@ int integ_rkn_step(Integrator *it)
         double f1[2], trig1[2], left[INTEG_TAYLOR_TERMS], right[INTEG_TAYLOR_TERMS];
         const double w0sq_h2 = it->w0sq * h * h;
         integ_project(it, it->y, y1, f1, trig1);
-        integ_taylor(w0sq_h2, x0, v0 * h, it->dense[TRIG_ROW], left);   /* sin/cos of x0: stored */
+        if (it->dense[RIGHT_H_ROW][0] == 1.0) {
+            const double rho = h / it->h_last;
+            double scale = 1.0;
+            for (int n = 0; n < INTEG_TAYLOR_TERMS; n++, scale *= rho)
+                left[n] = it->dense[RIGHT_ROW + n / 2][n % 2] * scale;
+        } else {
+            integ_taylor(w0sq_h2, x0, v0 * h, it->dense[TRIG_ROW], left);   /* sin/cos of x0: stored */
+        }
         integ_taylor(w0sq_h2, y1[0], y1[1] * h, trig1, right);
         integ_hermite_setup(left, right, it->dense);
+        for (int n = 0; n < INTEG_TAYLOR_TERMS; n++)
+            it->dense[RIGHT_ROW + n / 2][n % 2] = right[n];
+        it->dense[RIGHT_H_ROW][0] = 1.0;
         it->dense[TRIG_ROW][0] = trig1[0];
         it->dense[TRIG_ROW][1] = trig1[1];
         integ_accept(it, h, y1, f1);

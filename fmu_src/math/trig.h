@@ -1,0 +1,95 @@
+/* trig.h: sine and cosine of a double for the solvers' right-hand side, inline.
+ *
+ * The solvers evaluate sin(theta) at every stage (16 a step of rkn), each one on the step's
+ * chain of dependent operations, and libm's sin is a call of about 90 instructions with
+ * branches on the argument's range. Here, for |x| < 2^19:
+ *   x = k pi/2 + r, k the integer nearest to x 2/pi, |r| <= pi/4 (plus a rounding);
+ *   r = ((x - k P1) - k P2) - k P3 (Cody and Waite), with pi/2 = P1 + P2 + P3 + 1e-37:
+ *     P1 and P2 hold 33 bits each, so k P1 and k P2 are exact for |k| < 2^20, and
+ *     x - k P1 is exact (Sterbenz: x and k P1 lie within a factor 2 of each other); the
+ *     last two subtractions keep their rounding errors in r_lo;
+ *   sin r = r + r^3 (-1/3! + r^2/5! - ... + r^14/17!),
+ *   cos r = 1 + r^2 (-1/2! + r^2/4! - ... + r^14/16!), Taylor series: the first omitted terms
+ *     are below 1e-19 at |r| = pi/4, so the error is the rounding of the sums: 1 ulp;
+ *   by the quadrant q = k mod 4: sin x = (s, c, -s, -c)[q], cos x = (c, -s, -c, s)[q].
+ * Both series are evaluated and the quadrant picks with arithmetic, not a branch (a swing
+ * crosses quadrants every few steps). The same bits on every platform (no libm, contraction
+ * off). Beyond 2^19 (rotations past 80,000 turns), and for infinities and NaN, libm;
+ * below 2^-27, sin x = x and cos x = 1.
+ * tests/c/test_trig.c compares both with libm (1 ulp) over every quadrant and scale. */
+#ifndef PENDULUM_TRIG_H
+#define PENDULUM_TRIG_H
+
+#include <math.h>
+
+#define TRIG_REDUCE_LIMIT 524288.0   /* 2^19: |k| < 2^19 (2/pi) < 2^20 */
+#define TRIG_TINY 7.450580596923828e-09   /* 2^-27: x^2/2 < 2^-55, below half an ulp of 1 */
+
+/* sin and cos of r + r_lo for |r| <= pi/4 (plus a rounding), |r_lo| <= ulp(r) */
+static inline void trig_kernel(double r, double r_lo, double *s, double *c)
+{
+    const double z = r * r;
+    /* Estrin's scheme in z: half the dependent steps of Horner's */
+    const double z2 = z * z, z4 = z2 * z2;
+    const double ps = ((-0.16666666666666666 + z * 0.008333333333333333)
+                       + z2 * (-0.0001984126984126984 + z * 2.7557319223985893e-06))
+                      + z4 * ((-2.505210838544172e-08 + z * 1.6059043836821613e-10)
+                              + z2 * (-7.647163731819816e-13 + z * 2.8114572543455206e-15));
+    const double pc = ((-0.5 + z * 0.041666666666666664)
+                       + z2 * (-0.001388888888888889 + z * 2.48015873015873e-05))
+                      + z4 * ((-2.755731922398589e-07 + z * 2.08767569878681e-09)
+                              + z2 * (-1.1470745597729725e-11 + z * 4.779477332387385e-14));
+    /* sin(r + r_lo) = sin r + r_lo cos r, cos(r + r_lo) = cos r - r_lo sin r, to first order */
+    *s = r + ((r * z) * ps + r_lo);
+    *c = 1.0 + (z * pc - r * r_lo);
+}
+
+/* sin x and cos x, both (a solver needs both at a projected point) */
+static inline void trig_sincos(double x, double *sin_x, double *cos_x)
+{
+    if (!(fabs(x) < TRIG_REDUCE_LIMIT)) {
+        *sin_x = sin(x);
+        *cos_x = cos(x);
+        return;
+    }
+    if (fabs(x) < TRIG_TINY) {   /* sin x = x and cos x = 1 correctly rounded; keeps the sign of -0 */
+        *sin_x = x;
+        *cos_x = 1.0;
+        return;
+    }
+    const double round_magic = 6755399441055744.0;   /* 1.5 * 2^52: adding it rounds to an integer */
+    const double k = (x * 0.6366197723675814 + round_magic) - round_magic;   /* nearest to x 2/pi */
+    /* r = r_hi + r_lo: the subtractions' rounding errors kept (Fast2Sum), so that a result
+     * smaller than r (sin r below 1/2 while r is above it) is not one ulp of r off */
+    const double t1 = x - k * 1.5707963267341256, w2 = k * 6.077100506303966e-11, w3 = k * 2.0222662487959506e-21;
+    const double r1 = t1 - w2, e1 = (t1 - r1) - w2;
+    const double r = r1 - w3, r_lo = ((r1 - r) - w3) + e1;
+    double s, c;
+    trig_kernel(r, r_lo, &s, &c);
+    const int q = (int)k & 3;   /* two's complement: k mod 4 for negative k too */
+    const double sin_mag = (q & 1) ? c : s, cos_mag = (q & 1) ? s : c;   /* selections (cmov) */
+    *sin_x = (q & 2) ? -sin_mag : sin_mag;
+    *cos_x = ((q + 1) & 2) ? -cos_mag : cos_mag;
+}
+
+static inline double trig_sin(double x)
+{
+    double s, c;
+    trig_sincos(x, &s, &c);
+    return s;
+}
+
+/* sin(x0 + d) from sin x0 and cos x0 (known at the start of a step) and the move d:
+ * sin x0 cos d + cos x0 sin d with no range reduction for |d| <= pi/4, a shorter chain of
+ * dependent operations than sin(x0 + d); its error is about 1 ulp of max(|sin x0|, |d|),
+ * the rounding of x0 + d. Larger moves (and NaN) take trig_sin(x0 + d). */
+static inline double trig_sin_moved(double x0, double sin_x0, double cos_x0, double d)
+{
+    if (!(fabs(d) <= 0.7853981633974483))
+        return trig_sin(x0 + d);
+    double sd, cd;
+    trig_kernel(d, 0.0, &sd, &cd);
+    return sin_x0 * cd + cos_x0 * sd;
+}
+
+#endif

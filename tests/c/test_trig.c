@@ -1,0 +1,102 @@
+/* test_trig.c: the solvers' inline sine and cosine (trig.h) against libm (glibc: errors below
+ * 1 ulp), over every quadrant and scale: random arguments in |x| <= a for a from 1e-8 to
+ * 2^19, both sides of each quadrant's edge (x near odd multiples of pi/4), near the zeros
+ * (multiples of pi/2), at the switch-overs to libm (2^19) and to sin x = x (2^-27), and
+ * the special values (+-0 with its sign, subnormals, infinities, NaN). Each result within
+ * 1 ulp of libm's; prints the largest distance in ulps at each scale and one summary line. */
+#include <float.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "check.h"
+#include "trig.h"
+
+/* distance in units in the last place between two finite doubles (0 for equal zeros) */
+static double ulps_apart(double a, double b)
+{
+    if (a == b)
+        return 0.0;
+    int64_t ia, ib;
+    memcpy(&ia, &a, sizeof ia);
+    memcpy(&ib, &b, sizeof ib);
+    if (ia < 0)
+        ia = INT64_MIN - ia;   /* the doubles in one monotone integer order */
+    if (ib < 0)
+        ib = INT64_MIN - ib;
+    if ((ia < 0) != (ib < 0))
+        return INFINITY;   /* opposite signs (no result here is that close to zero) */
+    return (double)(ia > ib ? ia - ib : ib - ia);   /* the difference is exact; converted, it is small */
+}
+
+static uint64_t rng_state = 0x9e3779b97f4a7c15u;
+
+static double uniform(double a)   /* in [-a, a) */
+{
+    rng_state ^= rng_state << 13;
+    rng_state ^= rng_state >> 7;
+    rng_state ^= rng_state << 17;
+    return a * (2.0 * (double)(rng_state >> 11) * 0x1p-53 - 1.0);
+}
+
+/* one argument: sin and cos within 1 ulp of libm; returns the larger distance */
+static double compare(double x)
+{
+    double s, c;
+    trig_sincos(x, &s, &c);
+    const double ds = ulps_apart(s, sin(x)), dc = ulps_apart(c, cos(x));
+    check(ds <= 1.0 && dc <= 1.0, "x = %a: sin %a (libm %a, %.0f ulp), cos %a (libm %a, %.0f ulp)", x, s, sin(x),
+          ds, c, cos(x), dc);
+    check(trig_sin(x) == s, "x = %a: trig_sin differs from trig_sincos", x);
+    return fmax(ds, dc);
+}
+
+int main(void)
+{
+    const double scales[] = {1e-8, 1e-3, 0.5, 0.78, 1.6, 3.2, 7.0, 100.0, 1e4, 5e5};
+    for (size_t i = 0; i < sizeof scales / sizeof scales[0]; i++) {
+        double worst = 0.0;
+        for (int n = 0; n < 200000; n++)
+            worst = fmax(worst, compare(uniform(scales[i])));
+        printf("|x| <= %-6g: largest distance from libm %.0f ulp\n", scales[i], worst);
+    }
+    /* both sides of every quadrant edge (k pi/4, k odd) and every zero (k pi/2) up to 2^19 */
+    double worst = 0.0;
+    for (double k = 1.0; k * 0.7853981633974483 < 524288.0; k = k < 64.0 ? k + 1.0 : floor(k * 1.37)) {
+        const double edge = k * 0.7853981633974483;
+        double x = edge;
+        for (int j = 0; j < 4; j++, x = nextafter(x, 0.0))
+            worst = fmax(worst, fmax(compare(x), compare(-x)));
+        x = nextafter(edge, INFINITY);
+        for (int j = 0; j < 3; j++, x = nextafter(x, INFINITY))
+            worst = fmax(worst, fmax(compare(x), compare(-x)));
+    }
+    printf("quadrant edges and zeros: largest distance from libm %.0f ulp\n", worst);
+    /* the switch-overs: libm from 2^19 on, sin x = x below 2^-27 */
+    const double limits[] = {TRIG_REDUCE_LIMIT, TRIG_TINY};
+    for (int i = 0; i < 2; i++) {
+        double x = limits[i];
+        for (int j = 0; j < 3; j++)
+            x = nextafter(x, 0.0);
+        for (int j = 0; j < 7; j++, x = nextafter(x, INFINITY)) {
+            compare(x);
+            compare(-x);
+        }
+    }
+    /* special values */
+    double s, c;
+    trig_sincos(-0.0, &s, &c);
+    check(s == 0.0 && signbit(s) && c == 1.0, "sincos(-0): %a %a", s, c);
+    trig_sincos(0.0, &s, &c);
+    check(s == 0.0 && !signbit(s) && c == 1.0, "sincos(+0): %a %a", s, c);
+    compare(DBL_TRUE_MIN);
+    compare(-DBL_MIN);
+    compare(DBL_MAX);
+    const double not_finite[] = {INFINITY, -INFINITY, NAN};
+    for (int i = 0; i < 3; i++) {
+        trig_sincos(not_finite[i], &s, &c);
+        check(isnan(s) && isnan(c), "sincos(%g): %g %g, not NaN", not_finite[i], s, c);
+    }
+    return check_summary("test_trig");
+}
