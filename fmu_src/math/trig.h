@@ -1,8 +1,10 @@
-/* trig.h: sine and cosine of a double for the solvers' right-hand side, inline.
+/* trig.h: sine and cosine of a double, inline: rkn's stages (trig_sin_moved) and the outputs
+ * x and y (one trig_sincos for both).
  *
- * The solvers evaluate sin(theta) at every stage (16 a step of rkn), each one on the step's
- * chain of dependent operations, and libm's sin is a call of about 90 instructions with
- * branches on the argument's range. Here, for |x| < 2^19:
+ * rkn evaluates sin(theta) at 16 stages a step, each one on the step's chain of dependent
+ * operations, where libm's sin is a call with branches on the argument's range and a range
+ * reduction. trig_sin_moved needs no reduction (the stages lie near the step's start, whose
+ * sine and cosine are known). trig_sincos, for |x| < 2^19:
  *   x = k pi/2 + r, k the integer nearest to x 2/pi, |r| <= pi/4 (plus a rounding);
  *   r = ((x - k P1) - k P2) - k P3 (Cody and Waite), with pi/2 = P1 + P2 + P3 + 1e-37:
  *     P1 and P2 hold 33 bits each, so k P1 and k P2 are exact for |k| < 2^20, and
@@ -12,9 +14,8 @@
  *   cos r = 1 + r^2 (-1/2! + r^2/4! - ... + r^14/16!), Taylor series: the first omitted terms
  *     are below 1e-19 at |r| = pi/4, so the error is the rounding of the sums: 1 ulp;
  *   by the quadrant q = k mod 4: sin x = (s, c, -s, -c)[q], cos x = (c, -s, -c, s)[q].
- * Both series are evaluated and the quadrant picks with arithmetic, not a branch (a swing
- * crosses quadrants every few steps). The same bits on every platform (no libm, contraction
- * off). Beyond 2^19 (rotations past 80,000 turns), and for infinities and NaN, libm;
+ * Both series are evaluated and the quadrant selects between them (conditional moves, not
+ * branches). The same bits on every platform (no libm, contraction off). Beyond 2^19 (rotations past 80,000 turns), and for infinities and NaN, libm;
  * below 2^-27, sin x = x and cos x = 1.
  * tests/c/test_trig.c compares both with libm (1 ulp) over every quadrant and scale. */
 #ifndef PENDULUM_TRIG_H

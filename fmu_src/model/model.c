@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "pendulum_vrs.h"
+#include "trig.h"
 
 const char *mode_name(Mode mode, int fmi_version) {
     switch (mode) {
@@ -230,8 +231,13 @@ const char *model_get_real(const ModelData *data, ExactCache *cache, ValueRefere
     case VR_OMEGA: *value = data->omega; break;
     case VR_DER_THETA: return model_derivatives(data, value, &unused);
     case VR_DER_OMEGA: return model_derivatives(data, &unused, value);
-    case VR_X: *value = data->L * sin(data->theta); break;
-    case VR_Y: *value = -data->L * cos(data->theta); break;
+    case VR_X:
+    case VR_Y: {   /* trig.h: inline, within 1 ulp of libm */
+        double sin_theta, cos_theta;
+        trig_sincos(data->theta, &sin_theta, &cos_theta);
+        *value = vr == VR_X ? data->L * sin_theta : -data->L * cos_theta;
+        break;
+    }
     case VR_PERIOD:
         problem = current_exact(data, &exact);
         if (problem != NULL) {

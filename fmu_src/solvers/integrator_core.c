@@ -159,7 +159,7 @@ void integ_hermite5(const Integrator *it, double s, double y[2])
 /* sin and cos of the half angle theta/2 after theta moved by dth: a rotation by dth/2.
  * Small moves (every Newton correction at tolerances below ~1e-6) use the Taylor series of
  * sin and cos of the increment, exact in double for |dth/2| <= 1e-3 (first omitted terms
- * (dth/2)^7/5040 and (dth/2)^8/40320 < 2e-25); larger ones evaluate sin and cos (counted). */
+ * (dth/2)^7/5040 and (dth/2)^8/40320 < 2e-25); larger ones call sin and cos (counted). */
 static void rotate_half_angle(Integrator *it, double th, double dth, double *s, double *c)
 {
     const double d = 0.5 * dth;
@@ -171,7 +171,8 @@ static void rotate_half_angle(Integrator *it, double th, double dth, double *s, 
         *s = s0 * cd + c0 * sd;
         *c = c0 * cd - s0 * sd;
     } else {
-        trig_sincos(0.5 * th, s, c);
+        *s = sin(0.5 * th);
+        *c = cos(0.5 * th);
         it->stats.rhs_evals++;
     }
 }
@@ -192,8 +193,7 @@ int integ_project(Integrator *it, const double y0[2], double ynew[2], double fne
      * trigonometric calls where they are small (rotate_half_angle). */
     const double w0sq = it->w0sq;
     const double th_in = ynew[0], om_in = ynew[1];
-    double s_in, c_in;
-    trig_sincos(0.5 * th_in, &s_in, &c_in);
+    const double s_in = sin(0.5 * th_in), c_in = cos(0.5 * th_in);
     double th = th_in, om = om_in, s = s_in, c = c_in;
     int moved = 0;
     it->stats.rhs_evals++;

@@ -9,13 +9,12 @@
 #include <math.h>
 
 #include "integrator.h"
-#include "trig.h"
 
-/* The right-hand side, one sin per call (trig.h: inline, within 1 ulp), counted in rhs_evals. */
+/* The right-hand side, one sin per call, counted in rhs_evals. */
 static inline void integ_rhs(Integrator *it, const double y[2], double f[2])
 {
     f[0] = y[1];
-    const double s = trig_sin(y[0]);
+    const double s = sin(y[0]);
     f[1] = -(it->w0sq * s + it->w0sq_lo * s);
     it->stats.rhs_evals++;
 }
@@ -24,15 +23,7 @@ static inline void integ_rhs(Integrator *it, const double y[2], double f[2])
 static inline double integ_accel(Integrator *it, double theta)
 {
     it->stats.rhs_evals++;
-    const double s = trig_sin(theta);
-    return -(it->w0sq * s + it->w0sq_lo * s);
-}
-
-/* The acceleration at x0 + d from sin and cos of x0 (trig_sin_moved), counted the same way. */
-static inline double integ_accel_moved(Integrator *it, double x0, const double trig0[2], double d)
-{
-    it->stats.rhs_evals++;
-    const double s = trig_sin_moved(x0, trig0[0], trig0[1], d);
+    const double s = sin(theta);
     return -(it->w0sq * s + it->w0sq_lo * s);
 }
 
