@@ -198,7 +198,6 @@ int integ_rkn_step(Integrator *it)
             continue;
         }
         double f1[2], trig1[2], left[INTEG_TAYLOR_TERMS], right[INTEG_TAYLOR_TERMS];
-        const double w0sq_h2 = it->w0sq * h * h;
         integ_project(it, it->y, y1, f1, trig1);
         if (it->dense[RIGHT_H_ROW][0] == 1.0) {
             const double rho = h / it->h_last;
@@ -206,9 +205,9 @@ int integ_rkn_step(Integrator *it)
             for (int n = 0; n < INTEG_TAYLOR_TERMS; n++, scale *= rho)
                 left[n] = it->dense[RIGHT_ROW + n / 2][n % 2] * scale;
         } else {
-            integ_taylor(w0sq_h2, x0, v0 * h, it->dense[TRIG_ROW], left);   /* sin/cos of x0: stored */
+            integ_taylor(wh, x0, v0 * h, it->dense[TRIG_ROW], left);   /* sin/cos of x0: stored */
         }
-        integ_taylor(w0sq_h2, y1[0], y1[1] * h, trig1, right);
+        integ_taylor(wh, y1[0], y1[1] * h, trig1, right);
         integ_hermite_setup(left, right, it->dense);
         for (int n = 0; n < INTEG_TAYLOR_TERMS; n++)
             it->dense[RIGHT_ROW + n / 2][n % 2] = right[n];
