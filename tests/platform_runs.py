@@ -52,7 +52,7 @@ class Target:
     def missing(self) -> str | None:
         """Why this target cannot run here, naming only the tools that are missing and their
         packages (with the install command), or None."""
-        tools = [(self.compiler[0], self.packages[0])] + [(self.runner[0], self.packages[1])] * bool(self.runner)
+        tools = [(self.compiler[0], self.packages[0])] + ([(self.runner[0], self.packages[1])] if self.runner else [])
         absent = [(tool, package) for tool, package in tools if shutil.which(tool) is None]
         if not absent:
             return None

@@ -206,6 +206,27 @@ def test_contraction_is_what_separates_arm64_from_x86_64(fmu_path: Path, unpacke
     assert max(max_differences(linux64_results, fused).values()) > 0.0
 
 
+def test_the_documented_table_command_prints_every_row(fmu_path: Path) -> None:
+    """``python tests/platform_runs.py FMU``, the command docs/platforms.md and the README give for
+    the agreement table, runs to its end: every row measured, the host and arm64 rows exact, the
+    win64 row within the bound."""
+    for target in (WIN64, AARCH64):
+        require(target)
+    done = subprocess.run([sys.executable, str(REPO_ROOT / "tests/platform_runs.py"), str(fmu_path)],
+                          capture_output=True, text=True, timeout=900, check=False)
+    assert done.returncode == 0 and "Traceback" not in done.stderr, done.stderr[-3000:]
+    rows = {}
+    for line in done.stdout.splitlines():
+        numbers = re.findall(r"\s(\d\.\d\de[+-]\d\d)", line)
+        if len(numbers) == 4:
+            rows[line[:42].strip()] = [float(n) for n in numbers]
+    assert len(rows) == 5, done.stdout
+    assert rows["host-gcc build/Pendulum.so (native)"] == [0.0] * 4
+    assert rows["aarch64-linux, arm64 flags (qemu)"] == [0.0] * 4
+    assert max(rows["win64 Pendulum.dll from the FMU (wine)"]) <= AGREEMENT
+    assert re.search(r"fma\(\) of zig .*: 0 of 20000 not correctly rounded", done.stdout), done.stdout
+
+
 # --- the FMI 3.0 FMU's aarch64-linux and x86_64-windows binaries, run -------------------------------
 
 @pytest.fixture(scope="module")
