@@ -43,6 +43,15 @@ double integ_energy0(double w0sq, double w0sq_lo, double theta0, double omega0, 
     return g.hi;
 }
 
+/* sqrt(mean (v_i scale / sc_i)^2): the weighted RMS of v in the time unit `scale`, each term
+ * scaled before it is squared. integ_initial_step squares first (the bits it always gave) and
+ * takes this only when that overflowed: beyond w0 / tol ~ 1e154 the slope's square does. */
+static double scaled_rms(const double v[2], const double sc[2], double scale)
+{
+    const double r0 = v[0] / sc[0] * scale, r1 = v[1] / sc[1] * scale;
+    return sqrt(0.5 * (r0 * r0 + r1 * r1));
+}
+
 double integ_initial_step(Integrator *it, int order)
 {
     /* HNW I, II.4: d0 = ||y0||, d1 = ||f0||, h0 = 0.01 d0/d1; one explicit Euler step
@@ -51,27 +60,30 @@ double integ_initial_step(Integrator *it, int order)
      * the motion's time unit 1/w0 (HNW's formula for h1 assumes time of order 1): the rule
      * gives the same h w0 for every L and g. */
     const double tscale = 1.0 / sqrt(it->w0sq);
-    double d0 = 0.0, d1 = 0.0, d2 = 0.0;
+    double d0 = 0.0, d1 = 0.0, d2 = 0.0, sc[2];
     for (int i = 0; i < 2; i++) {
-        double sc = it->atol[i] + it->rtol * fabs(it->y[i]);
-        d0 += (it->y[i] / sc) * (it->y[i] / sc);
-        d1 += (it->f[i] / sc) * (it->f[i] / sc);
+        sc[i] = it->atol[i] + it->rtol * fabs(it->y[i]);
+        d0 += (it->y[i] / sc[i]) * (it->y[i] / sc[i]);
+        d1 += (it->f[i] / sc[i]) * (it->f[i] / sc[i]);
     }
     d0 = sqrt(0.5 * d0);
     d1 = sqrt(0.5 * d1) * tscale;   /* per unit of w0 t */
+    if (!isfinite(d1))
+        d1 = scaled_rms(it->f, sc, tscale);
     double h0 = (d0 < 1e-5 || d1 < 1e-5) ? 1e-6 : 0.01 * d0 / d1;   /* in units of 1/w0 */
     h0 = fmin(h0 * tscale, it->hmax);
 
-    double y1[2], f1[2];
+    double y1[2], f1[2], df[2];
     y1[0] = it->y[0] + h0 * it->f[0];
     y1[1] = it->y[1] + h0 * it->f[1];
     integ_rhs(it, y1, f1);
     for (int i = 0; i < 2; i++) {
-        double sc = it->atol[i] + it->rtol * fabs(it->y[i]);
-        double r = (f1[i] - it->f[i]) / sc;
-        d2 += r * r;
+        df[i] = f1[i] - it->f[i];
+        d2 += (df[i] / sc[i]) * (df[i] / sc[i]);
     }
     d2 = sqrt(0.5 * d2) / h0 * tscale * tscale;   /* per unit of (w0 t)^2 */
+    if (!isfinite(d2))
+        d2 = scaled_rms(df, sc, tscale) / h0 * tscale;
 
     double dmax = fmax(d1, d2);
     double h1 = (dmax <= 1e-15) ? fmax(1e-6 * tscale, h0 * 1e-3)

@@ -584,6 +584,35 @@ static void print_table(void)
     }
 }
 
+/* The problem is dimensionless in w0 t: at w0^2 = 1e-300 and 1e300 (g/L near the ends of the
+ * doubles) every solver takes the steps it takes at w0^2 = 1 and ends at the same theta, to
+ * rounding. Before, the initial step's norm squared w0/tol (1e154 and beyond), and rkn,
+ * dopri5 and rk4 refused to start above w0^2 ~ 1e292. symplectic keeps its third derivative
+ * unscaled (w0^3), so its range ends near w0^2 = 1e205: checked at 1e+-200. */
+static void test_extreme_scales(void)
+{
+    const SolverKind kinds[] = {SOLVER_DOPRI5, SOLVER_RK4, SOLVER_RKN, SOLVER_SYMPLECTIC};
+    for (int k = 0; k < 4; k++) {
+        const double far = kinds[k] == SOLVER_SYMPLECTIC ? 1e200 : 1e300;
+        const double scales[] = {1.0, far, 1.0 / far};
+        double theta[3];
+        long steps[3];
+        for (int i = 0; i < 3; i++) {
+            Integrator it;
+            double y[2] = {NAN, NAN};
+            const int init = integrator_init(&it, kinds[k], scales[i], 1e-8, 0.0, deg(80.0), 0.0);
+            const int done = init == 0 ? integrator_advance(&it, 6.0 * PI / sqrt(scales[i]), y) : -1;
+            check(init == 0 && done == 0, "kind %d at w0^2 = %g: init %d, advance %d", kinds[k], scales[i], init, done);
+            theta[i] = y[0];
+            steps[i] = it.stats.steps;
+        }
+        for (int i = 1; i < 3; i++)
+            check(steps[i] == steps[0] && fabs(theta[i] - theta[0]) <= 1e-13,
+                  "kind %d at w0^2 = %g: %ld steps and theta %.17g, at w0^2 = 1: %ld and %.17g", kinds[k], scales[i],
+                  steps[i], theta[i], steps[0], theta[0]);
+    }
+}
+
 int main(int argc, char **argv)
 {
     if (argc > 1 && strcmp(argv[1], "--table") == 0)
@@ -602,5 +631,6 @@ int main(int argc, char **argv)
     test_long_horizon();
     test_symplectic_energy();
     test_rkn_efficiency();
+    test_extreme_scales();
     return check_summary("test_integrators");
 }
