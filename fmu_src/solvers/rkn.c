@@ -137,7 +137,9 @@ static const double EBP[RKN_STAGES] = {
 /* Rows RIGHT_ROW .. RIGHT_ROW + 3 keep the last step's right-end Taylor coefficients (in its
  * time unit h_last), which are the next step's left end: A_n h^n = (A_n h_last^n) (h / h_last)^n,
  * so a step expands only its new end. Row RIGHT_H_ROW [0] is 1 while they are valid, 0 after
- * integ_rkn_start (the first step expands both ends). */
+ * integ_rkn_start (the first step expands both ends). A flag of its own, not h_last > 0: an FMU
+ * state saved by a build before these rows (the same state format) holds zeros here, flag
+ * included, and so expands both ends after it is restored. */
 #define RIGHT_ROW (TRIG_ROW + 1)
 #define RIGHT_H_ROW (RIGHT_ROW + INTEG_TAYLOR_TERMS / 2)
 _Static_assert(RIGHT_H_ROW < INTEGRATOR_MAX_STAGES, "dense[] holds the Hermite coefficients, sin/cos and the right end");
