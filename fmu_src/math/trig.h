@@ -88,20 +88,43 @@ static inline double trig_sin(double x)
     return s;
 }
 
-/* sin(x0 + d) from sin x0 and cos x0 (known at the start of a step) and the move d:
- * sin x0 cos d + cos x0 sin d with no range reduction for |d| <= pi/4, a shorter chain of
- * dependent operations than sin(x0 + d). Its error is within 3 ulps of |sin x0| + |d| (1.64 at
- * most in tests/c/test_trig.c), what the rounding of x0 + d alone would cost. Larger moves
- * (and NaN) take trig_sin(x0 + d). */
-static inline double trig_sin_moved(double x0, double sin_x0, double cos_x0, double d)
+/* sin(x0 + d) for the moves d of one step from x0, as the Taylor polynomial in d:
+ * sin(x0 + d) = sum_n a_n d^n, a_n = sin^(n)(x0) / n! = (sin x0, cos x0, -sin x0, -cos x0, ...)_n / n!,
+ * its coefficients formed once a step (trig_moved_coefficients) from sin x0 and cos x0. For
+ * |d| <= pi/4 the first omitted term, (pi/4)^18 / 18!, is 2e-18: no range reduction.
+ * trig_sin_moved returns the sine in two parts, lead = a_0 + a_1 d and *rest = the terms from
+ * d^2 on (Estrin's scheme in d, d^2, d^4 and d^10: 8 dependent operations from d), so that a
+ * caller that multiplies the sine can take the product of the lead while the rest is still
+ * being summed. lead + *rest is within 3 ulps of |sin x0| + |d|, what the rounding of x0 + d
+ * alone would cost (tests/c/test_trig.c). Larger moves (and NaN) return trig_sin(x0 + d) as
+ * the lead, with a rest of 0. */
+#define TRIG_MOVED_TERMS 18
+
+static inline void trig_moved_coefficients(double sin_x0, double cos_x0, double a[TRIG_MOVED_TERMS])
 {
-    if (!(fabs(d) <= 0.7853981633974483))
+    /* (-1)^floor(n/2) / n!, correctly rounded */
+    static const double signed_inverse_factorial[TRIG_MOVED_TERMS] = {
+        1.0, 1.0, -0.5, -0.16666666666666666, 0.041666666666666664, 0.008333333333333333,
+        -0.001388888888888889, -0.0001984126984126984, 2.48015873015873e-05, 2.7557319223985893e-06,
+        -2.755731922398589e-07, -2.505210838544172e-08, 2.08767569878681e-09, 1.6059043836821613e-10,
+        -1.1470745597729725e-11, -7.647163731819816e-13, 4.779477332387385e-14, 2.8114572543455206e-15};
+    for (int n = 0; n < TRIG_MOVED_TERMS; n++)
+        a[n] = ((n & 1) ? cos_x0 : sin_x0) * signed_inverse_factorial[n];
+}
+
+static inline double trig_sin_moved(double x0, const double a[TRIG_MOVED_TERMS], double d, double *rest)
+{
+    if (!(fabs(d) <= 0.7853981633974483)) {
+        *rest = 0.0;
         return trig_sin(x0 + d);
-    /* sin x0 (1 + z pc) + cos x0 (d + d z ps), grouped so that the series' tails enter last */
-    const double z = d * d, cos_d = cos_x0 * d;
-    double ps, pc;
-    trig_series(z, &ps, &pc);
-    return (sin_x0 + cos_d) + z * (sin_x0 * pc + cos_d * ps);
+    }
+    const double d2 = d * d, d4 = d2 * d2, d10 = (d4 * d4) * d2;
+    const double low = ((a[2] + a[3] * d) + d2 * (a[4] + a[5] * d))
+                       + d4 * ((a[6] + a[7] * d) + d2 * (a[8] + a[9] * d));
+    const double high = ((a[10] + a[11] * d) + d2 * (a[12] + a[13] * d))
+                        + d4 * ((a[14] + a[15] * d) + d2 * (a[16] + a[17] * d));
+    *rest = d2 * low + d10 * high;
+    return a[0] + a[1] * d;
 }
 
 #endif

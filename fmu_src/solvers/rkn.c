@@ -158,11 +158,17 @@ int integ_rkn_step(Integrator *it)
 {
     const double x0 = it->y[0], v0 = it->y[1];
     /* The stages hold sin theta; the acceleration -w0^2 sin theta enters through w0^2 h^2 once
-     * per sum, not once per stage: a multiplication and an addition fewer on the chain of
-     * dependent operations from one stage to the next. The solution's sums take w0^2 in
-     * double-double (the period over many steps); a stage's argument needs only its double
-     * (the low part, 1e-16 of the term, is below the argument's own rounding). */
+     * per sum, not once per stage. A stage's move is
+     *   x_i - x0 = h c_i v0 + h^2 sum_j a_ij f_j
+     *            = ((h c_i v0 - w0^2 h^2 sum_{j<i-1} a_ij sn_j) - W lead_i-1) - W rest_i-1,
+     * W = w0^2 h^2 a_i,i-1 and sn_i-1 = lead_i-1 + rest_i-1 (trig_sin_moved), so that between one
+     * stage's move and the next lie only the rest of the sine's polynomial, a product and a
+     * subtraction: everything else is summed while the previous stage is evaluated. The
+     * solution's sums take w0^2 in double-double (the period over many steps); a stage's move
+     * needs only its double (the low part, 1e-16 of the term, is below the move's own rounding). */
     const double sin_x0 = it->dense[TRIG_ROW][0], cos_x0 = it->dense[TRIG_ROW][1];
+    double taylor_sin[TRIG_MOVED_TERMS];   /* sin about x0, the polynomial every stage evaluates */
+    trig_moved_coefficients(sin_x0, cos_x0, taylor_sin);
     double sn[RKN_STAGES];
     sn[0] = sin_x0;   /* sin x0, kept from the end of the previous step */
 
@@ -171,12 +177,15 @@ int integ_rkn_step(Integrator *it)
         if (!(h >= integ_hmin(it->t)) || !isfinite(h))
             return -1;   /* step-size underflow */
         const double wh = it->w0sq * (h * h), wl = it->w0sq_lo * (h * h);
+        double lead = sin_x0, rest = 0.0;
         for (int i = 1; i < RKN_STAGES; i++) {
             double s = 0.0;
-            for (int j = 0; j < i; j++)
+            for (int j = 0; j < i - 1; j++)
                 s += A[i][j] * sn[j];
-            /* x_i - x0 = h c_i v0 + h^2 sum_j a_ij f_j, f_j = -w0^2 sn_j */
-            sn[i] = trig_sin_moved(x0, sin_x0, cos_x0, h * (C[i] * v0) - wh * s);
+            const double W = wh * A[i][i - 1];
+            const double move = ((h * (C[i] * v0) - wh * s) - W * lead) - W * rest;
+            lead = trig_sin_moved(x0, taylor_sin, move, &rest);
+            sn[i] = lead + rest;
         }
         it->stats.rhs_evals += RKN_STAGES - 1;
         double sx = 0.0, sv = 0.0, ex = 0.0, ev = 0.0;
