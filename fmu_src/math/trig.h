@@ -27,19 +27,25 @@
 #define TRIG_REDUCE_LIMIT 524288.0   /* 2^19: |k| < 2^19 (2/pi) < 2^20 */
 #define TRIG_TINY 7.450580596923828e-09   /* 2^-27: x^2/2 < 2^-55, below half an ulp of 1 */
 
+/* (-1)^floor(n/2) / n!, correctly rounded: the Taylor coefficients of sin and cos */
+#define TRIG_TERMS 18
+static const double TRIG_SIGNED_INVERSE_FACTORIAL[TRIG_TERMS] = {
+    1.0, 1.0, -0.5, -0.16666666666666666, 0.041666666666666664, 0.008333333333333333,
+    -0.001388888888888889, -0.0001984126984126984, 2.48015873015873e-05, 2.7557319223985893e-06,
+    -2.755731922398589e-07, -2.505210838544172e-08, 2.08767569878681e-09, 1.6059043836821613e-10,
+    -1.1470745597729725e-11, -7.647163731819816e-13, 4.779477332387385e-14, 2.8114572543455206e-15};
+
 /* The series' tails in z = r^2 for |r| <= pi/4 (plus a rounding): sin r = r + r z ps,
- * cos r = 1 + z pc. Estrin's scheme: half the dependent steps of Horner's. */
+ * cos r = 1 + z pc, ps = sum_k c_{2k+3} z^k and pc = sum_k c_{2k+2} z^k with c the table above.
+ * Estrin's scheme: half the dependent steps of Horner's. */
 static inline void trig_series(double z, double *ps, double *pc)
 {
+    const double *c = TRIG_SIGNED_INVERSE_FACTORIAL;
     const double z2 = z * z, z4 = z2 * z2;
-    *ps = ((-0.16666666666666666 + z * 0.008333333333333333)
-           + z2 * (-0.0001984126984126984 + z * 2.7557319223985893e-06))
-          + z4 * ((-2.505210838544172e-08 + z * 1.6059043836821613e-10)
-                  + z2 * (-7.647163731819816e-13 + z * 2.8114572543455206e-15));
-    *pc = ((-0.5 + z * 0.041666666666666664)
-           + z2 * (-0.001388888888888889 + z * 2.48015873015873e-05))
-          + z4 * ((-2.755731922398589e-07 + z * 2.08767569878681e-09)
-                  + z2 * (-1.1470745597729725e-11 + z * 4.779477332387385e-14));
+    *ps = ((c[3] + z * c[5]) + z2 * (c[7] + z * c[9]))
+          + z4 * ((c[11] + z * c[13]) + z2 * (c[15] + z * c[17]));
+    *pc = ((c[2] + z * c[4]) + z2 * (c[6] + z * c[8]))
+          + z4 * ((c[10] + z * c[12]) + z2 * (c[14] + z * c[16]));
 }
 
 /* sin and cos of r + r_lo for |r| <= pi/4 (plus a rounding), |r_lo| <= ulp(r) */
@@ -98,18 +104,12 @@ static inline double trig_sin(double x)
  * being summed. lead + *rest is within 3 ulps of |sin x0| + |d|, what the rounding of x0 + d
  * alone would cost (tests/c/test_trig.c). Larger moves (and NaN) return trig_sin(x0 + d) as
  * the lead, with a rest of 0. */
-#define TRIG_MOVED_TERMS 18
+#define TRIG_MOVED_TERMS TRIG_TERMS
 
 static inline void trig_moved_coefficients(double sin_x0, double cos_x0, double a[TRIG_MOVED_TERMS])
 {
-    /* (-1)^floor(n/2) / n!, correctly rounded */
-    static const double signed_inverse_factorial[TRIG_MOVED_TERMS] = {
-        1.0, 1.0, -0.5, -0.16666666666666666, 0.041666666666666664, 0.008333333333333333,
-        -0.001388888888888889, -0.0001984126984126984, 2.48015873015873e-05, 2.7557319223985893e-06,
-        -2.755731922398589e-07, -2.505210838544172e-08, 2.08767569878681e-09, 1.6059043836821613e-10,
-        -1.1470745597729725e-11, -7.647163731819816e-13, 4.779477332387385e-14, 2.8114572543455206e-15};
     for (int n = 0; n < TRIG_MOVED_TERMS; n++)
-        a[n] = ((n & 1) ? cos_x0 : sin_x0) * signed_inverse_factorial[n];
+        a[n] = ((n & 1) ? cos_x0 : sin_x0) * TRIG_SIGNED_INVERSE_FACTORIAL[n];
 }
 
 static inline double trig_sin_moved(double x0, const double a[TRIG_MOVED_TERMS], double d, double *rest)

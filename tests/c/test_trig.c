@@ -5,9 +5,9 @@
  * the special values (+-0 with its sign, subnormals, infinities, NaN). Each result within
  * 1 ulp of libm's; prints the largest distance in ulps at each scale and one summary line.
  * trig_sin_moved (sin(x0 + d), the Taylor polynomial in d about x0, its two parts summed)
- * against libm's sin of the sum, where the sum is exact: within 3 ulps of |sin x0| + |d| (half an ulp each: the two
- * inputs, the leading product, the two last sums, the reference), for moves up to pi/4 and
- * beyond (where it takes trig_sin of the sum). */
+ * against libm's sin of the sum, where the sum is exact: within 3 ulps of |sin x0| + |d|
+ * (half an ulp each: the two inputs, the leading product, the two last sums, the reference),
+ * for moves up to pi/4 and beyond (where it takes trig_sin of the sum). */
 #include <float.h>
 #include <math.h>
 #include <stdint.h>
