@@ -1,8 +1,8 @@
 /* trig.h: sine and cosine of a double, inline: rkn's stages (trig_sin_moved) and the outputs
  * x and y (one trig_sincos for both).
  *
- * rkn evaluates sin(theta) at 16 stages a step, each one on the step's chain of dependent
- * operations, where libm's sin is a call with branches on the argument's range and a range
+ * rkn evaluates sin(theta) at 16 stages a step, 15 of them one after another on the step's
+ * chain of dependent operations, where libm's sin is a call with branches on the argument's range and a range
  * reduction. trig_sin_moved needs no reduction (the stages lie near the step's start, whose
  * sine and cosine are known). trig_sincos, for |x| < 2^19:
  *   x = k pi/2 + r, k the integer nearest to x 2/pi, |r| <= pi/4 (plus a rounding);
