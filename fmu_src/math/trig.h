@@ -2,9 +2,9 @@
  * x and y (one trig_sincos for both).
  *
  * rkn evaluates sin(theta) at 16 stages a step, 15 of them one after another on the step's
- * chain of dependent operations, where libm's sin is a call with branches on the argument's range and a range
- * reduction. trig_sin_moved needs no reduction (the stages lie near the step's start, whose
- * sine and cosine are known). trig_sincos, for |x| < 2^19:
+ * chain of dependent operations, where libm's sin is a call with branches on the argument's
+ * range and a range reduction. trig_sin_moved needs no reduction (the stages lie near the
+ * step's start, whose sine and cosine are known). trig_sincos, for |x| < 2^19:
  *   x = k pi/2 + r, k the integer nearest to x 2/pi, |r| <= pi/4 (plus a rounding);
  *   r = ((x - k P1) - k P2) - k P3 (Cody and Waite), with pi/2 = P1 + P2 + P3 + 1e-37:
  *     P1 and P2 hold 33 bits each, so k P1 and k P2 are exact for |k| < 2^20, and
