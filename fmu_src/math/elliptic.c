@@ -211,39 +211,38 @@ double elliptic_K(double m1)
 }
 
 /* K from k' = sqrt(m1) in double-double (k' > 0): K = (pi/2) / AGM(1, k').
- * The AGM runs in double-double until x = (a - b)/(a + b) <= 2^-15, then the mean of the
- * close pair comes from its series: AGM(c (1 + x), c (1 - x)) = c (1 - x^2/4 - 5 x^4/64
- * - 11 x^6/256 - 469 x^8/16384 - ...), c = (a + b)/2 (the Taylor series of
- * AGM(1 + x, 1 - x) = 1 / 2F1(1/2, 1/2; 1; x^2), DLMF 19.8.5 with 19.5.1; coefficients
- * checked with mpmath); the omitted terms are below 0.022 x^10 < 2^-155. x is formed in
- * double-double from a - b (a.hi - b.hi exact by Sterbenz, a.lo - b.lo within 2^-106) and
- * x^2/4 (below 2^-32) in double-double; the higher terms (below 2^-63) need a double only.
- * This saves one to two square-root steps over running the means to |a - b| ~ 1e-17. */
+ * The AGM runs in double-double until x = (a - b)/(a + b) <= 2^-15. For that close pair,
+ * with c = (a + b)/2, AGM(a, b) = c AGM(1 + x, 1 - x) = c / 2F1(1/2, 1/2; 1; x^2)
+ * (DLMF 19.8.5 with 19.5.1), so
+ *   K = (pi/2) / AGM = (pi / (a + b)) (1 + x^2/4 + 9 x^4/64 + 25 x^6/256 + 1225 x^8/16384 + ...),
+ * the series of 2F1 (coefficients ((1/2)_n / n!)^2); the omitted terms are below
+ * 0.061 x^10 < 2^-154. x is formed in double-double from a - b (a.hi - b.hi exact by
+ * Sterbenz, a.lo - b.lo within 2^-106) and x^2/4 (below 2^-32) in double-double; the higher
+ * terms (below 2^-62) need a double only. The quotient pi / (a + b) does not wait for x:
+ * the two divisions run side by side. This saves one to two square-root steps over running
+ * the means to |a - b| ~ 1e-17. */
 static EllipticDD K_dd_of_root(EllipticDD kc)
 {
     EllipticDD a = elliptic_dd(1.0), b = kc;
-    EllipticDD agm = elliptic_dd(NAN);
     for (int i = 0; i < 64; ++i) {
         const EllipticDD sum = elliptic_dd_add(a, b);
         const double diff_hi = a.hi - b.hi;
         if (fabs(diff_hi) <= 0x1p-15 * sum.hi) {
+            const EllipticDD base = elliptic_dd_div(fast_two_sum(ELLIPTIC_PI_HI, ELLIPTIC_PI_LO), sum);
             const EllipticDD diff = elliptic_two_sum(diff_hi, a.lo - b.lo);
             const EllipticDD x = elliptic_dd_div(diff, sum);
             const EllipticDD x2 = elliptic_dd_mul(x, x);
             const double t = x2.hi;
-            const double higher = t * t * (5.0 / 64.0 + t * (11.0 / 256.0 + t * (469.0 / 16384.0)));
-            const EllipticDD correction = elliptic_dd_add((EllipticDD){0.25 * x2.hi, 0.25 * x2.lo},
-                                                          elliptic_dd(higher));
-            const EllipticDD c = {0.5 * sum.hi, 0.5 * sum.lo};
-            agm = elliptic_dd_add(c, elliptic_dd_neg(elliptic_dd_mul(c, correction)));
-            break;
+            const double higher = t * t * (9.0 / 64.0 + t * (25.0 / 256.0 + t * (1225.0 / 16384.0)));
+            const EllipticDD series = elliptic_dd_add((EllipticDD){0.25 * x2.hi, 0.25 * x2.lo},
+                                                      elliptic_dd(higher));   /* 2F1 - 1 */
+            return elliptic_dd_add(base, elliptic_dd_mul(base, series));
         }
         const EllipticDD a_next = {0.5 * sum.hi, 0.5 * sum.lo};
         b = elliptic_dd_sqrt(elliptic_dd_mul(a, b));
         a = a_next;
     }
-    const EllipticDD half_pi = fast_two_sum(HALF_PI_HI, HALF_PI_LO);
-    return elliptic_dd_div(half_pi, agm);   /* K = (pi/2) / AGM */
+    return elliptic_dd(NAN);
 }
 
 EllipticDD elliptic_K_dd(EllipticDD m1)

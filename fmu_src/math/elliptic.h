@@ -250,8 +250,8 @@ void elliptic_dd_cos_sin(EllipticDD x, EllipticDD *cos_x, double *sin_x);
  * Returns +INFINITY for m1 == 0 and NaN for m1 < 0 or NaN. About 1 ulp. */
 double elliptic_K(double m1);
 
-/* The same in double-double, from m1 in double-double (m1 >= 0); the AGM is run in
- * double-double until |a - b| < 1e-17 a, then one more mean (error ~(a-b)^2/(8a)). */
+/* The same in double-double, from m1 in double-double (m1 >= 0): the AGM in double-double
+ * until the pair is within 2^-15 of each other, then the series of 2F1 (elliptic.c). */
 EllipticDD elliptic_K_dd(EllipticDD m1);
 
 /* Carlson's symmetric integral R_F(x, y, z) = 1/2 int_0^inf dt / sqrt((t+x)(t+y)(t+z))
