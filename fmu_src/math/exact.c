@@ -587,34 +587,14 @@ int pendulum_exact_resolvable(const PendulumExact *ex, double t)
 
 /* Phase in quarter periods: x = (scale (t - t0) + u0) / K = rho (t - t0) + x0 with rho, x0 in
  * double-double and t - t0 = tau exact as a double-double (TwoSum), split as x = N + f with N
- * an integer (returned as a double-double of two integer-valued doubles, so that it stays
- * exact beyond 2^53) and |f| <= 1/2 (about); returns f. Every product of the rate and the time
- * is exact (two-products), and each is split into its nearest integer and a fraction (both
+ * an integer (a double-double of two integer-valued doubles, so that it stays exact beyond
+ * 2^53) and |f| <= 1/2 (about); f is returned. Every product of the rate and the time is
+ * exact (two-products), and each is split into its nearest integer and a fraction (both
  * exact), so f keeps its absolute accuracy (~1e-16) up to PENDULUM_EXACT_MAX_QUARTERS, where
- * the rate's own precision (~2^-102 relative) becomes the limit. */
-static double phase_quarters(const PendulumExact *ex, double t, EllipticDD *N)
+ * the rate's own precision (~2^-102 relative) becomes the limit. This is the branch from 2^50
+ * quarter periods on (phase_at has the one below, inline). */
+static double phase_quarters_far(const PendulumExact *ex, EllipticDD tau, EllipticDD *N)
 {
-    EllipticDD tau = elliptic_two_sum(t, -ex->t0);
-    const double x_hi = ex->rho_hi * tau.hi;
-    if (fabs(x_hi) < 0x1p50) {
-        /* Up to 2^50 quarter periods the cross terms rho_hi tau.lo, rho_lo tau.hi stay below
-         * 1/8 and need no integer split: the exact product rho_hi tau.hi = x_hi + x_lo, with
-         * rho_hi split once in init (Dekker) or by the fma, is all the work. */
-#ifdef FP_FAST_FMA
-        const double x_lo = fma(ex->rho_hi, tau.hi, -x_hi);
-#else
-        const double tau_split = 134217729.0 * tau.hi;          /* Veltkamp split of tau.hi */
-        const double tau_head = tau_split - (tau_split - tau.hi), tau_tail = tau.hi - tau_head;
-        const double x_lo = ((ex->rho_head * tau_head - x_hi) + ex->rho_head * tau_tail
-                             + ex->rho_tail * tau_head) + ex->rho_tail * tau_tail;
-#endif
-        const double quarters = elliptic_nearest_integer(x_hi + ex->x0_hi);
-        *N = elliptic_dd(quarters);
-        /* x_hi - quarters is exact once quarters exceeds a few (Sterbenz); below, all is small */
-        const double fraction = ((x_hi - quarters) + ex->x0_hi)
-                                + (x_lo + (ex->rho_hi * tau.lo + ex->rho_lo * tau.hi) + ex->x0_lo);
-        return fraction;
-    }
     double rho_hi = ex->rho_hi, rho_lo = ex->rho_lo;
     if (fabs(tau.hi) > 0x1p900) {
         /* keep Dekker's split (|x| < 2^995) in range; rho is then tiny, so this is exact */
@@ -637,6 +617,41 @@ static double phase_quarters(const PendulumExact *ex, double t, EllipticDD *N)
     return fraction - n_f;
 }
 
+/* The phase of a libration or rotation at t: the fraction f of a quarter period (*f), the
+ * quarter N (*N) and N mod 4 (returned, 0..3), or -1 where t is not resolvable
+ * (pendulum_exact_resolvable; nothing written then). Inline, for the evaluation's common
+ * case: up to 2^50 quarter periods the cross terms rho_hi tau.lo, rho_lo tau.hi stay below
+ * 1/8 and need no integer split, and the exact product rho_hi tau.hi = x_hi + x_lo, with
+ * rho_hi split once in init (Dekker) or by the fma, is all the work; a phase within 2^50
+ * quarter periods is resolvable (2^50 < PENDULUM_EXACT_MAX_QUARTERS, and a time that is not
+ * finite fails |x_hi| < 2^50 as rho_hi > 0). */
+static inline int phase_at(const PendulumExact *ex, double t, double *f, EllipticDD *N)
+{
+    const EllipticDD tau = elliptic_two_sum(t, -ex->t0);
+    const double x_hi = ex->rho_hi * tau.hi;
+    if (fabs(x_hi) < 0x1p50) {
+#ifdef FP_FAST_FMA
+        const double x_lo = fma(ex->rho_hi, tau.hi, -x_hi);
+#else
+        const double tau_split = 134217729.0 * tau.hi;          /* Veltkamp split of tau.hi */
+        const double tau_head = tau_split - (tau_split - tau.hi), tau_tail = tau.hi - tau_head;
+        const double x_lo = ((ex->rho_head * tau_head - x_hi) + ex->rho_head * tau_tail
+                             + ex->rho_tail * tau_head) + ex->rho_tail * tau_tail;
+#endif
+        const double quarters = elliptic_nearest_integer(x_hi + ex->x0_hi);
+        *N = elliptic_dd(quarters);
+        /* x_hi - quarters is exact once quarters exceeds a few (Sterbenz); below, all is small */
+        *f = ((x_hi - quarters) + ex->x0_hi)
+             + (x_lo + (ex->rho_hi * tau.lo + ex->rho_lo * tau.hi) + ex->x0_lo);
+        return (int)((long long)quarters & 3);   /* |quarters| < 2^51 */
+    }
+    if (!pendulum_exact_resolvable(ex, t)) {
+        return -1;
+    }
+    *f = phase_quarters_far(ex, tau, N);
+    return (elliptic_quarter_of(N->hi) + elliptic_quarter_of(N->lo)) & 3;
+}
+
 /* half_turns pi + angle, for an integer-valued double-double half_turns (|half_turns| < 2^64):
  * half_turns.hi pi_hi exact (two-product), the remaining products below its rounding. */
 static double add_half_turns(EllipticDD half_turns, double angle)
@@ -650,7 +665,8 @@ static double add_half_turns(EllipticDD half_turns, double angle)
 
 void pendulum_exact_eval(const PendulumExact *ex, double t, double *theta, double *omega)
 {
-    double angle, om;
+    double angle, om, f = 0.0;
+    EllipticDD n = elliptic_dd(0.0);
     EllipticDD winding = elliptic_dd(0.0);   /* half turns of a rotation since t0: direction N */
 
     if (t == ex->t0) {
@@ -658,18 +674,19 @@ void pendulum_exact_eval(const PendulumExact *ex, double t, double *theta, doubl
         *omega = ex->omega0;
         return;
     }
-    if (!pendulum_exact_resolvable(ex, t)) {
-        *theta = *omega = NAN;   /* beyond the resolved phase, or t not finite */
+    /* the quarter n mod 4 of a libration or rotation; -1: beyond the resolved phase, or t not
+     * finite */
+    const int quarter = ex->regime == PENDULUM_SEPARATRIX ? (pendulum_exact_resolvable(ex, t) ? 0 : -1)
+                                                          : phase_at(ex, t, &f, &n);
+    if (quarter < 0) {
+        *theta = *omega = NAN;
         return;
     }
     if (ex->regime == PENDULUM_LIBRATION) {
-        EllipticDD n;
-        const double f = phase_quarters(ex, t, &n);
         EllipticHomogeneous h0, h1;                 /* sn r = h0.S / h0.D, ... at levels 0, 1 */
         elliptic_sncndn_homogeneous_pair(&ex->ell, f * ex->K_hi, &h0, &h1);
         /* The quarter n mod 4 picks the formulas of the header comment through exact 0/1
          * weights (x * 0 + y * 1 == y exactly): no data-dependent branch. */
-        const int quarter = (elliptic_quarter_of(n.hi) + elliptic_quarter_of(n.lo)) & 3;
         const double odd = (double)(quarter & 1), even = 1.0 - odd;
         const double sign = 1.0 - (double)(quarter & 2);          /* -1 for n = 2, 3 mod 4 */
         /* theta/2 = atan2(k sn u, dn u) = 2 atan(sqrt(k_1) sn(u_1 | m_1)) (elliptic.h), and at
@@ -680,11 +697,8 @@ void pendulum_exact_eval(const PendulumExact *ex, double t, double *theta, doubl
         const double cn_num = even * h0.C - odd * (ex->kc * h0.S), den = even * h0.D + odd * h0.E;
         om = 2.0 * (sign * ex->omega_half * (cn_num / den));     /* 2 k w0 cn u */
     } else if (ex->regime == PENDULUM_ROTATION) {
-        EllipticDD n;
         double S, C, E, D;
-        const double f = phase_quarters(ex, t, &n);
         elliptic_sncndn_homogeneous(&ex->ell, f * ex->K_hi, &S, &C, &E, &D); /* sn r = S/D, ... */
-        const int quarter = (elliptic_quarter_of(n.hi) + elliptic_quarter_of(n.lo)) & 3;
         const double odd = (double)(quarter & 1), even = 1.0 - odd;
         /* am(nK + r) - n pi/2 = atan(sn r / cn r) (n even), atan(k' sn r / cn r) (n odd); C > 0
          * for |r| < K, as elliptic_atan_ratio requires */
@@ -706,7 +720,12 @@ void pendulum_exact_eval(const PendulumExact *ex, double t, double *theta, doubl
 
     /* theta = 2 pi j + winding pi + angle, j = theta_turns. */
     if (fabs(ex->theta_turns) < 0x1p50) {
-        *theta = add_half_turns(elliptic_dd_add(elliptic_dd(2.0 * ex->theta_turns), winding), angle);
+        /* without winding (no rotation) the half turns are 2 j itself (exact): adding a
+         * double-double 0 would change no bit */
+        const EllipticDD half_turns = ex->regime == PENDULUM_ROTATION
+                                          ? elliptic_dd_add(elliptic_dd(2.0 * ex->theta_turns), winding)
+                                          : elliptic_dd(2.0 * ex->theta_turns);
+        *theta = add_half_turns(half_turns, angle);
     } else {
         /* theta0 beyond 2^52 rad, where no angle is resolved (its ulp is 1 rad or more):
          * theta0 plus the change since t0. */
@@ -914,10 +933,9 @@ void pendulum_exact_sin_cos(const PendulumExact *ex, double t, double *sin_theta
         sign = ex->direction;
     } else {
         EllipticDD n;
-        double S, C, E, D;
-        const double f = phase_quarters(ex, t, &n);
+        double S, C, E, D, f;
+        const int quarter = phase_at(ex, t, &f, &n);   /* resolvable: checked above */
         elliptic_sncndn_homogeneous(&ex->ell, f * ex->K_hi, &S, &C, &E, &D);   /* sn r = S/D, ... */
-        const int quarter = (elliptic_quarter_of(n.hi) + elliptic_quarter_of(n.lo)) & 3;
         const double turn = 1.0 - (double)(quarter & 2);   /* -1 for n = 2, 3 mod 4 */
         if (ex->regime == PENDULUM_LIBRATION) {
             /* sin(theta/2) = k sn u, cos(theta/2) = dn u with sn(K + r) = cd r, dn(K + r) = k'/dn r */
