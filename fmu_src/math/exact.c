@@ -770,7 +770,7 @@ static int eval_libration_lanes(const PendulumExact *ex, const double *t, double
             return 0;
         }
     }
-    /* phase_quarters, the branch below 2^50 quarter periods; the quarter n mod 4 as the
+    /* phase_at, the branch below 2^50 quarter periods; the quarter n mod 4 as the
      * weights of pendulum_exact_eval (odd, sign), from r = n - 4 nearest(n/4) in {-2..2}:
      * odd = [r = +-1] = r^2 (4 - r^2)/3, [n mod 4 in {2, 3}] = [r = +-2] + [r = -1]
      * = r^2 (r^2 - 1)/12 + odd (1 - r)/2, all exact small integers */
