@@ -365,15 +365,15 @@ static inline EllipticHomogeneous elliptic_landen_step_plain(const EllipticParam
 
 /* The largest number of levels for which no step can need the renormalisation: from the
  * bottom (D = 1, |S| <= D) each step gives D' = D^2 + k S^2 <= 2.01 D^2, so after n steps
- * D <= 2.01^(2^n - 1) < 2^130 < ELLIPTIC_HOMOGENEOUS_RESCALE for n <= 7 (the ascent below and
- * the lock-step evaluation of several points take the plain steps then). */
+ * D <= 2.01^(2^n - 1) < 2^130 < ELLIPTIC_HOMOGENEOUS_RESCALE for n <= 7: elliptic_landen_step
+ * then skips its test, and the lock-step evaluation of several points takes the plain steps. */
 #define ELLIPTIC_LEVELS_WITHOUT_RESCALE 7
 
 static inline EllipticHomogeneous elliptic_landen_step(const EllipticParam *p, int index,
                                                        EllipticHomogeneous h)
 {
     EllipticHomogeneous up = elliptic_landen_step_plain(p, index, h);
-    if (up.D > ELLIPTIC_HOMOGENEOUS_RESCALE) {
+    if (p->levels > ELLIPTIC_LEVELS_WITHOUT_RESCALE && up.D > ELLIPTIC_HOMOGENEOUS_RESCALE) {
         const double inv = 1.0 / up.D;
         up.S *= inv;
         up.C *= inv;
@@ -413,13 +413,6 @@ static inline EllipticHomogeneous elliptic_landen_ascend(const EllipticParam *p,
     h.C = cz + w * sz;
     h.E = 1.0 - 0.5 * p->bottom_m * sz * sz;
     h.D = 1.0;
-    if (p->levels <= ELLIPTIC_LEVELS_WITHOUT_RESCALE) {
-        /* no step can need the renormalisation: the plain steps, without its test */
-        for (int i = p->levels - 1; i >= level; --i) {
-            h = elliptic_landen_step_plain(p, i, h);
-        }
-        return h;
-    }
     for (int i = p->levels - 1; i >= level; --i) {
         h = elliptic_landen_step(p, i, h);
     }
@@ -450,8 +443,7 @@ static inline void elliptic_sncndn_homogeneous_pair(const EllipticParam *p, doub
                                                     EllipticHomogeneous *level1)
 {
     EllipticHomogeneous h1 = elliptic_landen_ascend(p, fabs(v), 1);
-    EllipticHomogeneous h0 = p->levels <= ELLIPTIC_LEVELS_WITHOUT_RESCALE ? elliptic_landen_step_plain(p, 0, h1)
-                                                                          : elliptic_landen_step(p, 0, h1);
+    EllipticHomogeneous h0 = elliptic_landen_step(p, 0, h1);
     if (v < 0.0) {
         h1.S = -h1.S;
         h0.S = -h0.S;
