@@ -104,15 +104,13 @@ static inline double trig_sin(double x)
  * being summed. lead + *rest is within 3 ulps of |sin x0| + |d|, what the rounding of x0 + d
  * alone would cost (tests/c/test_trig.c). Larger moves (and NaN) return trig_sin(x0 + d) as
  * the lead, with a rest of 0. */
-#define TRIG_MOVED_TERMS TRIG_TERMS
-
-static inline void trig_moved_coefficients(double sin_x0, double cos_x0, double a[TRIG_MOVED_TERMS])
+static inline void trig_moved_coefficients(double sin_x0, double cos_x0, double a[TRIG_TERMS])
 {
-    for (int n = 0; n < TRIG_MOVED_TERMS; n++)
+    for (int n = 0; n < TRIG_TERMS; n++)
         a[n] = ((n & 1) ? cos_x0 : sin_x0) * TRIG_SIGNED_INVERSE_FACTORIAL[n];
 }
 
-static inline double trig_sin_moved(double x0, const double a[TRIG_MOVED_TERMS], double d, double *rest)
+static inline double trig_sin_moved(double x0, const double a[TRIG_TERMS], double d, double *rest)
 {
     if (!(fabs(d) <= 0.7853981633974483)) {
         *rest = 0.0;

@@ -167,7 +167,7 @@ int integ_rkn_step(Integrator *it)
      * solution's sums take w0^2 in double-double (the period over many steps); a stage's move
      * needs only its double (the low part, 1e-16 of the term, is below the move's own rounding). */
     const double sin_x0 = it->dense[TRIG_ROW][0], cos_x0 = it->dense[TRIG_ROW][1];
-    double taylor_sin[TRIG_MOVED_TERMS];   /* sin about x0, the polynomial every stage evaluates */
+    double taylor_sin[TRIG_TERMS];   /* sin about x0, the polynomial every stage evaluates */
     trig_moved_coefficients(sin_x0, cos_x0, taylor_sin);
     double sn[RKN_STAGES];
     sn[0] = sin_x0;   /* sin x0, kept from the end of the previous step */

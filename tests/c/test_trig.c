@@ -96,7 +96,7 @@ int main(void)
         const double x0 = round(uniform(10.0) * 0x1p20) * 0x1p-20;
         const double size = n % 4 == 0 ? 2.0 : n % 4 == 1 ? 0.7853981633974483 : n % 4 == 2 ? 1e-3 : 1e-9;
         const double d = round(uniform(size) * 0x1p48) * 0x1p-48;
-        double taylor_sin[TRIG_MOVED_TERMS];
+        double taylor_sin[TRIG_TERMS];
         trig_moved_coefficients(sin(x0), cos(x0), taylor_sin);
         double rest;
         const double moved = trig_sin_moved(x0, taylor_sin, d, &rest) + rest, exact = sin(x0 + d);
