@@ -198,6 +198,26 @@ def test_an_interrupted_animation_leaves_no_file(installed: Path, folder: Path) 
     _no_leftovers(folder)
 
 
+@pytest.mark.parametrize("name", ["big.csv", "big.parquet"])
+def test_an_interrupt_while_the_table_is_written_leaves_no_file(installed: Path, folder: Path, name: str) -> None:
+    """SIGINT once the table's temporary file exists (5 million points take seconds to write):
+    neither it nor the table is left."""
+    process = subprocess.Popen([str(installed), "simulate", "-a", "80", "-p", "100000", "-n", "50", "-o", name],
+                               cwd=folder, env=_env(folder.parent / "tmp"), stdout=subprocess.PIPE,
+                               stderr=subprocess.PIPE, text=True, start_new_session=True)
+    temporary = folder / f"{name}.tmp"
+    deadline = time.monotonic() + 120
+    while not temporary.exists() and process.poll() is None and time.monotonic() < deadline:
+        time.sleep(0.01)
+    assert temporary.exists(), "the table was never being written"
+    os.killpg(process.pid, signal.SIGINT)
+    _, stderr = process.communicate(timeout=60)
+    assert process.returncode == 130, stderr
+    assert [line for line in stderr.splitlines() if line.strip()][-1] == "pendulum-fmu simulate: interrupted", stderr
+    assert list(folder.iterdir()) == [], "an interrupted write left a file"
+    _no_leftovers(folder)
+
+
 # -- defects 3 and 4: sizes before work, the FMU's reasons ------------------------------------------
 def test_a_run_too_large_for_memory_is_refused_at_once(installed: Path, folder: Path) -> None:
     start = time.monotonic()

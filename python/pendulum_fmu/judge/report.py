@@ -4,14 +4,14 @@ from __future__ import annotations
 
 import json
 import math
-import os
-import tempfile
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
 from pendulum_fmu.judge.verdict import Verdict
+from pendulum_fmu.output.atomic import write_whole
 
 
 def lines(verdict: Verdict) -> list[str]:
@@ -21,17 +21,10 @@ def lines(verdict: Verdict) -> list[str]:
     return out
 
 
-def _replace_atomically(path: Path, write: Any) -> None:
-    """Write through a temporary file in the same folder, then rename: never half a file."""
+def _replace_atomically(path: Path, write: Callable[[Path], object]) -> None:
+    """Write whole or not at all (``write_whole``), into a folder created if missing."""
     path.parent.mkdir(parents=True, exist_ok=True)
-    handle, temporary = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=path.suffix)
-    os.close(handle)
-    try:
-        write(Path(temporary))
-        os.replace(temporary, path)
-    finally:
-        if os.path.exists(temporary):
-            os.unlink(temporary)
+    write_whole(path, write)
 
 
 def _plain(value: Any) -> Any:

@@ -11,6 +11,8 @@ import pyarrow as pa
 import pyarrow.csv as pa_csv
 import pyarrow.parquet as pq
 
+from pendulum_fmu.output.atomic import write_whole
+
 FORMATS: tuple[str, ...] = (".csv", ".parquet")
 ARROW_TYPES: dict[str, pa.DataType] = {"float": pa.float64(), "int": pa.int64(), "str": pa.string()}
 
@@ -61,13 +63,9 @@ def write_table(columns: Mapping[str, Sequence[Any] | np.ndarray], path: Path,
     if suffix not in FORMATS:
         raise ValueError(f"{path}: the suffix must be one of {', '.join(FORMATS)}")
     table = to_arrow(columns, metadata, kinds)
-    temporary = path.with_name(path.name + ".tmp")
     if suffix == ".parquet":
-        pq.write_table(table, temporary)
-    else:
-        pa_csv.write_csv(table, temporary)
-    temporary.replace(path)  # never leave a half-written table under the final name
-    return path
+        return write_whole(path, lambda temporary: pq.write_table(table, temporary))
+    return write_whole(path, lambda temporary: pa_csv.write_csv(table, temporary))
 
 
 def read_table(path: Path, kinds: Mapping[str, str] | None = None) -> pa.Table:
