@@ -76,8 +76,12 @@ def test_the_installed_package_runs_its_shipped_c_loop(installed: Path, tmp_path
               "from pendulum_fmu import FmuRunner, Pendulum, Method, TimeGrid; print(driver.library_path()); "
               "[print(r.loop, r.fmi_version, r.run(Pendulum.from_degrees(80), Method('rkn', 1e-9), "
               "TimeGrid(2, 'periods', 20)).max_error) for r in (FmuRunner(PACKAGED_FMU), FmuRunner(PACKAGED_FMU3))]")
-    done = _run([str(python), "-c", script], tmp_path, _clean_env())
+    private_tmp = tmp_path / "tmp"
+    private_tmp.mkdir()
+    done = _run([str(python), "-c", script], tmp_path, {**_clean_env(), "TMPDIR": str(private_tmp)})
     assert done.returncode == 0, done.stderr[-3000:]
+    # the two runners are never closed: their extracted FMUs go when the interpreter exits
+    assert list(private_tmp.iterdir()) == []
     library, *runs = done.stdout.splitlines()
     site = installed.parent.parent / "lib"
     assert Path(library).is_relative_to(site) and library.endswith("pendulum_fmu/lib/linux64/libpendulum_driver.so")

@@ -23,6 +23,7 @@ import os
 import shutil
 import tempfile
 import time
+import weakref
 from dataclasses import dataclass, field
 from pathlib import Path
 from types import TracebackType
@@ -145,23 +146,27 @@ class FmuRunner:
     Notes
     -----
     Not thread-safe: use one runner per thread. Use it as a context manager, or call
-    :meth:`close`, to free the instances and delete the extracted files.
+    :meth:`close`, to free the instances and delete the extracted files (a runner never
+    closed deletes them when it is collected or the interpreter exits).
     """
 
     def __init__(self, fmu: Path, loop: Loop = "auto") -> None:
         self.fmu = Path(fmu)
         self._tempdir = tempfile.mkdtemp(prefix="pendulum-fmu-")
+        # deletes the extracted files once: at close, or when a runner never closed is collected
+        # or the interpreter exits
+        self._remove_files = weakref.finalize(self, shutil.rmtree, self._tempdir, True)
         try:
             self._unzipdir = extract(str(self.fmu), unzipdir=self._tempdir)
             self.model_description = read_model_description(self._unzipdir, validate=False)
         except BaseException as error:  # nothing left behind: not even on Ctrl-C
-            shutil.rmtree(self._tempdir, ignore_errors=True)
+            self._remove_files()
             if isinstance(error, Exception):  # zipfile, lxml and fmpy raise many kinds
                 raise UsageError("fmu", f"{str(self.fmu)!r} cannot be read as an FMU: {error}") from None
             raise
         problem = description_problem(self.model_description)
         if problem is not None:
-            shutil.rmtree(self._tempdir, ignore_errors=True)
+            self._remove_files()
             raise UsageError("fmu", f"{str(self.fmu)!r} is not the Pendulum FMU of pendulum-fmu: {problem}")
         self.fmi_version: int = FMI_VERSIONS[str(self.model_description.fmiVersion)]
         self.vr: dict[str, int] = {v.name: v.valueReference for v in self.model_description.modelVariables}
@@ -193,7 +198,7 @@ class FmuRunner:
                 unregister(instance.instanceName)
                 instance.freeInstance()
         self._slave = self._model = None
-        shutil.rmtree(self._tempdir, ignore_errors=True)
+        self._remove_files()
 
     # -- instances ---------------------------------------------------------------------------
     def _instance(self, co_simulation: bool) -> Any:
