@@ -1,35 +1,68 @@
 # The reference result of the default experiment, the exact solution, in both FMUs as the
-# layered standard for reference results lays it out (as the Modelica Reference FMUs do):
-#   extra/org.fmi-standard.fmi-ls-ref/fmi-ls-manifest.xml   names the file and its role
-#   extra/org.fmi-standard.fmi-ls-ref/Pendulum_ref.csv       time and outputs, 1000 intervals
-# Generated at build time by reference/write_reference_result.c from the FMU's exact port and
-# the start values; added to each packed FMU by re-packing its folder (cmake/pack_fmu.cmake),
-# so the FMU packing rules themselves stay as they are. Included after the FMUs are defined.
-string(REGEX MATCH "<DefaultExperiment startTime=\"([^\"]+)\" stopTime=\"([^\"]+)\"" _ "${md_text}")
-set(REFERENCE_START ${CMAKE_MATCH_1})
-set(REFERENCE_STOP ${CMAKE_MATCH_2})
+# layered standard for reference results, FMI-LS-REF 1.0.0-beta.1, lays it out:
+#   extra/org.fmi-standard.fmi-ls-ref/fmi-ls-manifest.xml   names each related file and its role
+#   extra/org.fmi-standard.fmi-ls-ref/Pendulum_ref.csv       time and outputs, 1000 intervals (role result)
+#   extra/org.fmi-standard.fmi-ls-ref/Pendulum.exp           the default experiment in the
+#                                                            ma-hs-experiments format (role experiment/validation)
+#   documentation/fmi-ls-ref.html                            what the files are and what to expect of a run
+# Every number comes from modelDescription.xml's DefaultExperiment (the attributes in any
+# order); the CSV is written at build time by reference/write_reference_result.c from the FMU's
+# exact port and the start values. The files are added to each packed FMU by re-packing its
+# folder (cmake/pack_fmu.cmake), so the FMU packing rules themselves stay as they are.
+# Included after the FMUs are defined.
+string(REGEX MATCH "<DefaultExperiment[^>]*>" default_experiment "${md_text}")
+foreach(attribute startTime stopTime tolerance stepSize)
+  if(NOT default_experiment MATCHES "[ \t\r\n]${attribute}=\"([^\"]+)\"")
+    message(FATAL_ERROR "modelDescription.xml: the DefaultExperiment has no ${attribute}")
+  endif()
+  set(REFERENCE_${attribute} ${CMAKE_MATCH_1})
+endforeach()
+set(REFERENCE_START ${REFERENCE_startTime})
+set(REFERENCE_STOP ${REFERENCE_stopTime})
 set(REFERENCE_INTERVALS 1000)
+set(REFERENCE_LS_VERSION 1.0.0-beta.1)
 set(REFERENCE_DIR ${CMAKE_CURRENT_BINARY_DIR}/reference/org.fmi-standard.fmi-ls-ref)
+set(REFERENCE_HTML ${CMAKE_CURRENT_BINARY_DIR}/reference/fmi-ls-ref.html)
 
 add_executable(write_reference_result reference/write_reference_result.c)
 target_include_directories(write_reference_result PRIVATE ${FMU_INCLUDE_DIRS})
 target_compile_options(write_reference_result PRIVATE ${WARNING_FLAGS})
 target_link_libraries(write_reference_result PRIVATE pendulum_core)
 
+set(REFERENCE_CS_DEVIATION 1e-6)
 file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/reference/fmi-ls-manifest.xml.new
   "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
   "<fmiReferences\n"
   "    xmlns:fmi-ls=\"http://fmi-standard.org/fmi-ls-manifest\"\n"
   "    fmi-ls:fmi-ls-name=\"org.fmi-standard.fmi-ls-ref\"\n"
-  "    fmi-ls:fmi-ls-version=\"1.0.0-alpha.1\"\n"
-  "    fmi-ls:fmi-ls-description=\"Reference result of the default experiment\">\n"
+  "    fmi-ls:fmi-ls-version=\"${REFERENCE_LS_VERSION}\"\n"
+  "    fmi-ls:fmi-ls-description=\"Layered Standard providing information on related files included in an FMU.\">\n"
+  "    <Related type=\"application/x-ma-hs-experiments\" source=\"Pendulum.exp\" role=\"experiment/validation\"\n"
+  "             description=\"The default experiment (the model description's DefaultExperiment and start values) "
+  "with its reference result\"/>\n"
   "    <Related type=\"text/csv\" source=\"Pendulum_ref.csv\" role=\"result\"\n"
   "             description=\"Exact solution (Jacobi elliptic functions) from the start values, "
   "t = ${REFERENCE_START} .. ${REFERENCE_STOP} s in ${REFERENCE_INTERVALS} intervals: what the outputs are "
-  "without solver error; the Co-Simulation run at the default tolerance stays within 1e-6 rad of it\"/>\n"
+  "without solver error; the Co-Simulation run at the default tolerance stays within ${REFERENCE_CS_DEVIATION} rad of it\"/>\n"
+  "    <Related type=\"text/html\" source=\"../../documentation/fmi-ls-ref.html\" role=\"document\"\n"
+  "             description=\"What the related files hold and what a correct run reproduces\"/>\n"
   "</fmiReferences>\n")
 configure_file(${CMAKE_CURRENT_BINARY_DIR}/reference/fmi-ls-manifest.xml.new ${REFERENCE_DIR}/fmi-ls-manifest.xml
                COPYONLY)
+file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/reference/Pendulum.exp.new
+  "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+  "<Experiments name=\"Pendulum\"\n"
+  "    description=\"The default experiment of Pendulum.fmu, with the exact solution as its reference\">\n"
+  "    <Experiment name=\"DefaultExperiment\"\n"
+  "        description=\"The model description's DefaultExperiment from its start values; "
+  "a Co-Simulation run at this tolerance stays within ${REFERENCE_CS_DEVIATION} rad of the reference\"\n"
+  "        startTime=\"${REFERENCE_startTime}\" stopTime=\"${REFERENCE_stopTime}\" "
+  "stepSize=\"${REFERENCE_stepSize}\" tolerance=\"${REFERENCE_tolerance}\">\n"
+  "        <References source=\"Pendulum_ref.csv\"/>\n"
+  "    </Experiment>\n"
+  "</Experiments>\n")
+configure_file(${CMAKE_CURRENT_BINARY_DIR}/reference/Pendulum.exp.new ${REFERENCE_DIR}/Pendulum.exp COPYONLY)
+configure_file(${CMAKE_CURRENT_SOURCE_DIR}/fmu_src/documentation/fmi-ls-ref.html.in ${REFERENCE_HTML} @ONLY)
 add_custom_command(
   OUTPUT ${REFERENCE_DIR}/Pendulum_ref.csv
   COMMAND write_reference_result ${REFERENCE_DIR}/Pendulum_ref.csv ${REFERENCE_START} ${REFERENCE_STOP}
@@ -38,20 +71,21 @@ add_custom_command(
   COMMENT "Writing the reference result of the default experiment"
   VERBATIM)
 
-# Adds extra/ to a packed FMU: copies the reference folder into its folder and zips it again.
-# target: the new target; fmu_target: the target that packs fmu_file. The dependency between the
-# two makes fmu_target's packing run first and once (with only a file dependency, a parallel
-# make would run the packing rule in both targets at the same time).
+# Adds extra/ and documentation/fmi-ls-ref.html to a packed FMU: copies them into its folder
+# and zips it again. target: the new target; fmu_target: the target that packs fmu_file. The
+# dependency between the two makes fmu_target's packing run first and once (with only a file
+# dependency, a parallel make would run the packing rule in both targets at the same time).
 function(add_reference_result target fmu_target fmu_dir fmu_file)
   set(stamp ${CMAKE_CURRENT_BINARY_DIR}/reference/${target}.stamp)
   add_custom_command(
     OUTPUT ${stamp}
     COMMAND ${CMAKE_COMMAND} -E copy_directory ${REFERENCE_DIR} ${fmu_dir}/extra/org.fmi-standard.fmi-ls-ref
+    COMMAND ${CMAKE_COMMAND} -E copy ${REFERENCE_HTML} ${fmu_dir}/documentation/fmi-ls-ref.html
     COMMAND ${CMAKE_COMMAND} -DFMU_DIR=${fmu_dir} -DFMU_FILE=${fmu_file}
             -P ${CMAKE_CURRENT_SOURCE_DIR}/cmake/pack_fmu.cmake
     COMMAND ${CMAKE_COMMAND} -E touch ${stamp}
     DEPENDS ${fmu_file} ${REFERENCE_DIR}/Pendulum_ref.csv ${REFERENCE_DIR}/fmi-ls-manifest.xml
-            ${CMAKE_CURRENT_SOURCE_DIR}/cmake/pack_fmu.cmake
+            ${REFERENCE_DIR}/Pendulum.exp ${REFERENCE_HTML} ${CMAKE_CURRENT_SOURCE_DIR}/cmake/pack_fmu.cmake
     COMMENT "Adding the reference result to ${fmu_file}"
     VERBATIM)
   add_custom_target(${target} ALL DEPENDS ${stamp})
