@@ -24,6 +24,13 @@ static Status take_experiment(Instance *inst, const char *function, int toleranc
     if (tolerance_defined && !(isfinite(tolerance) && tolerance > 0.0 && tolerance < 1.0)) {
         return instance_fail(inst, function, "tolerance %g must be in (0, 1)", tolerance);
     }
+    if (tolerance_defined && inst->type == INTERFACE_CO_SIMULATION && tolerance < INTEGRATOR_TOLERANCE_FLOOR) {
+        /* the step certificate's floor (integrator.h, docs/certificate.md) */
+        return instance_fail(inst, function, "tolerance %g is below %g, the smallest at which a Co-Simulation "
+                             "step can be certified in double precision (the bound 100 tol must stay clear of the "
+                             "exact solution's own error, %g)", tolerance, INTEGRATOR_TOLERANCE_FLOOR,
+                             CERTIFICATE_EXACT_ERROR);
+    }
     if (!isfinite(start_time)) {
         return instance_fail(inst, function, "startTime must be finite");
     }

@@ -1,10 +1,12 @@
 /* instance/certificate.c: every Co-Simulation step that returns OK is a certificate. After
  * each DoStep (FMI 2.0 and 3.0 alike) the numerical state is compared with the exact solution
  * at the new time; OK means both
- *     |theta - theta_exact| <= 100 tol max(1, |theta_exact|)        (rad)
- *     |omega - omega_exact| <= 100 tol max(w0, |omega_exact|)       (rad/s)
- * hold (the omega scale w0 = sqrt(g/L): omega in units of the motion's own rate, so the bound
- * is the same dimensionless statement at every L and g). Otherwise the step returns Warning,
+ *     |theta - theta_exact| <= (100 tol - e) max(1, |theta_exact|)        (rad)
+ *     |omega - omega_exact| <= (100 tol - e) max(w0, |omega_exact|)       (rad/s)
+ * hold, e = 5e-14 the exact port's own error bound (CERTIFICATE_EXACT_ERROR), so that the
+ * true error is within 100 tol of the same scales (the omega scale w0 = sqrt(g/L): omega in
+ * units of the motion's own rate, so the bound is the same dimensionless statement at every L
+ * and g). Otherwise the step returns Warning,
  * every step that stays beyond the bound, and logs (logStatusWarning) when the bound is first
  * crossed and again each time the departure, in units of the bound, has grown tenfold since
  * the last message.
@@ -24,17 +26,24 @@
 
 static const char *const SOLVER_NAMES[] = {"?", "dopri5", "rk4", "rkn", "symplectic"};
 
+double certificate_factor(double tolerance) {
+    /* the bound on the distance to the exact port that leaves room for the port's own error
+     * (instance.h): |x - x_true| <= |x - x_exact| + |x_exact - x_true| */
+    return CERTIFICATE_FACTOR * tolerance - CERTIFICATE_EXACT_ERROR;
+}
+
 double certificate_ratio(double w0, double tolerance, double theta, double omega, double theta_exact,
                          double omega_exact) {
     /* fmax(1, |theta_exact|) and fmax(w0, |omega_exact|) written out (fmax is a library call
      * on x86-64): the same value for every argument, NaN included (the other operand) */
     const double abs_theta = fabs(theta_exact), abs_omega = fabs(omega_exact);
-    const double bound_theta = CERTIFICATE_FACTOR * tolerance * (abs_theta > 1.0 ? abs_theta : 1.0);
-    const double bound_omega = CERTIFICATE_FACTOR * tolerance * (abs_omega > w0 ? abs_omega : w0);
+    const double factor = certificate_factor(tolerance);
+    const double bound_theta = factor * (abs_theta > 1.0 ? abs_theta : 1.0);
+    const double bound_omega = factor * (abs_omega > w0 ? abs_omega : w0);
     const double dev_theta = fabs(theta - theta_exact) / bound_theta;
     const double dev_omega = fabs(omega - omega_exact) / bound_omega;
-    if (!(dev_theta <= DBL_MAX) || !(dev_omega <= DBL_MAX)) {
-        return INFINITY; /* NaN or overflow: nothing is certified */
+    if (!(factor > 0.0) || !(dev_theta <= DBL_MAX) || !(dev_omega <= DBL_MAX)) {
+        return INFINITY; /* no room beside the port's error, NaN or overflow: nothing is certified */
     }
     return dev_theta > dev_omega ? dev_theta : dev_omega; /* both finite: fmax's value */
 }
@@ -97,9 +106,9 @@ Status instance_check_step(Instance *inst) {
                      "(|theta - theta_exact| = %.3g rad, bound %.3g rad; |omega - omega_exact| = %.3g rad/s, "
                      "bound %.3g rad/s; solver %s, tolerance %g, 1 - m = %.3g). %s",
                      data->time, ratio, fabs(data->theta - theta_exact),
-                     CERTIFICATE_FACTOR * data->tolerance * fmax(1.0, fabs(theta_exact)),
+                     certificate_factor(data->tolerance) * fmax(1.0, fabs(theta_exact)),
                      fabs(data->omega - omega_exact),
-                     CERTIFICATE_FACTOR * data->tolerance * fmax(data->exact.w0, fabs(omega_exact)),
+                     certificate_factor(data->tolerance) * fmax(data->exact.w0, fabs(omega_exact)),
                      SOLVER_NAMES[data->solver], data->tolerance, data->exact.m1, hold);
         }
     } else if (miss != NULL && model_exact_now(data, &inst->exact_now, &theta_exact, &omega_exact) != NULL) {

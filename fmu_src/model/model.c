@@ -102,6 +102,10 @@ const char *model_check_state(const ModelData *data, InterfaceType type) {
     if (!(isfinite(data->tolerance) && data->tolerance > 0.0 && data->tolerance < 1.0)) {
         return "the tolerance is out of range (0, 1)";
     }
+    if (type == INTERFACE_CO_SIMULATION && !(data->tolerance >= INTEGRATOR_TOLERANCE_FLOOR)) {
+        return "the tolerance is below the smallest a Co-Simulation step can be certified at "
+               "(INTEGRATOR_TOLERANCE_FLOOR)";
+    }
     if (!isfinite(data->start_time) || !isfinite(data->time) || !isfinite(data->theta) || !isfinite(data->omega)) {
         return "a time or a state is not finite";
     }

@@ -68,7 +68,7 @@ int integ_dopri5_step(Integrator *it)
 
     for (;;) {
         const double h = it->h;
-        if (!(h >= integ_hmin(it->t)) || !isfinite(h))
+        if (!(h >= integ_hmin(it)) || !isfinite(h))
             return -1;   /* step-size underflow */
         for (int i = 0; i < 2; i++)
             ys[i] = y[i] + h * A21 * k1[i];

@@ -161,7 +161,10 @@ int integrator_advance(Integrator *it, double t_out, double y_out[2])
     long budget = INTEGRATOR_MAX_STEPS_PER_ADVANCE;
     if (integrator_min_steps(it, t_out) > (double)budget)
         return -2;   /* out of reach of the budget: refused before any work */
-    while (it->t < t_out) {
+    /* the internal time is the compensated sum t + t_lo: compared as such, the same steps
+     * reach t_out whatever the start time (with t alone, a step landing within ulp(t) of
+     * t_out counted as done or not by the rounding of the clock) */
+    while (integ_time_before(it->t, it->t_lo, t_out)) {
         if (budget-- == 0)
             return -2;
         if (method_step(it) != 0)

@@ -98,6 +98,17 @@ typedef struct {
 #define INTEGRATOR_REACH 1e-21
 #define INTEGRATOR_REACH_RK4 1e-19
 
+/* The smallest tolerance a Co-Simulation experiment may ask for (instance/calls.c refuses a
+ * smaller one, model.c a state that carries one). Below it the step certificate's bound,
+ * 100 tol less the exact port's own error 5e-14 (instance.h), is no longer the tolerance's
+ * (at 1e-15 it would be half of it, at 5e-16 zero), and the solvers no longer follow the
+ * tolerance: the adaptive methods' local tolerance stops at 1e-14 (INTEG_MIN_TOL,
+ * integrator.c). Measured with mpmath (docs/certificate.md) by a build that sets it lower on
+ * the compiler's command line. */
+#ifndef INTEGRATOR_TOLERANCE_FLOOR
+#define INTEGRATOR_TOLERANCE_FLOOR 1e-14
+#endif
+
 /* That line for a method (INTEGRATOR_REACH for an unknown one). */
 double integrator_reach(SolverKind kind);
 

@@ -9,9 +9,14 @@
 #include "elliptic.h"
 #include "integrator_core.h"
 
-double integ_hmin(double t)
+double integ_hmin(const Integrator *it)
 {
-    return fmax(16.0 * DBL_EPSILON * fabs(t), 1e-300);
+    /* 16 eps in the motion's time unit 1/rate: a shorter step moves the state by less than
+     * 16 ulps of its own scale, so its error estimate measures rounding and the step size has
+     * collapsed (HNW's DOPRI5 stops at 0.1 |h| <= eps |t|, in absolute time; here the time is a
+     * compensated sum, t + t_lo, which every step advances, so the test needs no clock and
+     * the same problem takes the same steps from every start time) */
+    return 16.0 * DBL_EPSILON / it->rate;
 }
 
 double integ_energy0(double w0sq, double w0sq_lo, double theta0, double omega0, double *lo)

@@ -133,7 +133,16 @@ void integ_hermite_setup(const double left[INTEG_TAYLOR_TERMS],
  * last step. */
 void integ_hermite_eval(const Integrator *it, double s, double y[2]);
 
-/* The smallest step the adaptive methods may take at time t before reporting underflow. */
-double integ_hmin(double t);
+/* The smallest step any method may take before reporting underflow: 16 eps / rate, in the
+ * motion's own time unit, whatever the start time (the time itself is the compensated sum
+ * t + t_lo, which every step longer than this advances). */
+double integ_hmin(const Integrator *it);
+
+/* 1 if the compensated time t + t_lo lies before x (exact: |t_lo| <= ulp(t) / 2, so the low
+ * part decides only where t == x). */
+static inline int integ_time_before(double t, double t_lo, double x)
+{
+    return t < x || (t == x && t_lo < 0.0);
+}
 
 #endif

@@ -44,8 +44,9 @@ int integ_rk4_step(Integrator *it)
     const double *k1 = it->f;   /* f at (t, y), computed as the end slope of the last step */
     double k2[2], k3[2], k4[2], ys[2], ynew[2], fnew[2];
 
-    if (!(it->t + h > it->t))
-        return -1;   /* the step no longer advances t */
+    if (!(h >= integ_hmin(it)))
+        return -1;   /* below the smallest step (integ_hmin): measured in the motion's time, not
+                        against the clock t, which the compensated sum t + t_lo advances anyway */
     for (int i = 0; i < 2; i++)
         ys[i] = y[i] + 0.5 * h * k1[i];
     integ_rhs(it, ys, k2);

@@ -174,7 +174,7 @@ int integ_rkn_step(Integrator *it)
 
     for (;;) {
         const double h = it->h;
-        if (!(h >= integ_hmin(it->t)) || !isfinite(h))
+        if (!(h >= integ_hmin(it)) || !isfinite(h))
             return -1;   /* step-size underflow */
         const double wh = it->w0sq * (h * h), wl = it->w0sq_lo * (h * h);
         double lead = sin_x0, rest = 0.0;

@@ -79,8 +79,9 @@ int integ_symplectic_step(Integrator *it)
     double x = it->y[0], v = it->y[1];
     double a = it->f[1];   /* force at x, from the end of the previous step */
 
-    if (!(it->t + h > it->t))
-        return -1;   /* the step no longer advances t */
+    if (!(h >= integ_hmin(it)))
+        return -1;   /* below the smallest step (integ_hmin): measured in the motion's time, not
+                        against the clock t, which the compensated sum t + t_lo advances anyway */
     /* compensated sums: dense[1] (unused by the output) carries the rounding of x and v */
     double *carry = it->dense[1];
     for (int i = 0; i < SYMP_STAGES; i++) {

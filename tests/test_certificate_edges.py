@@ -1,0 +1,342 @@
+"""The step certificate at its edges (issue 26, item 7), against an independent mpmath reference.
+
+Every Co-Simulation ``fmi2DoStep`` that returns OK certifies that the TRUE error is within the
+bound (``docs/certificate.md``)::
+
+    |theta - theta(t)| <= 100 tol max(1, |theta(t)|),  |omega - omega(t)| <= 100 tol max(w0, |omega(t)|)
+
+Here ``theta(t)``, ``omega(t)`` come from mpmath's Jacobi elliptic functions at 40 digits
+(:func:`true_state`, written for this test from the pendulum's closed form, not from the FMU's
+exact port), at the step's end time as the FMU holds it (a double), measured from the start
+time exactly. The runs: random states (libration, rotation, near the separatrix), L and g in
+1e-3 .. 1e3, tolerances 1e-4 .. 1e-12, start times 0 .. 2^41, every solver. The issue's own
+cases are tests of their own: the start times that were refused, the rk4 case whose OK was
+1 + 9.7e-6 of the true bound, and the tolerances below the floor that are now refused with
+their reason.
+"""
+
+from __future__ import annotations
+
+import math
+import random
+import shutil
+import tempfile
+from collections.abc import Iterator
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import mpmath as mp
+import pytest
+from fmpy import read_model_description
+from fmpy.fmi1 import FMICallException
+from fmpy.fmi2 import FMU2Slave
+from fmpy.fmi3 import FMU3Slave
+
+from pendulum_fmu.fmu.log import FmuLog, register, shared_callbacks
+
+SOLVERS = ("dopri5", "rk4", "rkn", "symplectic")
+"""The ``solver`` enumeration's items, value 1 .. 4 (modelDescription.xml)."""
+
+FLOOR = 1e-14
+"""The smallest Co-Simulation tolerance (INTEGRATOR_TOLERANCE_FLOOR, fmu_src/solvers/integrator.h)."""
+
+DIGITS = 40
+"""mpmath's working precision for the reference."""
+
+
+def true_state(theta0: float, omega0: float, g: float, length: float, elapsed: mp.mpf) -> tuple[mp.mpf, mp.mpf]:
+    """theta and omega of theta'' = -(g/L) sin theta at ``elapsed`` after (theta0, omega0).
+
+    With w0 = sqrt(g/L), s = sin(theta0/2), q = omega0 / (2 w0) and m = s^2 + q^2 (energy):
+    in libration (m < 1, k = sqrt m) theta = c + 2 asin(k sn(u, m)), omega = 2 k w0 cn(u, m),
+    u = w0 t + u0, sn(u0) = sin((theta0 - c)/2) / k, cn(u0) = q / k, c the multiple of 2 pi
+    the swing is centred on; in rotation (m > 1) theta = 2 am(v, 1/m), omega = 2 sigma sqrt(m)
+    w0 dn(v, 1/m), v = v0 + sigma sqrt(m) w0 t, am(v0) = theta0/2, sigma the sign of omega0.
+    The inputs are the doubles as given, the arithmetic at ``DIGITS`` digits.
+
+    Parameters
+    ----------
+    theta0, omega0 : float
+        Start values (rad, rad/s).
+    g, length : float
+        Gravity (m/s^2) and length (m).
+    elapsed : mpmath.mpf
+        Time since the start (s), exact.
+
+    Returns
+    -------
+    tuple of mpmath.mpf
+        (theta, omega) at that time.
+    """
+    with mp.workdps(DIGITS):
+        w0 = mp.sqrt(mp.mpf(g) / mp.mpf(length))
+        q = mp.mpf(omega0) / (2 * w0)
+        centre = 2 * mp.pi * mp.nint(mp.mpf(theta0) / (2 * mp.pi))
+        half = (mp.mpf(theta0) - centre) / 2
+        m = mp.sin(half) ** 2 + q ** 2
+        if m < 1:
+            k = mp.sqrt(m)
+            if k == 0:
+                return centre, mp.mpf(0)
+            u = mp.ellipf(mp.atan2(mp.sin(half), q), m) + w0 * elapsed
+            sn, cn = mp.ellipfun("sn", u, m=m), mp.ellipfun("cn", u, m=m)
+            return centre + 2 * mp.asin(k * sn), 2 * k * w0 * cn
+        sigma = 1 if omega0 > 0 else -1
+        r = 1 / m
+        v = mp.ellipf(mp.mpf(theta0) / 2, r) + sigma * mp.sqrt(m) * w0 * elapsed
+        quarter = mp.ellipk(r)
+        turns = mp.floor((v + quarter) / (2 * quarter))
+        rest = v - 2 * quarter * turns   # in [-K, K): cn >= 0 there, am = atan2(sn, cn)
+        amplitude = turns * mp.pi + mp.atan2(mp.ellipfun("sn", rest, m=r), mp.ellipfun("cn", rest, m=r))
+        return 2 * amplitude, 2 * sigma * mp.sqrt(m) * w0 * mp.ellipfun("dn", v, m=r)
+
+
+def true_departure(theta: float, omega: float, start: Start, tol: float, t_end: float) -> float:
+    """The step's true error in units of its bound 100 tol (theta and omega, the larger)."""
+    with mp.workdps(DIGITS):
+        th, om = true_state(start.theta0, start.omega0, start.g, start.length, mp.mpf(t_end) - mp.mpf(start.t0))
+        w0 = mp.sqrt(mp.mpf(start.g) / mp.mpf(start.length))
+        a = abs(mp.mpf(theta) - th) / (100 * mp.mpf(tol) * max(1, abs(th)))
+        b = abs(mp.mpf(omega) - om) / (100 * mp.mpf(tol) * max(w0, abs(om)))
+        return float(max(a, b))
+
+
+@dataclass(frozen=True)
+class Start:
+    """A Co-Simulation experiment's start: state, parameters, start time."""
+
+    theta0: float
+    omega0: float
+    length: float
+    g: float
+    t0: float = 0.0
+
+
+class Fmi2:
+    """The FMI 2.0 FMU, unpacked once, instantiated afresh for each run with a log of its own."""
+
+    def __init__(self, fmu: Path, folder: Path) -> None:
+        self.md = read_model_description(str(fmu))
+        shutil.unpack_archive(str(fmu), str(folder), "zip")
+        self.folder = folder
+        self.vr = {v.name: v.valueReference for v in self.md.modelVariables}
+        self.count = 0
+
+    def start(self, start: Start, solver: str, tol: float) -> tuple[Any, FmuLog]:
+        """An initialized slave (an FMICallException if the FMU refuses) and its log."""
+        self.count += 1
+        log = FmuLog()
+        slave = FMU2Slave(guid=self.md.guid, unzipDirectory=str(self.folder),
+                          modelIdentifier=self.md.coSimulation.modelIdentifier,
+                          instanceName=f"edges{self.count}")
+        register(slave.instanceName, log)
+        slave.instantiate(callbacks=shared_callbacks())
+        try:
+            slave.setupExperiment(tolerance=tol, startTime=start.t0)
+            slave.enterInitializationMode()
+            slave.setReal([self.vr[n] for n in ("L", "g", "theta", "omega")],
+                          [start.length, start.g, start.theta0, start.omega0])
+            slave.setInteger([self.vr["solver"]], [SOLVERS.index(solver) + 1])
+            slave.exitInitializationMode()
+        except FMICallException:
+            slave.freeInstance()
+            raise
+        return slave, log
+
+    def state(self, slave: Any) -> tuple[float, float]:
+        """theta and omega of the slave."""
+        theta, omega = slave.getReal([self.vr["theta"], self.vr["omega"]])
+        return float(theta), float(omega)
+
+
+@pytest.fixture(scope="module")
+def fmi2(fmu_path: Path) -> Iterator[Fmi2]:
+    with tempfile.TemporaryDirectory(prefix="certificate-edges-") as folder:
+        yield Fmi2(fmu_path, Path(folder))
+
+
+@dataclass
+class Checked:
+    """What the steps of some runs returned, against the true error."""
+
+    ok: int = 0
+    warned: int = 0
+    ok_beyond: int = 0
+    worst_ok: float = 0.0
+    failures: list[str] | None = None
+
+    def record(self, status: int, departure: float, what: str) -> None:
+        if status == 0:
+            self.ok += 1
+            self.worst_ok = max(self.worst_ok, departure)
+            if not departure <= 1.0:
+                self.ok_beyond += 1
+                self.failures = (self.failures or []) + [f"{what}: OK at {departure:.6g} of the true bound"]
+        else:
+            self.warned += 1
+
+
+def run_steps(fmi2: Fmi2, start: Start, solver: str, tol: float, ends: list[float], checked: Checked) -> None:
+    """DoSteps to each end time in turn, every status checked against the true error."""
+    slave, _ = fmi2.start(start, solver, tol)
+    try:
+        now = start.t0
+        for end in ends:
+            # fmpy's doStep drops the status; its wrapped fmi2DoStep returns it (and raises
+            # above fmi2Warning)
+            status = int(slave.fmi2DoStep(slave.component, now, end - now, 1))
+            now = now + (end - now)   # the FMU's time: point + step, as it rounds it
+            theta, omega = fmi2.state(slave)
+            checked.record(status, true_departure(theta, omega, start, tol, now),
+                           f"{solver} tol {tol:g} {start} t {now!r}")
+    finally:
+        slave.terminate()
+        slave.freeInstance()
+
+
+def test_reference_solves_the_pendulum() -> None:
+    """The reference starts at the start values, keeps the energy and obeys the ODE (so that it
+    can fail: a wrong sign or branch breaks one of these)."""
+    for theta0, omega0 in ((1.2, 0.4), (-2.9, -0.1), (7.0, 1.0), (0.3, 9.0), (-1.0, -12.0), (3.0, 0.0)):
+        th, om = true_state(theta0, omega0, 9.81, 0.7, mp.mpf(0))
+        assert abs(th - theta0) < 1e-30 and abs(om - omega0) < 1e-30
+        with mp.workdps(DIGITS):
+            w0sq = mp.mpf(9.81) / mp.mpf(0.7)
+            energy0 = mp.mpf(omega0) ** 2 / 2 - w0sq * mp.cos(mp.mpf(theta0))
+            for t in (mp.mpf("0.31"), mp.mpf("2.7"), mp.mpf("11.3")):
+                th, om = true_state(theta0, omega0, 9.81, 0.7, t)
+                assert abs(om ** 2 / 2 - w0sq * mp.cos(th) - energy0) < 1e-30
+                dt = mp.mpf("1e-12")
+                th_plus, om_plus = true_state(theta0, omega0, 9.81, 0.7, t + dt)
+                th_minus, om_minus = true_state(theta0, omega0, 9.81, 0.7, t - dt)
+                assert abs((th_plus - th_minus) / (2 * dt) - om) < 1e-18
+                assert abs((om_plus - om_minus) / (2 * dt) + w0sq * mp.sin(th)) < 1e-18
+
+
+def test_issue_start_times_are_ok_and_within_the_true_bound(fmi2: Fmi2) -> None:
+    """The steps the minimum step of absolute time refused ("step size underflow"): OK now, for
+    every solver, within the true bound."""
+    deg75 = math.radians(75.0)
+    checked = Checked()
+    for solver in SOLVERS:
+        run_steps(fmi2, Start(deg75, 0.0, 1e-6, 1e6, 1e7), solver, 1e-8, [1e7 + 6.283185307179586e-07], checked)
+        run_steps(fmi2, Start(deg75, 0.0, 1.0, 9.81, 2.0 ** 41), solver, 1e-8, [2.0 ** 41 + 0.224], checked)
+    assert checked.ok == 8 and checked.ok_beyond == 0, checked.failures
+
+
+def test_rk4_first_crossing_is_not_ok_beyond_the_true_bound(fmi2: Fmi2) -> None:
+    """rk4 at tol 1e-12 from theta0 = 0, omega0 = 6.264183967988169 (L = 1, g = 9.81), the
+    issue's case whose first crossing was OK at 1 + 9.7e-6 of the true bound: every OK on a fine
+    grid of step ends is within the true bound."""
+    start = Start(0.0, 6.264183967988169, 1.0, 9.81)
+    checked = Checked()
+    run_steps(fmi2, start, "rk4", 1e-12, [0.05 * (i + 1) for i in range(120)], checked)
+    assert checked.ok_beyond == 0, checked.failures
+    assert checked.ok > 0
+
+
+@pytest.mark.parametrize("tol", [5e-324, 1e-20, 1e-16, 1e-15])
+def test_below_the_floor_is_refused_naming_the_tolerance(fmi2: Fmi2, tol: float) -> None:
+    """Below the floor (1e-14) the experiment is refused, with the tolerance and the floor named
+    (dopri5 at 1e-16 and symplectic at 1e-20 were OK beyond the true bound; symplectic at 5e-324
+    was refused as "cannot be set up for these start values")."""
+    for solver in SOLVERS:
+        log = FmuLog()
+        slave = FMU2Slave(guid=fmi2.md.guid, unzipDirectory=str(fmi2.folder),
+                          modelIdentifier=fmi2.md.coSimulation.modelIdentifier, instanceName=f"floor{solver}{tol}")
+        register(slave.instanceName, log)
+        slave.instantiate(callbacks=shared_callbacks())
+        with pytest.raises(FMICallException):
+            slave.setupExperiment(tolerance=tol, startTime=0.0)
+        slave.freeInstance()
+        messages = [message for status, _, message in log.entries if status >= 3]
+        assert len(messages) == 1, log.entries
+        assert f"tolerance {tol:g} is below 1e-14" in messages[0], messages[0]
+        assert "start values" not in messages[0]
+
+
+def test_fmi3_refuses_below_the_floor(fmu3_path: Path) -> None:
+    """FMI 3.0 takes the tolerance at fmi3EnterInitializationMode: refused there, named."""
+    md = read_model_description(str(fmu3_path))
+    with tempfile.TemporaryDirectory(prefix="certificate-edges3-") as folder:
+        shutil.unpack_archive(str(fmu3_path), folder, "zip")
+        log = FmuLog()
+        slave = FMU3Slave(guid=md.instantiationToken, unzipDirectory=folder,
+                          modelIdentifier=md.coSimulation.modelIdentifier, instanceName="floor3")
+        slave.instantiate(logMessage=log.fmi3_callback)
+        with pytest.raises(FMICallException):
+            slave.enterInitializationMode(tolerance=1e-16, startTime=0.0)
+        slave.freeInstance()
+    assert any("tolerance 1e-16 is below 1e-14" in message for _, _, message in log.entries), log.entries
+
+
+def random_start(rng: random.Random, t0: float) -> Start:
+    """A random state: libration, rotation or within 1e-4 .. 1e-8 of the separatrix."""
+    length, g = 10.0 ** rng.uniform(-3, 3), 10.0 ** rng.uniform(-3, 3)
+    w0 = math.sqrt(g / length)
+    kind = rng.choice(("libration", "rotation", "separatrix"))
+    if kind == "libration":
+        return Start(rng.uniform(-3.1, 3.1), rng.uniform(-0.5, 0.5) * w0, length, g, t0)
+    if kind == "rotation":
+        return Start(rng.uniform(-math.pi, math.pi), rng.choice((-1, 1)) * rng.uniform(2.2, 8.0) * w0, length, g, t0)
+    closeness = 10.0 ** rng.uniform(-8, -4) * rng.choice((-1, 1))
+    return Start(0.0, rng.choice((-1, 1)) * 2.0 * w0 * (1.0 + closeness), length, g, t0)
+
+
+def test_random_oks_are_within_the_true_bound(fmi2: Fmi2) -> None:
+    """Random states, tolerances 1e-4 .. 1e-12, start times 0 .. 2^41, every solver: no OK beyond
+    the true bound, and most steps OK (the test has something to check)."""
+    rng = random.Random(26)
+    checked = Checked()
+    for i in range(64):
+        t0 = 0.0 if i % 4 == 0 else float(rng.choice((1, -1)) * 2.0 ** rng.uniform(0, 41))
+        start = random_start(rng, t0)
+        tol = 10.0 ** rng.uniform(-12, -4)
+        w0 = math.sqrt(start.g / start.length)
+        h = rng.uniform(0.2, 3.0) / w0
+        ends = [t0 + (j + 1) * h for j in range(6)]
+        run_steps(fmi2, start, SOLVERS[i % 4], tol, ends, checked)
+    assert checked.ok_beyond == 0, checked.failures
+    assert checked.ok >= 0.8 * (checked.ok + checked.warned), checked
+
+
+def measure(fmu: Path, runs: int) -> None:
+    """Print, per solver and tolerance, what ``runs`` random runs of 10 DoSteps (the random test's
+    states, start times 0 .. 2^41) returned against the true error: steps, OK, within the true
+    bound, OK beyond it, and the worst true error in units of 100 tol (docs/certificate.md). A
+    tolerance the FMU refuses prints as such."""
+    tolerances = (1e-8, 1e-10, 1e-11, 1e-12, 1e-13, 1e-14, 1e-15, 1e-16)
+    with tempfile.TemporaryDirectory(prefix="certificate-edges-") as folder:
+        fmi2 = Fmi2(fmu, Path(folder))
+        print(f"{'solver':<11} {'tol':<6} {'steps':>6} {'OK':>6} {'within':>6} {'OK beyond':>9} {'worst':>9}")
+        for solver in SOLVERS:
+            for tol in tolerances:
+                rng = random.Random(7)
+                checked, steps, within, worst = Checked(), 0, 0, 0.0
+                try:
+                    for i in range(runs):
+                        start = random_start(rng, 0.0 if i % 2 == 0 else 2.0 ** rng.uniform(0, 41))
+                        h = rng.uniform(0.2, 3.0) / math.sqrt(start.g / start.length)
+                        slave, _ = fmi2.start(start, solver, tol)
+                        now = start.t0
+                        for j in range(10):
+                            end = start.t0 + (j + 1) * h
+                            status = int(slave.fmi2DoStep(slave.component, now, end - now, 1))
+                            now = now + (end - now)
+                            departure = true_departure(*fmi2.state(slave), start, tol, now)
+                            checked.record(status, departure, "")
+                            steps, within, worst = steps + 1, within + (departure <= 1.0), max(worst, departure)
+                        slave.terminate()
+                        slave.freeInstance()
+                except FMICallException:
+                    print(f"{solver:<11} {tol:<6.0e} refused")
+                    continue
+                print(f"{solver:<11} {tol:<6.0e} {steps:6d} {checked.ok:6d} {within:6d} {checked.ok_beyond:9d} "
+                      f"{worst:9.3g}", flush=True)
+
+
+if __name__ == "__main__":
+    import sys
+
+    measure(Path(sys.argv[1]), int(sys.argv[2]) if len(sys.argv) > 2 else 40)
