@@ -1,7 +1,8 @@
 """The C output loop (``pendulum_driver``, :mod:`pendulum_fmu.fmu.driver`) behind every run.
 
-- Results bit for bit those of the Python loop it replaced (FMI 2.0) and of fmpy's wrappers
-  (FMI 3.0), for every Co-Simulation solver, on a libration, a rotation and the hard case.
+- Results bit for bit those of its Python port (:mod:`pendulum_fmu.fmu.python_drive`, the loop
+  where the C library is missing), FMI 2.0 and 3.0, for every Co-Simulation solver, on a
+  libration, a rotation and the hard case; the port stops where the C loop stops.
 - Every status checked: a DoStep at the wrong time and a GetReal of an unknown value
   reference stop the loop with the call, the time, the status and the FMU's logged reason.
 - The FMU's warnings still arrive while the loop runs in C (FMI 2.0 and 3.0).
@@ -52,15 +53,15 @@ def test_c_loop_is_bit_identical_to_the_python_loop(fmu_path: Path, solver: str)
             np.testing.assert_array_equal(ours.result["time"], grid.times(ours.period))
 
 
-def test_fmi3_c_loop_is_bit_identical_to_fmpys_wrappers(fmu3_path: Path) -> None:
+def test_fmi3_c_loop_is_bit_identical_to_the_python_loop(fmu3_path: Path) -> None:
     grid = TimeGrid(2, "periods", 25)
     method = Method("rkn", 1e-8)
     with FmuRunner(fmu3_path, loop="c") as c_runner, FmuRunner(fmu3_path, loop="python") as python_runner:
         assert c_runner.fmi_version == 3
         for pendulum in CASES:
-            ours, wrappers = c_runner.run(pendulum, method, grid), python_runner.run(pendulum, method, grid)
-            assert ours.result.tobytes() == wrappers.result.tobytes()
-            assert ours.steps == wrappers.steps > 0
+            ours, in_python = c_runner.run(pendulum, method, grid), python_runner.run(pendulum, method, grid)
+            assert ours.result.tobytes() == in_python.result.tobytes()
+            assert ours.steps == in_python.steps > 0
 
 
 def test_fmi2_and_fmi3_give_the_same_numbers(fmu_path: Path, fmu3_path: Path) -> None:
@@ -78,12 +79,13 @@ def _initialized(runner: FmuRunner, pendulum: Pendulum) -> object:
     return slave
 
 
+@pytest.mark.parametrize("backend", ["c", "python"])
 @pytest.mark.parametrize("fixture", ["fmu_path", "fmu3_path"])
-def test_a_failing_do_step_stops_the_loop_with_its_reason(fixture: str, request: pytest.FixtureRequest) -> None:
+def test_a_failing_do_step_stops_the_loop_with_its_reason(fixture: str, request: pytest.FixtureRequest, backend: driver.Backend) -> None:
     fmu: Path = request.getfixturevalue(fixture)
     with FmuRunner(fmu, loop="c") as runner:
         slave = _initialized(runner, CASES[0])
-        loop = driver.CLoop(slave, runner.fmi_version, [runner.vr[name] for name in RECORDED])
+        loop = driver.OutputLoop(slave, runner.fmi_version, [runner.vr[name] for name in RECORDED], backend)
         rows = np.zeros(3, dtype=RESULT_DTYPE)
         loop.run(np.array([0.0, 0.1, 0.2]), rows, "theta", runner._log)
         assert np.all(rows["theta"] != 0.0) and np.all(rows["y"] != 0.0)
@@ -95,12 +97,13 @@ def test_a_failing_do_step_stops_the_loop_with_its_reason(fixture: str, request:
         assert later["theta"][1] == 0.0   # the failed point is not written
 
 
+@pytest.mark.parametrize("backend", ["c", "python"])
 @pytest.mark.parametrize("fixture", ["fmu_path", "fmu3_path"])
-def test_a_failing_get_stops_the_loop_at_its_point(fixture: str, request: pytest.FixtureRequest) -> None:
+def test_a_failing_get_stops_the_loop_at_its_point(fixture: str, request: pytest.FixtureRequest, backend: driver.Backend) -> None:
     fmu: Path = request.getfixturevalue(fixture)
     with FmuRunner(fmu, loop="c") as runner:
         slave = _initialized(runner, CASES[0])
-        loop = driver.CLoop(slave, runner.fmi_version, [runner.vr["theta"], 999])
+        loop = driver.OutputLoop(slave, runner.fmi_version, [runner.vr["theta"], 999], backend)
         rows = np.zeros(4, dtype=[("theta", np.float64), ("bad", np.float64)])
         with pytest.raises(SimulationError, match=r"^GetReal at t = 0 s returned Error: .+"):
             loop.run(np.array([0.0, 0.1, 0.2, 0.3]), rows, "theta", runner._log)
@@ -109,7 +112,7 @@ def test_a_failing_get_stops_the_loop_at_its_point(fixture: str, request: pytest
 def test_the_loop_checks_the_layout_it_writes_into(fmu_path: Path) -> None:
     with FmuRunner(fmu_path, loop="c") as runner:
         slave = _initialized(runner, CASES[0])
-        loop = driver.CLoop(slave, 2, [runner.vr["theta"], runner.vr["omega"]])
+        loop = driver.OutputLoop(slave, 2, [runner.vr["theta"], runner.vr["omega"]])
         gap = np.zeros(3, dtype=[("theta", np.float64), ("n", np.int64), ("omega", np.float64)])
         with pytest.raises(ValueError, match="not the float64 right after"):
             loop.run(np.array([0.0, 0.1, 0.2]), gap, "theta", runner._log)
@@ -218,8 +221,9 @@ class _ScriptedFmu:
         self.dll = type("Dll", (), {names[0]: self.step, names[1]: self.get})()
 
 
+@pytest.mark.parametrize("backend", ["c", "python"])
 @pytest.mark.parametrize("version", [2, 3])
-def test_warnings_go_on_and_worse_statuses_stop_the_loop(version: int) -> None:
+def test_warnings_go_on_and_worse_statuses_stop_the_loop(version: int, backend: driver.Backend) -> None:
     from pendulum_fmu.fmu.log import FmuLog
 
     times = np.array([0.0, 1.0, 2.0, 3.0, 4.0, 5.0])
@@ -228,21 +232,22 @@ def test_warnings_go_on_and_worse_statuses_stop_the_loop(version: int) -> None:
     log = FmuLog()
     log.entries.append((3, "logStatusError", "step rejected: the reason"))
     with pytest.raises(SimulationError, match=r"^DoStep at t = 3 s returned Discard: step rejected: the reason$"):
-        driver.CLoop(fmu, version, [7, 8]).run(times, rows, "a", log)
+        driver.OutputLoop(fmu, version, [7, 8], backend).run(times, rows, "a", log)
     assert fmu.calls == [(0.0, 1.0), (1.0, 1.0), (2.0, 1.0), (3.0, 1.0)]
     assert rows["a"].tolist() == [0.0, 10.0, 20.0, 30.0, 0.0, 0.0] and rows["b"][3] == 31.0
     for status, name in ((3, "Error"), (4, "Fatal")):
         fmu = _ScriptedFmu(version, [status])
         with pytest.raises(SimulationError, match=rf"^DoStep at t = 0 s returned {name}$"):
-            driver.CLoop(fmu, version, [7]).run(times, np.zeros(6, dtype=[("a", np.float64)]), "a", FmuLog())
+            driver.OutputLoop(fmu, version, [7], backend).run(times, np.zeros(6, dtype=[("a", np.float64)]), "a", FmuLog())
 
 
-def test_fmi3_terminate_and_early_return_stop_the_loop() -> None:
+@pytest.mark.parametrize("backend", ["c", "python"])
+def test_fmi3_terminate_and_early_return_stop_the_loop(backend: driver.Backend) -> None:
     from pendulum_fmu.fmu.log import FmuLog
 
     times = np.array([0.0, 1.0, 2.0, 3.0])
     rows = np.zeros(4, dtype=[("a", np.float64)])
     with pytest.raises(SimulationError, match=r"^fmi3DoStep asked to terminate the simulation at t = 1\.5 s$"):
-        driver.CLoop(_ScriptedFmu(3, [0, 0, 0], terminate_at=1), 3, [1]).run(times, rows, "a", FmuLog())
+        driver.OutputLoop(_ScriptedFmu(3, [0, 0, 0], terminate_at=1), 3, [1], backend).run(times, rows, "a", FmuLog())
     with pytest.raises(SimulationError, match=r"^fmi3DoStep returned early at t = 0\.5 s"):
-        driver.CLoop(_ScriptedFmu(3, [0, 0, 0], early_at=0), 3, [1]).run(times, rows, "a", FmuLog())
+        driver.OutputLoop(_ScriptedFmu(3, [0, 0, 0], early_at=0), 3, [1], backend).run(times, rows, "a", FmuLog())

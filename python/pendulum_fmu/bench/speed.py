@@ -215,7 +215,7 @@ def _loop_row(runner: FmuRunner, pendulum: Pendulum, method: Method, times: np.n
               label: str, names: tuple[str, ...], setting: str) -> _Method:
     """A row of :data:`LOOP_ROWS`: the runner's instance driven by a C loop over ``names``."""
     rows = np.dtype([("time", np.float64)] + [(name, np.float64) for name in names])
-    loop = driver.CLoop(runner._fresh_slave(), runner.fmi_version, [runner.vr[name] for name in names])
+    loop = driver.OutputLoop(runner._fresh_slave(), runner.fmi_version, [runner.vr[name] for name in names])
 
     def run() -> np.ndarray:
         slave = runner._fresh_slave()

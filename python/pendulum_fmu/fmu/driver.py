@@ -1,4 +1,4 @@
-"""The Co-Simulation output loop in C: ``pendulum_driver``, shipped with the package.
+"""The Co-Simulation output loop of every run: ``pendulum_driver`` in C, shipped with the package.
 
 fmpy loads and instantiates the FMU (and owns its logger); this module hands the C library
 ``pendulum_driver`` (``driver_lib/`` of the repository) the instance and the addresses of the
@@ -16,8 +16,8 @@ it finished.
 
 Where the library is looked for: ``$PENDULUM_DRIVER_LIB``, the package's ``lib/<platform>/``
 (a wheel carries linux64, win64 and darwin64), the repository's ``build/``. Without one the
-loop runs in Python (:mod:`pendulum_fmu.fmu.fast_cs` for FMI 2.0), at about a third of the
-speed; :func:`library_path` says which.
+same loop runs its stretches in Python (:mod:`pendulum_fmu.fmu.python_drive`, the same calls
+in the same order), at about a third of the speed; :func:`library_path` says which.
 """
 
 from __future__ import annotations
@@ -26,7 +26,7 @@ import ctypes
 import time
 from functools import lru_cache
 from pathlib import Path
-from typing import Any
+from typing import Any, Literal, Protocol
 
 import numpy as np
 
@@ -35,6 +35,7 @@ from pendulum_fmu.interrupt import deferred_interrupt
 from pendulum_fmu.interrupt import pending as interrupt_pending
 from pendulum_fmu.fmu.library import c_address, find_library, library_file, load_library, platform_folder
 from pendulum_fmu.fmu.log import FmuLog
+from pendulum_fmu.fmu.python_drive import Ending, PythonStretch
 
 ABI = 1
 """The interface version this module speaks (``PENDULUM_DRIVER_ABI`` in the C header)."""
@@ -99,8 +100,33 @@ def available() -> bool:
     return _library() is not None
 
 
-class CLoop:
-    """Steps an initialized fmpy Co-Simulation instance (FMI 2.0 or 3.0) over a grid, in C.
+Backend = Literal["c", "python"]
+"""Who runs the stretches of a loop: the C library ``pendulum_driver``, or its Python port."""
+
+
+class Stretch(Protocol):
+    """Runs points ``first .. last - 1`` of ``times`` into the rows at ``rows``, ``row_bytes`` apart."""
+
+    def __call__(self, times: np.ndarray, first: int, last: int, rows: int, row_bytes: int) -> Ending: ...
+
+
+class _CStretch:
+    """``pendulum_drive`` of the C library, answering as :class:`PythonStretch` does."""
+
+    def __init__(self, library: ctypes.CDLL, fmu: _Fmu) -> None:
+        self._drive = library.pendulum_drive
+        self._fmu_struct = fmu   # pendulum_drive reads it at every call
+        self._fmu = ctypes.byref(fmu)
+        self._outcome = _Outcome()
+
+    def __call__(self, times: np.ndarray, first: int, last: int, rows: int, row_bytes: int) -> Ending:
+        outcome = self._outcome
+        self._drive(self._fmu, times.ctypes.data, first, last, rows, row_bytes // 8, ctypes.byref(outcome))
+        return outcome.call, outcome.done, outcome.status, outcome.time
+
+
+class OutputLoop:
+    """Steps an initialized fmpy Co-Simulation instance (FMI 2.0 or 3.0) over a grid.
 
     Parameters
     ----------
@@ -110,19 +136,25 @@ class CLoop:
         The instance's FMI version.
     value_references : list of int
         The outputs to record at every point, in column order.
+    backend : {"c", "python"}
+        Who runs the stretches: the C library (BuildError where there is none) or its port
+        in Python, :mod:`pendulum_fmu.fmu.python_drive`; the numbers are the same.
     """
 
-    def __init__(self, instance: Any, fmi_version: int, value_references: list[int]) -> None:
+    def __init__(self, instance: Any, fmi_version: int, value_references: list[int], backend: Backend = "c") -> None:
+        names = ("fmi2DoStep", "fmi2GetReal") if fmi_version == 2 else ("fmi3DoStep", "fmi3GetFloat64")
+        self._vrs = np.ascontiguousarray(value_references, dtype=np.uint32)
+        self._count = len(value_references)
+        fields = (ctypes.cast(instance.component, ctypes.c_void_p).value or 0,
+                  c_address(getattr(instance.dll, names[0])), c_address(getattr(instance.dll, names[1])))
+        self._stretch: Stretch
+        if backend == "python":
+            self._stretch = PythonStretch(fmi_version, *fields, self._vrs.ctypes.data, self._count)
+            return
         library = _library()
         if library is None:
             raise BuildError(f"no pendulum_driver library for this platform ({platform_folder()[0]})")
-        self._drive = library.pendulum_drive
-        names = ("fmi2DoStep", "fmi2GetReal") if fmi_version == 2 else ("fmi3DoStep", "fmi3GetFloat64")
-        self._vrs = np.ascontiguousarray(value_references, dtype=np.uint32)
-        self._fmu = _Fmu(fmi_version, ctypes.cast(instance.component, ctypes.c_void_p).value,
-                         c_address(getattr(instance.dll, names[0])), c_address(getattr(instance.dll, names[1])),
-                         self._vrs.ctypes.data, len(value_references))
-        self._count = len(value_references)
+        self._stretch = _CStretch(library, _Fmu(fmi_version, *fields, self._vrs.ctypes.data, self._count))
 
     def run(self, times: np.ndarray, rows: np.ndarray, column: str, log: FmuLog) -> None:
         """Fill ``rows[column ...]`` at ``times[0]`` (the current time), then step to each later time.
@@ -148,19 +180,17 @@ class CLoop:
         """
         times = np.ascontiguousarray(times, dtype=np.float64)
         offset = self._check_layout(rows, column, len(times))
-        outcome = _Outcome()
-        base, stride = rows.ctypes.data + offset, rows.itemsize // 8
-        fmu, pointer = ctypes.byref(self._fmu), times.ctypes.data
+        base = rows.ctypes.data + offset
         first, count, stretch = 0, len(times), FIRST_STRETCH
         with deferred_interrupt():
             while first < count:
                 last = min(count, first + stretch)
                 start = time.perf_counter()
-                call = self._drive(fmu, pointer, first, last, base, stride, ctypes.byref(outcome))
+                call, done, status, at = self._stretch(times, first, last, base, rows.itemsize)
                 if interrupt_pending():   # Ctrl-C wins over a failure in the same stretch: it is what the user did
-                    raise LoopInterrupted(outcome.done)
+                    raise LoopInterrupted(done)
                 if call:
-                    self._fail(outcome, log)
+                    self._fail(call, status, at, log)
                 elapsed = time.perf_counter() - start
                 stretch = max(16, min(1 << 22, int((last - first) * STRETCH_SECONDS / max(elapsed, 1e-7))))
                 first = last
@@ -182,16 +212,14 @@ class CLoop:
         return offset
 
     @staticmethod
-    def _fail(outcome: _Outcome, log: FmuLog) -> None:
+    def _fail(call: int, status: int, at: float, log: FmuLog) -> None:
         """SimulationError naming the call, the time and the FMU's logged reason."""
-        if outcome.call == 3:
-            raise SimulationError(f"fmi3DoStep asked to terminate the simulation at t = {outcome.time:.9g} s")
-        if outcome.call == 4:
-            raise SimulationError(f"fmi3DoStep returned early at t = {outcome.time:.9g} s (not allowed)")
-        if outcome.call == 5:
+        if call == 3:
+            raise SimulationError(f"fmi3DoStep asked to terminate the simulation at t = {at:.9g} s")
+        if call == 4:
+            raise SimulationError(f"fmi3DoStep returned early at t = {at:.9g} s (not allowed)")
+        if call == 5:
             raise SimulationError("the C loop was given a bad argument")
-        status = outcome.status
         name = STATUS_NAMES[status] if 0 <= status < len(STATUS_NAMES) else str(status)
         reason = log.last_error()
-        raise SimulationError(f"{CALLS[outcome.call]} at t = {outcome.time:.9g} s returned {name}"
-                              + (f": {reason}" if reason else ""))
+        raise SimulationError(f"{CALLS[call]} at t = {at:.9g} s returned {name}" + (f": {reason}" if reason else ""))

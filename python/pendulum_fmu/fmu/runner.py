@@ -5,10 +5,10 @@ Co-Simulation instance and (if needed) one Model Exchange instance, and resets t
 runs: a sweep worker pays the unzip and ``dlopen`` once, not once per run. An FMU that is
 not this project's Pendulum is refused at once (:mod:`pendulum_fmu.fmu.identity`).
 
-Co-Simulation runs are driven by the C loop of :mod:`pendulum_fmu.fmu.driver`: the FMU's own
-DoStep and one GetReal (GetFloat64) of every recorded output per point, called from C, the
+Co-Simulation runs are driven by the output loop of :mod:`pendulum_fmu.fmu.driver`: the FMU's
+own DoStep and one GetReal (GetFloat64) of every recorded output per point, called from C, the
 values landing straight in the result array (without that library: the same calls from
-Python, :mod:`pendulum_fmu.fmu.fast_cs`). Model Exchange runs go through fmpy's
+Python, :mod:`pendulum_fmu.fmu.python_drive`). Model Exchange runs go through fmpy's
 ``simulate_fmu`` with its CVODE solver, on the already instantiated model.
 
 Every message the FMU logs with status Warning during a run (for example its "hard case:"
@@ -36,7 +36,6 @@ from fmpy.fmi3 import FMU3Model, FMU3Slave
 
 from pendulum_fmu.errors import BuildError, SimulationError, UsageError
 from pendulum_fmu.fmu import driver
-from pendulum_fmu.fmu.fast_cs import FastStepper
 from pendulum_fmu.fmu.identity import FMI_VERSIONS, description_problem
 from pendulum_fmu.interrupt import deferred_interrupt
 from pendulum_fmu.interrupt import pending as interrupt_pending
@@ -44,7 +43,7 @@ from pendulum_fmu.fmu.log import FmuLog, register, shared_callbacks, unique_inst
 from pendulum_fmu.spec import CS_SOLVERS, Method, Pendulum, TimeGrid
 
 Loop = Literal["auto", "c", "python"]
-"""Which Co-Simulation loop a runner uses: the C library when there is one, or either by name."""
+"""Who runs a runner's output loop: the C library when there is one, or either by name."""
 
 RECORDED: tuple[str, ...] = ("theta", "omega", "theta_exact", "omega_exact", "x", "y")
 """Outputs recorded at every output point, besides time."""
@@ -174,15 +173,15 @@ class FmuRunner:
         self._model: Any = None
         self._slave_used = False
         self._model_used = False
-        self._c_loop: driver.CLoop | None = None
+        self._loop: driver.OutputLoop | None = None
         self._log = FmuLog()
         if loop not in ("auto", "c", "python"):
             raise ValueError(f"loop must be 'auto', 'c' or 'python', got {loop!r}")
-        if loop == "auto":
-            loop = "python" if os.environ.get("PENDULUM_FMU_LOOP") == "python" or not driver.available() else "c"
-        elif loop == "c" and not driver.available():
+        if loop == "c" and not driver.available():
             raise BuildError(f"no pendulum_driver library for this platform: {driver.library_name()} is not installed")
-        self.loop: str = loop
+        python = loop == "python" or (loop == "auto" and (os.environ.get("PENDULUM_FMU_LOOP") == "python"
+                                                          or not driver.available()))
+        self.loop: driver.Backend = "python" if python else "c"
 
     def __enter__(self) -> Self:
         return self
@@ -329,17 +328,10 @@ class FmuRunner:
         result = np.empty(len(times), dtype=RESULT_DTYPE)
         result["time"] = times
         references = [self.vr[name] for name in RECORDED]
+        if self._loop is None:
+            self._loop = driver.OutputLoop(slave, self.fmi_version, references, self.loop)
         try:
-            if self.loop == "c":
-                if self._c_loop is None:
-                    self._c_loop = driver.CLoop(slave, self.fmi_version, references)
-                self._c_loop.run(times, result, RECORDED[0], self._log)
-            elif self.fmi_version == 2:
-                values = FastStepper(slave, references).run(times, self._log)
-                for column, name in enumerate(RECORDED):
-                    result[name] = values[:, column]
-            else:
-                _python_loop_fmi3(slave, references, times, result)
+            self._loop.run(times, result, RECORDED[0], self._log)
         except driver.LoopInterrupted as interrupt:
             wall = time.perf_counter() - start
             raise RunInterrupted(Trajectory(pendulum, method, grid, period, result[:interrupt.done].copy(), None,
@@ -371,14 +363,3 @@ class FmuRunner:
             result[name] = recorded[name]
         return Trajectory(pendulum, method, grid, period, result, None, None, None, wall, self._log.warnings())
 
-
-def _python_loop_fmi3(slave: Any, references: list[int], times: np.ndarray, result: np.ndarray) -> None:
-    """The FMI 3.0 output loop through fmpy's wrappers (when there is no C library)."""
-    for k in range(len(times)):
-        if k:
-            _, terminate, early, reached = slave.doStep(float(times[k - 1]), float(times[k] - times[k - 1]))
-            if terminate or early:
-                raise SimulationError(f"fmi3DoStep stopped at t = {reached:.9g} s "
-                                      f"({'asked to terminate' if terminate else 'returned early'})")
-        for name, value in zip(RECORDED, slave.getFloat64(references), strict=True):
-            result[k][name] = value
