@@ -7,6 +7,7 @@ from pathlib import Path
 
 from pendulum_fmu.cli.arguments import (add_fmu_argument, add_method_arguments, add_pendulum_arguments, integer, method_from,
                         output_file, pendulum_from, positive)
+from pendulum_fmu.cli.extras import require_extra
 from pendulum_fmu.fmu.locate import locate_fmu
 from pendulum_fmu.spec import StopUnit
 
@@ -48,6 +49,7 @@ def configure(parser: argparse.ArgumentParser) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Run ``animate`` with parsed arguments."""
+    require_extra("animate", "animate", ("PIL", "imageio_ffmpeg") if args.out.suffix.lower() == ".mp4" else ("PIL",))
     from pendulum_fmu.cli.summary import summary_lines
     from pendulum_fmu.figures.animation import animate
 

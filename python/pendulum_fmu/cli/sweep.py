@@ -12,6 +12,7 @@ from pathlib import Path
 
 from pendulum_fmu.cli.arguments import (add_fmu_argument, angle_degrees, describe, finite, grid, integer, output_folder,
                                         positive, solver_list, tolerance)
+from pendulum_fmu.cli.extras import require_extra
 from pendulum_fmu.errors import UsageError
 from pendulum_fmu.fmu.locate import locate_fmu
 from pendulum_fmu.spec import DEFAULT_CS_SOLVER
@@ -101,6 +102,8 @@ def grid_from(args: argparse.Namespace) -> SweepGrid:
 def run(args: argparse.Namespace) -> int:
     """Run ``sweep`` with parsed arguments."""
     import os
+
+    require_extra("sweep", "sweep")
 
     if args.scheduler is not None and args.workers is not None:
         raise UsageError("--workers", "sets the size of the local cluster: not allowed with --scheduler")

@@ -5,13 +5,13 @@ from __future__ import annotations
 import argparse
 import math
 
-import pendulum_fmu.bench.accuracy as accuracy
 from pendulum_fmu.cli.arguments import add_fmu_argument, integer, plain_text
+from pendulum_fmu.cli.extras import module_docstring, require_extra
 from pendulum_fmu.fmu.locate import locate_fmu
 
 NAME = "accuracy"
 HELP = "the FMU's exact solution against mpmath at 50 digits, every regime (the README's table)"
-DESCRIPTION = plain_text(accuracy.__doc__ or HELP)
+DESCRIPTION = plain_text(module_docstring("pendulum_fmu.bench.accuracy") or HELP)
 EPILOG = """\
 examples:
   pendulum-fmu bench accuracy              # 301 points a case, a few seconds (3.4 s measured)
@@ -28,6 +28,9 @@ def configure(parser: argparse.ArgumentParser) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Measure and print the table."""
+    require_extra("bench accuracy", "bench", ("mpmath",))
+    import pendulum_fmu.bench.accuracy as accuracy
+
     results = accuracy.measure(locate_fmu(args.fmu), args.points)
     print(f"against mpmath at {accuracy.DIGITS} digits, {args.points} points a case over 3 periods "
           f"(40/w0 on the separatrix)")

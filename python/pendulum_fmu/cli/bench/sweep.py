@@ -9,6 +9,7 @@ import statistics
 import pendulum_fmu.bench.sweep as bench_sweep
 from pendulum_fmu.bench.sweep import bench_points, measure
 from pendulum_fmu.cli.arguments import add_fmu_argument, integer, plain_text, positive
+from pendulum_fmu.cli.extras import require_extra
 from pendulum_fmu.fmu.locate import locate_fmu
 
 NAME = "sweep"
@@ -39,6 +40,7 @@ def configure(parser: argparse.ArgumentParser) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Run the benchmark and print runs/s per worker count and loop, and the speed-ups."""
+    require_extra("bench sweep", "bench", ("dask", "distributed", "tqdm"))
     import math
 
     from pendulum_fmu.fmu.runner import FmuRunner
