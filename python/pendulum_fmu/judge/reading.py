@@ -1,21 +1,26 @@
 """Read an importer's result: CSV as the usual tools write it, Parquet, or a table in memory.
 
 What is understood, so the same judge reads fmpy, both fmusims, fmuCheck, FMI4j, libcosim,
-Ecos and fmi-cross-check results:
+Ecos and fmi-cross-check results, and this package's own ``simulate -o``:
 
 - a delimiter of ``,``, ``;`` (then also with decimal commas) or tab (the most frequent one in
   the header), or blanks;
 - names quoted or bare, with blanks around them; ``#`` comment lines and blank lines skipped;
-- an instance prefix, ``pend.theta``, ``pend::theta`` or ``pend/theta``, and a trailing
-  annotation in brackets, ``theta [rad]`` or libcosim's ``theta [3 REAL OUTPUT]``;
+- an instance prefix, ``pend.theta``, ``pend::theta`` or ``pend/theta``, a trailing
+  annotation in brackets, ``theta [rad]`` or libcosim's ``theta [3 REAL OUTPUT]``, and a unit
+  suffix as ``simulate`` writes it, ``time_s``, ``theta_rad``, ``omega_rad_s``;
 - a time column called ``time``, ``Time`` or ``t`` (any case); other columns (Ecos'
-  ``iterations``, libcosim's ``StepCount``, ``x``, ``y``, ...) are ignored;
+  ``iterations``, libcosim's ``StepCount``, ``x``, ``y``, ...) are ignored; in a pandas
+  DataFrame the time may be its index (named as a time column, or unnamed and not the
+  default 0, 1, 2, ...);
 - any subset of ``theta``, ``omega``, ``theta_exact``, ``omega_exact`` (at least one).
 
-For CSV, each column's print format is recognised (fixed decimals as ``%f``, or significant
-digits as ``%g``, at least 6), and each value's resolution is half a unit in its last printed
+CSV is parsed by Arrow (``pyarrow.csv``) into strings, only the columns used; the numbers
+and the print format are computed on whole columns (:mod:`pendulum_fmu.judge.print_format`).
+Each column's print format is recognised (fixed decimals as ``%f``, or significant digits
+as ``%g``, at least 6), and each value's resolution is half a unit in its last printed
 place (none from 15 significant digits on), so the checks can tell a rounded print from a
-wrong value.
+wrong value. A file Arrow cannot parse is read line by line, which finds the row to blame.
 """
 
 from __future__ import annotations
@@ -28,11 +33,24 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
+import pyarrow as pa
+import pyarrow.compute as pc
+
+from pendulum_fmu.judge.print_format import DEFAULT_PRECISION, FULL_DIGITS, CellCounts, Format, clean_cells
 
 VARIABLES: tuple[str, ...] = ("theta", "omega", "theta_exact", "omega_exact")
 TIME_NAMES = ("time", "t")
 _PREFIX = re.compile(r"^(?P<instance>.*?)(?:::|\.|/)(?P<name>[^.:/]+)$")
 _ANNOTATION = re.compile(r"\s*[\[(][^\])]*[\])]\s*$")
+_UNIT = re.compile(r"_(?:rad_per_s|rad_s|rad|s)$")
+"""The unit suffixes of ``simulate``'s columns (``time_s``, ``theta_rad``, ``omega_rad_s``)."""
+_SKIPPED_LINES = re.compile(rb"^[ \t]*(?:#[^\n]*)?\r?(?:\n|\Z)", re.MULTILINE)
+"""A comment line or a blank one, with its end of line."""
+_NONBLANK = re.compile(rb"\S")
+_BLANK_LINE = re.compile(rb"\n[ \t]+\r?\n")
+"""A line of blanks only (Arrow skips an empty line, not one of blanks)."""
+PANDAS_INDEX = "__index_level_0__"
+"""The column pandas stores an unnamed index in, in Parquet."""
 
 
 class ReadError(ValueError):
@@ -77,63 +95,31 @@ class Result:
 
 
 def _split_name(raw: str) -> tuple[str, str]:
-    """(instance, variable) of a column header: quotes, blanks and an annotation removed."""
+    """(instance, variable) of a column header: quotes, blanks, an annotation and a unit
+    suffix removed."""
     name = raw.strip().strip('"\'').strip()
     name = _ANNOTATION.sub("", name)
+    known = VARIABLES + TIME_NAMES + ("Time",)
     match = _PREFIX.match(name)
-    if match and match.group("name") in VARIABLES + TIME_NAMES + ("Time",):
-        return match.group("instance").strip("{}"), match.group("name")
-    return "", name
+    instance = ""
+    if match and _bare(match.group("name")) in known:
+        instance, name = match.group("instance").strip("{}"), match.group("name")
+    return instance, _bare(name)
 
 
-DEFAULT_PRECISION = 6
-"""C's and C++'s default precision (``%g``, ``std::ostream``): no tool prints fewer significant
-digits, so a column whose values happen to be short (0.01, 9.99) is taken as printed with 6."""
-
-
-@dataclass(frozen=True)
-class Format:
-    """How a column was printed: ``decimals`` fixed digits after the point (``%f``), else
-    ``digits`` significant digits (``%g``; 17 for a round-trip print)."""
-
-    decimals: int | None
-    digits: int
-
-    @classmethod
-    def of(cls, cells: list[str]) -> Format:
-        """The format of a column from its cells."""
-        digits, decimals = 0, set()
-        for cell in cells:
-            text = cell.strip().strip('"').lower()
-            mantissa, exponent_mark, _ = text.partition("e")
-            mantissa = mantissa.lstrip("+-")
-            significant = mantissa.replace(".", "").lstrip("0")
-            digits = max(digits, len(significant) if significant.isdigit() else 0)
-            decimals.add(len(mantissa.split(".", 1)[1]) if "." in mantissa and not exponent_mark else -1)
-        fixed = decimals.pop() if len(decimals) == 1 else -1
-        return cls(fixed if fixed > 0 else None, max(digits, DEFAULT_PRECISION))
-
-    def resolution(self, values: np.ndarray) -> np.ndarray:
-        """Half a unit in the last printed place of each value (0 from 15 significant digits on,
-        which round-trip a double closely enough)."""
-        if self.decimals is not None:
-            return np.full(values.size, 0.5 * 10.0 ** -self.decimals)
-        if self.digits >= 15:
-            return np.zeros(values.size)
-        with np.errstate(divide="ignore", invalid="ignore"):
-            exponent = np.floor(np.log10(np.abs(values)))
-        exponent = np.where(np.isfinite(exponent), exponent, 0.0)
-        return np.where(values == 0, 0.0, 0.5 * 10.0 ** (exponent - self.digits + 1))
-
-    def describe(self) -> str:
-        """"%.6f" or "6 significant digits"."""
-        return f"%.{self.decimals}f" if self.decimals is not None else f"{self.digits} significant digits"
+def _bare(name: str) -> str:
+    """``name`` without a unit suffix when what remains is a variable or a time (``theta_rad``
+    -> ``theta``; ``theta_error_rad`` stays)."""
+    stripped = _UNIT.sub("", name)
+    return stripped if stripped != name and stripped.lower() in VARIABLES + TIME_NAMES else name
 
 
 def _pick(names: list[str], instance: str | None, source: str) -> tuple[int, dict[str, int], str]:
     """Index of the time column, indexes of the variables, and the instance used."""
     split = [_split_name(n) for n in names]
     time_index = next((i for i, (_, v) in enumerate(split) if v.lower() in TIME_NAMES), None)
+    if time_index is None and PANDAS_INDEX in names:
+        time_index = names.index(PANDAS_INDEX)
     if time_index is None:
         raise ReadError(f"{source}: no time column (looked for time, Time, t among {', '.join(names[:8])})")
     instances = sorted({inst for inst, v in split if v in VARIABLES})
@@ -161,8 +147,19 @@ def _delimiter(header: str) -> str | None:
     return best if counts[best] else None
 
 
+def _assemble(numbers: dict[str, np.ndarray], formats: dict[str, Format], columns: dict[str, str], instance: str,
+              source: str) -> Result:
+    """The :class:`Result` of parsed CSV columns (``"time"`` among them) and their formats."""
+    if all(f.decimals is None and f.digits >= FULL_DIGITS for n, f in formats.items() if n != "time"):
+        formats["time"] = Format(None, 17)  # one round-trip formatter: short times are exact decimals
+    resolution = {name: formats[name].resolution(values) for name, values in numbers.items()}
+    time = numbers.pop("time")
+    return Result(time, numbers, resolution, columns, instance, source, formats)
+
+
 def read_csv_text(text: str, source: str, instance: str | None = None) -> Result:
-    """Parse CSV text (see the module's description) into a :class:`Result`."""
+    """Parse CSV text (see the module's description) into a :class:`Result`, line by line:
+    slow, but every error names its row."""
     lines = [line for line in text.splitlines() if line.strip() and not line.lstrip().startswith("#")]
     if not lines:
         raise ReadError(f"{source}: empty (no header, no rows)")
@@ -191,13 +188,98 @@ def read_csv_text(text: str, source: str, instance: str | None = None) -> Result
                 raise ReadError(f"{source}: row {r + 2}, column {header[c].strip()!r}: not a number: {cell!r}") from None
     columns = {name: header[c].strip().strip('"') for name, c in wanted.items()}
     formats = {name: Format.of([row[c] for row in body]) for name, c in wanted.items()}
-    if all(f.decimals is None and f.digits >= 15 for n, f in formats.items() if n != "time"):
-        formats["time"] = Format(None, 17)  # one round-trip formatter: short times are exact decimals
-    resolution = {name: formats[name].resolution(values) for name, values in numbers.items()}
-    return Result(numbers.pop("time"), numbers, resolution, columns, used, source, formats)
+    return _assemble(numbers, formats, columns, used, source)
 
 
-def _from_columns(columns: dict[str, np.ndarray], source: str, instance: str | None) -> Result:
+class _Unparsed(Exception):
+    """Arrow could not parse the file: read it line by line for the row to blame."""
+
+
+def _column_numbers(cells: pa.ChunkedArray, decimal_comma: bool) -> tuple[np.ndarray, CellCounts]:
+    """The numbers of one column of CSV cells and the counts of its print format."""
+    counts = CellCounts()
+    parts = []
+    for chunk in cells.chunks:
+        text = clean_cells(chunk, decimal_comma)
+        try:
+            values = pc.cast(text, pa.float64()).to_numpy(zero_copy_only=False)
+        except pa.ArrowInvalid:
+            raise _Unparsed from None
+        counts.add(text, values)
+        parts.append(values)
+    return (np.concatenate(parts) if parts else np.empty(0)), counts
+
+
+def read_csv_bytes(raw: bytes, source: str, instance: str | None = None) -> Result:
+    """Parse CSV bytes (UTF-8, see the module's description) into a :class:`Result`.
+
+    Arrow reads the used columns as strings; their numbers and print formats are computed
+    column by column. What Arrow refuses (a short row, a cell that is not a number) goes to
+    :func:`read_csv_text`, which names the row.
+    """
+    if raw.startswith(b"\xef\xbb\xbf"):
+        raw = raw[3:]
+    raw = raw.lstrip()
+    if b"#" in raw or _BLANK_LINE.search(raw):
+        raw = _SKIPPED_LINES.sub(b"", raw)
+    end = raw.find(b"\n")
+    head = raw if end < 0 else raw[:end]
+    try:
+        header_line = head.decode("utf-8").rstrip("\r")
+    except UnicodeDecodeError:
+        raise ReadError(f"{source}: not a text (CSV) or Parquet file") from None
+    if not header_line.strip():
+        raise ReadError(f"{source}: empty (no header, no rows)")
+    delimiter = _delimiter(header_line)
+    body = pa.py_buffer(raw).slice(len(raw) if end < 0 else end + 1)  # no copy
+    if delimiter is None:  # blanks: one comma between fields
+        header = header_line.split()
+        body = pa.py_buffer(re.sub(rb"[ \t]+", b",", re.sub(rb"(?m)^[ \t]+|[ \t]+(?=\r?$)", b"",
+                                                              body.to_pybytes())))
+    else:
+        header = next(csv.reader([header_line], delimiter=delimiter, skipinitialspace=True))
+    if end < 0 or not _NONBLANK.search(raw, end + 1):
+        raise ReadError(f"{source}: a header and no rows")
+    time_index, picked, used = _pick(header, instance, source)
+    wanted = {"time": time_index, **picked}
+    try:
+        numbers, formats = _parse(body, len(header), delimiter or ",", wanted)
+    except _Unparsed:
+        try:
+            text = raw.decode("utf-8")
+        except UnicodeDecodeError:
+            raise ReadError(f"{source}: not a text (CSV) or Parquet file") from None
+        return read_csv_text(text, source, instance)
+    columns = {name: header[c].strip().strip('"') for name, c in wanted.items()}
+    return _assemble(numbers, formats, columns, used, source)
+
+
+def _parse(body: pa.Buffer, width: int, delimiter: str, wanted: dict[str, int]) -> tuple[dict[str, np.ndarray],
+                                                                                   dict[str, Format]]:
+    """Numbers and formats of the ``wanted`` columns (name -> index) of the CSV rows ``body``."""
+    import pyarrow.csv as pacsv  # noqa: PLC0415
+
+    names = [f"c{i}" for i in range(width)]
+    used = {name: names[c] for name, c in wanted.items()}
+    try:
+        table = pacsv.read_csv(pa.BufferReader(body),
+                               read_options=pacsv.ReadOptions(column_names=names, block_size=1 << 24),
+                               parse_options=pacsv.ParseOptions(delimiter=delimiter, ignore_empty_lines=True),
+                               convert_options=pacsv.ConvertOptions(include_columns=sorted(set(used.values())),
+                                                                    column_types=dict.fromkeys(used.values(),
+                                                                                               pa.string()),
+                                                                    strings_can_be_null=False,
+                                                                    quoted_strings_can_be_null=False))
+    except (pa.ArrowInvalid, UnicodeDecodeError):
+        raise _Unparsed from None
+    numbers, formats = {}, {}
+    for name, column in used.items():
+        numbers[name], counts = _column_numbers(table.column(column), delimiter == ";")
+        formats[name] = counts.format()
+    return numbers, formats
+
+
+def _from_columns(columns: dict[str, Any], source: str, instance: str | None) -> Result:
     names = list(columns)
     time_index, picked, used = _pick(names, instance, source)
     time_name = names[time_index]
@@ -209,8 +291,39 @@ def _from_columns(columns: dict[str, np.ndarray], source: str, instance: str | N
     if time.ndim != 1 or time.size == 0:
         raise ReadError(f"{source}: no rows")
     resolution = {name: np.zeros(time.size) for name in ["time", *values]}
-    return Result(time, values, resolution, {"time": time_name, **{v: names[i] for v, i in picked.items()}},
+    shown = "index" if time_name == PANDAS_INDEX else time_name
+    return Result(time, values, resolution, {"time": shown, **{v: names[i] for v, i in picked.items()}},
                   used, source)
+
+
+def _read_parquet(path: Path, instance: str | None) -> Result:
+    """The used columns of a Parquet file (an unnamed pandas index stored with it may be the time)."""
+    import pyarrow.parquet as pq  # noqa: PLC0415
+
+    try:
+        names = list(pq.read_schema(path).names)
+        time_index, picked, _ = _pick(names, instance, str(path))
+        table = pq.read_table(path, columns=[names[time_index], *(names[i] for i in picked.values())])
+    except ReadError:
+        raise
+    except Exception as error:  # noqa: BLE001 (pyarrow raises many kinds)
+        raise ReadError(f"{path}: not a readable Parquet file ({error})") from None
+    return _from_columns({n: table.column(n).to_numpy() for n in table.column_names}, str(path), instance)
+
+
+def _frame_columns(frame: Any) -> dict[str, Any]:
+    """A pandas DataFrame's columns, and its index as the time when no column is a time: an
+    index named as a time column, or an unnamed one that is not the default 0, 1, 2, ..."""
+    columns = {str(c): frame[c].to_numpy() for c in frame.columns}
+    if any(_split_name(n)[1].lower() in TIME_NAMES for n in columns):
+        return columns
+    index = frame.index
+    name = index.name
+    if name is not None and _split_name(str(name))[1].lower() in TIME_NAMES:
+        return {str(name): index.to_numpy(), **columns}
+    if name is None and type(index).__name__ != "RangeIndex" and getattr(index, "nlevels", 1) == 1:
+        return {"time": index.to_numpy(), **columns}
+    return columns
 
 
 def read_result(data: Any, instance: str | None = None) -> Result:
@@ -240,19 +353,11 @@ def read_result(data: Any, instance: str | None = None) -> Result:
         except OSError as error:
             raise ReadError(f"{path}: {error.strerror or error}") from None
         if raw[:4] == b"PAR1":
-            import pyarrow.parquet as pq  # noqa: PLC0415
-            try:
-                table = pq.read_table(path)
-            except Exception as error:  # noqa: BLE001 (pyarrow raises many kinds)
-                raise ReadError(f"{path}: not a readable Parquet file ({error})") from None
-            return _from_columns({n: table.column(n).to_numpy() for n in table.column_names}, str(path), instance)
-        try:
-            text = raw.decode("utf-8-sig")
-        except UnicodeDecodeError:
-            raise ReadError(f"{path}: not a text (CSV) or Parquet file") from None
-        return read_csv_text(text, str(path), instance)
-    if hasattr(data, "columns") and hasattr(data, "__getitem__"):  # a pandas DataFrame
-        return _from_columns({str(c): np.asarray(data[c]) for c in data.columns}, type(data).__name__, instance)
+            del raw
+            return _read_parquet(path, instance)
+        return read_csv_bytes(raw, str(path), instance)
+    if hasattr(data, "columns") and hasattr(data, "index") and hasattr(data, "__getitem__"):  # a pandas DataFrame
+        return _from_columns(_frame_columns(data), type(data).__name__, instance)
     if isinstance(data, np.ndarray) and data.dtype.names:
         return _from_columns({n: data[n] for n in data.dtype.names}, "structured array", instance)
     if isinstance(data, dict):
@@ -264,7 +369,7 @@ def describe_digits(result: Result) -> str:
     """"printed with N significant digits" or "stored in binary"."""
     if result.formats is None:
         return "stored in binary"
-    coarse = {n: f for n, f in result.formats.items() if f.decimals is not None or f.digits < 15}
+    coarse = {n: f for n, f in result.formats.items() if f.decimals is not None or f.digits < FULL_DIGITS}
     if not coarse:
         return "printed in full precision"
     kinds: dict[str, list[str]] = {}
@@ -273,4 +378,5 @@ def describe_digits(result: Result) -> str:
     return "printed with " + "; ".join(f"{k} ({', '.join(v)})" for k, v in kinds.items())
 
 
-__all__ = ["ReadError", "Result", "VARIABLES", "describe_digits", "read_result", "read_csv_text"]
+__all__ = ["DEFAULT_PRECISION", "Format", "ReadError", "Result", "VARIABLES", "describe_digits", "read_csv_bytes",
+           "read_csv_text", "read_result"]
