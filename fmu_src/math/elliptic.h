@@ -1,5 +1,6 @@
-/* elliptic.h: complete and incomplete elliptic integrals of the first kind and the Jacobi
- * elliptic functions sn, cn, dn, am for real argument and parameter 0 <= m <= 1.
+/* elliptic.h: the complete elliptic integral K, Carlson's R_F and the Jacobi elliptic
+ * functions sn, cn, dn for real argument and parameter 0 <= m <= 1, as the exact solution
+ * (exact.c) uses them; the double-double arithmetic they are set up with is dd.h.
  *
  * Notation of Abramowitz & Stegun (A&S) ch. 16-17 and DLMF ch. 19, 22: m is the parameter,
  * m1 = 1 - m the complementary parameter, k = sqrt(m) the modulus, k' = sqrt(m1).
@@ -7,13 +8,13 @@
  * the caller's m1 (for the pendulum: a product of cosines) carries digits that 1 - m has lost.
  *
  * Method (why it is accurate for m1 -> 0):
- *  - K by the arithmetic-geometric mean from k' (A&S 17.6.1-2, DLMF 19.8.5), in double and
- *    in double-double.
+ *  - K by the arithmetic-geometric mean from k' (A&S 17.6.1-2, DLMF 19.8.5) in double-double.
  *  - sn, cn, dn by the descending Landen (Gauss) transformation A&S 16.12.2-4 in its
  *    algebraic form, i.e. the AGM sequence of moduli k_{n+1} = (1 - k_n')/(1 + k_n') of
  *    A&S 17.5 / 16.4, bottomed out with the small-parameter expansions A&S 16.13.1-3.
- *    The argument is first reduced modulo 4K and then to |v| <= K/2 with the quarter-period
- *    identities A&S 16.8.1-3 (sn(v+K) = cd v, cn(v+K) = -k' sd v, dn(v+K) = k'/dn v).
+ *    The caller reduces the argument to u = n K + v, |v| <= K/2 (elliptic_reduce), and
+ *    applies the quarter-period identities A&S 16.8.1-3 (sn(v+K) = cd v, cn(v+K) = -k' sd v,
+ *    dn(v+K) = k'/dn v) by n mod 4 (elliptic_quarter_of).
  *    On |v| <= K/2 every quantity of every Landen level is positive and is formed from
  *    products and sums of positive numbers only (1 - k s^2 is written (1 - k) + k c^2), so
  *    sn, cn and dn all keep their relative accuracy, including dn(K/2) = sqrt(k'), and the
@@ -21,9 +22,9 @@
  *    The levels run in homogeneous coordinates (sn = S/D, cn = C/D, dn = E/D), so a level
  *    costs a few multiplications and no division.
  *    The bottom level's sin and cos are a short Maclaurin series (|z| <= pi/4 there).
- *  - F(phi | m) by Carlson's R_F (DLMF 19.25.5, duplication algorithm DLMF 19.36.1 /
- *    Carlson, Numer. Algorithms 10 (1995) 13-26), continued by F(phi + n pi) = F(phi) + 2nK
- *    (A&S 17.4.3).
+ *  - R_F by Carlson's duplication algorithm (DLMF 19.36.1; Carlson, Numer. Algorithms 10
+ *    (1995) 13-26): the incomplete integral F(phi | m) of an initial phase is
+ *    sin phi R_F(cos^2 phi, 1 - m sin^2 phi, 1) (DLMF 19.25.5), formed by the caller.
  *
  * The evaluation kernels (Landen levels, the bottom series, an atan for the amplitude) are
  * static inline below, so that a caller's evaluation compiles into one function without
@@ -33,239 +34,34 @@
 #define PENDULUM_ELLIPTIC_H
 
 #include <math.h>
-#include <stdint.h>
-#include <string.h>
+
+#include "dd.h"
+
+/* The double-double names fmu_src/solvers/integrator_core.c still uses: the same functions
+ * under dd.h's names, until that file takes those names itself. */
+#define EllipticDD DoubleDouble
+#define elliptic_dd dd_of
+#define elliptic_dd_add dd_add
+#define elliptic_dd_mul dd_mul
+#define elliptic_dd_neg dd_neg
+#define elliptic_dd_sincos dd_sincos
+#define elliptic_two_prod dd_two_prod
 
 /* ---------------------------------------------------------------------------------------
- * Double-double arithmetic: a value is hi + lo with |lo| <= ulp(hi)/2 (Dekker, Numer. Math.
- * 18 (1971) 224-242; Knuth, TAOCP vol. 2, 4.2.2). Used for K and the phase over long
- * horizons. The two error-free transformations are inline because the evaluation path
- * uses them; they need IEEE double arithmetic without extended precision (SSE2 or better).
- * --------------------------------------------------------------------------------------- */
-typedef struct {
-    double hi, lo;
-} EllipticDD;
-
-/* The double-double x + 0. */
-static inline EllipticDD elliptic_dd(double x)
-{
-    EllipticDD r;
-    r.hi = x;
-    r.lo = 0.0;
-    return r;
-}
-
-/* -x, exactly. */
-static inline EllipticDD elliptic_dd_neg(EllipticDD x)
-{
-    x.hi = -x.hi;
-    x.lo = -x.lo;
-    return x;
-}
-
-/* s + err = a + b exactly, s = fl(a + b) (Knuth's TwoSum, TAOCP 4.2.2 Theorem B). */
-static inline EllipticDD elliptic_two_sum(double a, double b)
-{
-    EllipticDD r;
-    double b_virtual;
-    r.hi = a + b;
-    b_virtual = r.hi - a;
-    r.lo = (a - (r.hi - b_virtual)) + (b - b_virtual);
-    return r;
-}
-
-/* p + err = a * b exactly, p = fl(a b). With a hardware fma (FP_FAST_FMA, C11 7.12):
- * err = fma(a, b, -p), exact by the single rounding. Otherwise Dekker's product (Dekker 1971,
- * mul12): Veltkamp's split of a and b into 26-bit halves, whose partial products are exact
- * (valid for |a|, |b| < 2^995). */
-static inline EllipticDD elliptic_two_prod(double a, double b)
-{
-    EllipticDD r;
-    r.hi = a * b;
-#ifdef FP_FAST_FMA
-    r.lo = fma(a, b, -r.hi);
-#else
-    const double splitter = 134217729.0;          /* 2^27 + 1 */
-    double a_big = splitter * a, b_big = splitter * b;
-    double a_hi = a_big - (a_big - a), b_hi = b_big - (b_big - b);
-    double a_lo = a - a_hi, b_lo = b - b_hi;
-    r.lo = ((a_hi * b_hi - r.hi) + a_hi * b_lo + a_lo * b_hi) + a_lo * b_lo;
-#endif
-    return r;
-}
-
-/* Biased exponent field of x (0 for zero and subnormals, 0x7ff for inf and NaN). */
-static inline int elliptic_biased_exponent(double x)
-{
-    uint64_t bits;
-    memcpy(&bits, &x, sizeof bits);
-    return (int)((bits >> 52) & 0x7ff);
-}
-
-/* x 2^e, the value of ldexp(x, e): a multiplication by the power of two built from its bits
- * (exact, or one rounding for a subnormal result, as ldexp) when 2^e is a normal double,
- * else ldexp itself. Avoids a libm call in the set-up. */
-static inline double elliptic_ldexp(double x, int e)
-{
-    if (e >= -1022 && e <= 1023) {
-        const uint64_t bits = (uint64_t)(e + 1023) << 52;
-        double power;
-        memcpy(&power, &bits, sizeof power);
-        return x * power;
-    }
-    return ldexp(x, e);
-}
-
-/* The exponent frexp would give (x = f 2^e, 1/2 <= |f| < 1), from the bits for a normal x. */
-static inline int elliptic_frexp_exponent(double x)
-{
-    const int biased = elliptic_biased_exponent(x);
-    if (biased != 0 && biased != 0x7ff) {
-        return biased - 1022;
-    }
-    int exponent = 0;
-    (void)frexp(x, &exponent);
-    return exponent;
-}
-
-/* The leading 26 significant bits of x (truncated), so that head * n is exact for |n| < 2^27
- * and x - head is exact with at most 27 significant bits. For a normal x the low 27 bits of
- * the significand are cleared; otherwise formed with frexp/ldexp/trunc. Both are exact, so
- * no floating-point contraction can spoil it (unlike Veltkamp's split). */
-static inline double elliptic_head26(double x)
-{
-    const int biased = elliptic_biased_exponent(x);
-    if (biased != 0 && biased != 0x7ff) {
-        uint64_t bits;
-        memcpy(&bits, &x, sizeof bits);
-        bits &= ~(((uint64_t)1 << 27) - 1);
-        double head;
-        memcpy(&head, &bits, sizeof head);
-        return head;
-    }
-    int exponent;
-    const double fraction = frexp(x, &exponent);
-    return ldexp(trunc(ldexp(fraction, 26)), exponent - 26);
-}
-
-/* Nearest integer to x (ties to even), by the 1.5 * 2^52 shift for |x| < 2^51 (exact in
- * round-to-nearest double arithmetic), else nearbyint. */
-static inline double elliptic_nearest_integer(double x)
-{
-    if (fabs(x) < 0x1p51) {
-        const double shift = 0x1.8p52;
-        return (x + shift) - shift;
-    }
-    return nearbyint(x);
-}
-
-/* x + y, x * y, x / y, sqrt(x) in double-double (relative error a few 2^-104; sqrt for
- * x >= 0), static inline: the set-up runs long chains of them. */
-/* s + err = a + b exactly, valid when |a| >= |b| or a == 0 (Dekker's Fast2Sum). */
-static inline EllipticDD elliptic_fast_two_sum(double a, double b)
-{
-    EllipticDD r;
-    r.hi = a + b;
-    r.lo = b - (r.hi - a);
-    return r;
-}
-
-static inline EllipticDD elliptic_dd_add(EllipticDD x, EllipticDD y)
-{
-    /* Sum of the high parts and of the low parts, each error-free, then two renormalisations
-     * (the "accurate" double-double addition of Hida, Li and Bailey's QD library). */
-    EllipticDD s = elliptic_two_sum(x.hi, y.hi);
-    EllipticDD t = elliptic_two_sum(x.lo, y.lo);
-    s.lo += t.hi;
-    s = elliptic_fast_two_sum(s.hi, s.lo);
-    s.lo += t.lo;
-    return elliptic_fast_two_sum(s.hi, s.lo);
-}
-
-static inline EllipticDD elliptic_dd_mul(EllipticDD x, EllipticDD y)
-{
-    /* (xh + xl)(yh + yl) = xh yh (exact two-product) + xh yl + xl yh + O(2^-106). */
-    EllipticDD p = elliptic_two_prod(x.hi, y.hi);
-    p.lo += x.hi * y.lo + x.lo * y.hi;
-    return elliptic_fast_two_sum(p.hi, p.lo);
-}
-
-static inline EllipticDD elliptic_dd_div(EllipticDD x, EllipticDD y)
-{
-    /* Dekker's div2: q1 = x.hi / y.hi, the remainder x - q1 y with q1 y.hi exact (two-product;
-     * x.hi - p.hi is exact by Sterbenz), then q2 = remainder / y.hi. Relative error a few
-     * 2^-104 (Dekker 1971, section 8). */
-    const double q1 = x.hi / y.hi;
-    const EllipticDD p = elliptic_two_prod(q1, y.hi);
-    const double remainder = (((x.hi - p.hi) - p.lo) + x.lo) - q1 * y.lo;
-    return elliptic_fast_two_sum(q1, remainder / y.hi);
-}
-
-static inline EllipticDD elliptic_dd_sqrt(EllipticDD x)
-{
-    /* One Newton step from the double root s: sqrt(x) = s + (x - s^2) / (2 s), with s^2
-     * formed exactly by a two-product. */
-    if (!(x.hi > 0.0)) {
-        return elliptic_dd(x.hi == 0.0 ? 0.0 : NAN);
-    }
-    if (isinf(x.hi)) {
-        return elliptic_dd(x.hi);
-    }
-    if (x.hi < 0x1p-900) {
-        /* keep the error terms of the two-product out of the subnormal range: scale by an
-         * even power of two (exact) */
-        EllipticDD scaled = {x.hi * 0x1p1000, x.lo * 0x1p1000};
-        EllipticDD root = elliptic_dd_sqrt(scaled);
-        root.hi *= 0x1p-500;
-        root.lo *= 0x1p-500;
-        return root;
-    }
-    double s = sqrt(x.hi);
-    EllipticDD sq = elliptic_two_prod(s, s);
-    double correction = (((x.hi - sq.hi) - sq.lo) + x.lo) / (2.0 * s);
-    return elliptic_fast_two_sum(s, correction);
-}
-
-
-/* sin x and cos x for a double-double argument |x| <= 2 pi (relative accuracy ~1e-31, also
- * near the zeros): x = n pi/2 + y with pi/2 in three parts, |y| <= pi/4, Maclaurin series
- * of sin y and cos y (A&S 4.3.65-66) summed in double-double, then the quadrant. */
-void elliptic_dd_sincos(EllipticDD x, EllipticDD *sin_x, EllipticDD *cos_x);
-
-/* The same with only cos x in double-double and sin x as a double (within an ulp or so):
- * about half the work, for callers that need the digits of one of the two only. */
-void elliptic_dd_cos_sin(EllipticDD x, EllipticDD *cos_x, double *sin_x);
-
-/* pi in three parts (pi = PI_HI + PI_LO + PI_LOLO to ~1e-48), generated with mpmath. */
-#define ELLIPTIC_PI_HI   0x1.921fb54442d18p+1
-#define ELLIPTIC_PI_LO   0x1.1a62633145c07p-53
-#define ELLIPTIC_PI_LOLO (-0x1.f1976b7ed8fbcp-109)
-
-/* ---------------------------------------------------------------------------------------
- * Complete and incomplete integrals of the first kind.
+ * The complete integral of the first kind and Carlson's R_F.
  * --------------------------------------------------------------------------------------- */
 
-/* K(m) from m1 = 1 - m >= 0 (m1 may exceed 1, i.e. m < 0):
- * K = pi / (2 AGM(1, sqrt(m1)))   (A&S 17.6.1-2, DLMF 19.8.5).
- * Returns +INFINITY for m1 == 0 and NaN for m1 < 0 or NaN. About 1 ulp. */
-double elliptic_K(double m1);
-
-/* The same in double-double, from m1 in double-double (m1 >= 0): the AGM in double-double
- * until the pair is within 2^-15 of each other, then the series of 2F1 (elliptic.c). */
-EllipticDD elliptic_K_dd(EllipticDD m1);
+/* K(m) = pi / (2 AGM(1, sqrt(m1)))  (A&S 17.6.1-2, DLMF 19.8.5) in double-double, from
+ * m1 = 1 - m >= 0 in double-double (m1 may exceed 1, i.e. m < 0): the AGM in double-double
+ * until the pair is within 2^-15 of each other, then the series of 2F1 (elliptic.c).
+ * Returns +INFINITY for m1 == 0 and NaN for m1 < 0 or NaN. */
+DoubleDouble elliptic_K_dd(DoubleDouble m1);
 
 /* Carlson's symmetric integral R_F(x, y, z) = 1/2 int_0^inf dt / sqrt((t+x)(t+y)(t+z))
  * for x, y, z >= 0, at most one of them 0 (DLMF 19.16.1), by the duplication theorem
  * (DLMF 19.26.18) until the spread is below 0.004, then the series DLMF 19.36.1 to degree 7.
  * Returns +INFINITY if two arguments are 0, NaN for a negative or NaN argument. */
 double elliptic_RF(double x, double y, double z);
-
-/* Incomplete integral of the first kind F(phi | m), any real phi, 0 <= m <= 1:
- * F(psi | m) = sin psi R_F(cos^2 psi, cos^2 psi + m1 sin^2 psi, 1) for |psi| <= pi/2
- * (DLMF 19.25.5, with 1 - m sin^2 psi written as a sum of positive terms), continued by
- * F(psi + n pi | m) = F(psi | m) + 2 n K(m)  (A&S 17.4.3). F(phi | 1) = asinh(tan phi)
- * for |phi| < pi/2 (A&S 17.4.21). */
-double elliptic_F(double phi, double m, double m1);
 
 /* ---------------------------------------------------------------------------------------
  * Jacobi elliptic functions. EllipticParam holds everything that depends on m only:
@@ -298,7 +94,7 @@ int elliptic_param_init(EllipticParam *p, double m, double m1_hi, double m1_lo);
 /* The same with k' = sqrt(m1) given in double-double by the caller (root == NULL: formed
  * from m1), for a caller that has it without a square root (the pendulum from rest:
  * k' = cos(theta0/2)). */
-int elliptic_param_init_root(EllipticParam *p, double m, double m1_hi, double m1_lo, const EllipticDD *root);
+int elliptic_param_init_root(EllipticParam *p, double m, double m1_hi, double m1_lo, const DoubleDouble *root);
 
 /* Reduces u = u_hi + u_lo to u = n K + r with n = nearest integer to u / K, so |r| <= K/2
  * (up to rounding of the quotient). Returns r; *quarters = n (an integer-valued double).
@@ -420,7 +216,7 @@ static inline EllipticHomogeneous elliptic_landen_ascend(const EllipticParam *p,
 }
 
 /* sn, cn, dn of a reduced argument v (|v| <= K/2 for full relative accuracy; accurate to a
- * few ulps of v up to |v| <= K; not for larger |v|, use elliptic_sncndn) in homogeneous
+ * few ulps of v up to |v| <= K; reduce a larger |v| with elliptic_reduce first) in homogeneous
  * form: sn = *S / *D, cn = *C / *D, dn = *E / *D with *D > 0, by the descending Landen
  * scheme above. */
 static inline void elliptic_sncndn_homogeneous(const EllipticParam *p, double v,
@@ -452,20 +248,9 @@ static inline void elliptic_sncndn_homogeneous_pair(const EllipticParam *p, doub
     *level1 = h1;
 }
 
-/* sn, cn, dn of a reduced argument v, |v| <= K/2 (the homogeneous form divided out). */
-void elliptic_sncndn_reduced(const EllipticParam *p, double v, double *sn, double *cn, double *dn);
-
 /* n mod 4 in 0..3 for an integer-valued double n (0 for a non-finite n): the quarter of a
  * period that a reduction quotient n lands in. */
 int elliptic_quarter_of(double n);
-
-/* sn(u|m), cn(u|m), dn(u|m) for any real u: reduction to u = n K + r, then by n mod 4
- * (A&S 16.8.1-3 and the table of A&S 16.8 for shifts by K, 2K, 3K):
- *   n = 0: ( sn r,          cn r,              dn r      )
- *   n = 1: ( cn r / dn r,  -k' sn r / dn r,    k' / dn r )
- *   n = 2: (-sn r,         -cn r,              dn r      )
- *   n = 3: (-cn r / dn r,   k' sn r / dn r,    k' / dn r ) */
-void elliptic_sncndn(const EllipticParam *p, double u, double *sn, double *cn, double *dn);
 
 /* tan(pi/8), tan(3 pi/8) and pi/4 in two parts (from mpmath). */
 #define ELLIPTIC_TAN_PI_8     0x1.a827999fcef32p-2
@@ -527,10 +312,5 @@ static inline double elliptic_atan_unit(double y, double x)
         w1 * ELLIPTIC_QUARTER_PI_HI + (w1 * ELLIPTIC_QUARTER_PI_LO + (t + t * s * g));
     return copysign(angle, y);
 }
-
-/* The amplitude am(u|m), continuous and increasing in u (am(u + 2K) = am(u) + pi, A&S 16.1.5):
- * am(n K + r) = n pi/2 + atan2(sn r, cn r)       for n even,
- *             = n pi/2 + atan2(k' sn r, cn r)    for n odd (from the table above). */
-double elliptic_am(const EllipticParam *p, double u);
 
 #endif

@@ -41,32 +41,19 @@
 #include <stdint.h>
 #include <string.h>
 
-#define PI_HI   ELLIPTIC_PI_HI
-#define PI_LO   ELLIPTIC_PI_LO
-#define PI_LOLO ELLIPTIC_PI_LOLO
-
-static EllipticDD dd_sub(EllipticDD x, EllipticDD y)
-{
-    return elliptic_dd_add(x, elliptic_dd_neg(y));
-}
+#define PI_HI   DD_PI_HI
+#define PI_LO   DD_PI_LO
+#define PI_LOLO DD_PI_LOLO
 
 /* x - j (2 pi), 2 pi in three parts, the two leading products exact. */
-static EllipticDD subtract_turns(EllipticDD x, double j)
+static DoubleDouble subtract_turns(DoubleDouble x, double j)
 {
-    x = dd_sub(x, elliptic_two_prod(j, 2.0 * PI_HI));
-    x = dd_sub(x, elliptic_two_prod(j, 2.0 * PI_LO));
-    return elliptic_dd_add(x, elliptic_dd(-j * 2.0 * PI_LOLO));
+    x = dd_sub(x, dd_two_prod(j, 2.0 * PI_HI));
+    x = dd_sub(x, dd_two_prod(j, 2.0 * PI_LO));
+    return dd_add(x, dd_of(-j * 2.0 * PI_LOLO));
 }
 
-/* x * 2^exponent for a double-double (exact unless it overflows or underflows). */
-static EllipticDD dd_ldexp(EllipticDD x, int exponent)
-{
-    x.hi = elliptic_ldexp(x.hi, exponent);
-    x.lo = elliptic_ldexp(x.lo, exponent);
-    return x;
-}
-
-static void init_separatrix(PendulumExact *e, EllipticDD s, EllipticDD c, double omega0, EllipticDD w0)
+static void init_separatrix(PendulumExact *e, DoubleDouble s, DoubleDouble c, double omega0, DoubleDouble w0)
 {
     e->regime = PENDULUM_SEPARATRIX;
     e->m = 1.0;
@@ -108,7 +95,7 @@ static const double INV_2PI_BITS[] = {
  * the exact products M_j INV_2PI_BITS[i] 2^(E + 24 j - 24 (i + 1)): the terms that are whole
  * numbers are whole turns and dropped, of the others only the fraction is kept (exact), down
  * to 2^-170; the sum of fractions times 2 pi is the angle, to ~1e-31 rad. */
-static EllipticDD reduce_large_angle(double theta, double *turns)
+static DoubleDouble reduce_large_angle(double theta, double *turns)
 {
     int exponent;
     const double mantissa = ldexp(frexp(fabs(theta), &exponent), 53);   /* an integer < 2^53 */
@@ -117,7 +104,7 @@ static EllipticDD reduce_large_angle(double theta, double *turns)
     digit[0] = fmod(mantissa, 0x1p24);
     digit[1] = fmod((mantissa - digit[0]) * 0x1p-24, 0x1p24);
     digit[2] = (mantissa - digit[0] - digit[1] * 0x1p24) * 0x1p-48;
-    EllipticDD fraction = elliptic_dd(0.0);
+    DoubleDouble fraction = dd_of(0.0);
     for (int i = 0; i < INV_2PI_CHUNKS; ++i) {
         for (int j = 2; j >= 0; --j) {
             const int power = E + 24 * j - 24 * (i + 1);
@@ -125,14 +112,14 @@ static EllipticDD reduce_large_angle(double theta, double *turns)
                 continue;   /* a whole number of turns, or below 2^-122 in all */
             }
             const double term = ldexp(digit[j] * INV_2PI_BITS[i], power);   /* exact: < 2^48 bits */
-            fraction = elliptic_dd_add(fraction, elliptic_dd(term - nearbyint(term)));
+            fraction = dd_add(fraction, dd_of(term - nearbyint(term)));
         }
     }
-    fraction = elliptic_dd_add(fraction, elliptic_dd(-nearbyint(fraction.hi)));   /* |f| <= 1/2 */
-    EllipticDD two_pi = elliptic_two_sum(2.0 * PI_HI, 2.0 * PI_LO);
-    EllipticDD angle = elliptic_dd_mul(fraction, two_pi);
+    fraction = dd_add(fraction, dd_of(-nearbyint(fraction.hi)));   /* |f| <= 1/2 */
+    DoubleDouble two_pi = dd_two_sum(2.0 * PI_HI, 2.0 * PI_LO);
+    DoubleDouble angle = dd_mul(fraction, two_pi);
     if (theta < 0.0) {
-        angle = elliptic_dd_neg(angle);
+        angle = dd_neg(angle);
     }
     *turns = nearbyint((theta - angle.hi) / (2.0 * PI_HI));
     return angle;
@@ -157,7 +144,7 @@ static double take_leading(double *v, int n)
 {
     for (int pass = 0; pass < 3; ++pass) {
         for (int i = 1; i < n; ++i) {
-            const EllipticDD t = elliptic_two_sum(v[i], v[i - 1]);
+            const DoubleDouble t = dd_two_sum(v[i], v[i - 1]);
             v[i] = t.hi;
             v[i - 1] = t.lo;
         }
@@ -199,7 +186,7 @@ static TripleDouble td_mul(TripleDouble a, TripleDouble b)
     v[n++] = a.x[2] * b.x[1];
     for (int order = 2; order >= 0; --order) {
         for (int i = 0; i <= order; ++i) {
-            const EllipticDD p = elliptic_two_prod(a.x[i], b.x[order - i]);
+            const DoubleDouble p = dd_two_prod(a.x[i], b.x[order - i]);
             v[n++] = p.lo;
             v[n++] = p.hi;
         }
@@ -245,14 +232,14 @@ static TripleDouble td_sin_cos_series(TripleDouble y, int odd)
  * th in about (-pi, pi]), q^2 = (|omega0|/2)^2 / w0sq with w0sq = numerator / denominator
  * given exactly (g / L, or w0^2 as a double-double from w0). Returns 0, or -1 when the
  * squares leave the range where every product is exact. */
-static int m1_near_separatrix(double theta0, double turns, double half_speed, EllipticDD w0sq_num,
-                              double w0sq_den, EllipticDD *m1)
+static int m1_near_separatrix(double theta0, double turns, double half_speed, DoubleDouble w0sq_num,
+                              double w0sq_den, DoubleDouble *m1)
 {
     if (!(half_speed > 0x1p-400 && half_speed < 0x1p400) || !(fabs(theta0) < 0x1p50)) {
         return -1;
     }
     /* th/2 = theta0/2 - pi turns, pi in three parts, products exact (j < 2^49) */
-    const EllipticDD p_hi = elliptic_two_prod(turns, PI_HI), p_lo = elliptic_two_prod(turns, PI_LO);
+    const DoubleDouble p_hi = dd_two_prod(turns, PI_HI), p_lo = dd_two_prod(turns, PI_LO);
     double v[6] = {-turns * PI_LOLO, -p_lo.lo, -p_lo.hi, -p_hi.lo, -p_hi.hi, 0.5 * theta0};
     TripleDouble x = td_from_terms(v, 6);
     if (x.x[0] < 0.0) {
@@ -267,8 +254,8 @@ static int m1_near_separatrix(double theta0, double turns, double half_speed, El
         c = td_sin_cos_series(td_from_terms(w, 6), 1);
     }
     /* q^2 = hs^2 den / num: hs^2 exact as a two-product */
-    const EllipticDD hs2 = elliptic_two_prod(half_speed, half_speed);
-    const EllipticDD a = elliptic_two_prod(hs2.hi, w0sq_den), b = elliptic_two_prod(hs2.lo, w0sq_den);
+    const DoubleDouble hs2 = dd_two_prod(half_speed, half_speed);
+    const DoubleDouble a = dd_two_prod(hs2.hi, w0sq_den), b = dd_two_prod(hs2.lo, w0sq_den);
     if (!(fabs(a.hi) > 0x1p-800 && fabs(a.hi) < 0x1p800) || !(w0sq_num.hi > 0x1p-800 && w0sq_num.hi < 0x1p800)) {
         return -1;                                        /* a product could lose bits */
     }
@@ -279,7 +266,7 @@ static int m1_near_separatrix(double theta0, double turns, double half_speed, El
     if (!isfinite(diff.x[0]) || !isfinite(diff.x[1])) {
         return -1;
     }
-    *m1 = elliptic_two_sum(diff.x[0], diff.x[1] + diff.x[2]);
+    *m1 = dd_two_sum(diff.x[0], diff.x[1] + diff.x[2]);
     return 0;
 }
 
@@ -287,16 +274,16 @@ static int m1_near_separatrix(double theta0, double turns, double half_speed, El
  * scaled (the named steps of exact_init_dd below pass it along). */
 typedef struct {
     double turns;         /* theta0 = 2 pi turns + th */
-    EllipticDD th;        /* th in (-pi, pi] */
-    EllipticDD s;         /* sin(th/2): the leading double only (s.lo = 0); init_rotation,
+    DoubleDouble th;        /* th in (-pi, pi] */
+    DoubleDouble s;         /* sin(th/2): the leading double only (s.lo = 0); init_rotation,
                              the one step that needs its digits, forms it again in full */
-    EllipticDD c;         /* cos(th/2) >= 0, double-double */
+    DoubleDouble c;         /* cos(th/2) >= 0, double-double */
     int exponent;         /* common power of two of the rates: w_n = w0 2^-exponent, ... */
-    EllipticDD w_n;       /* w0 2^-exponent */
+    DoubleDouble w_n;       /* w0 2^-exponent */
     double hs_n;          /* |omega0|/2 2^-exponent, exact */
-    EllipticDD c_w;       /* c w_n */
-    EllipticDD gap;       /* c w_n - hs_n = w_n (c - |q|): the sign of m1 */
-    EllipticDD m1_fine;   /* m1 in triple-double precision (when fine) */
+    DoubleDouble c_w;       /* c w_n */
+    DoubleDouble gap;       /* c w_n - hs_n = w_n (c - |q|): the sign of m1 */
+    DoubleDouble m1_fine;   /* m1 in triple-double precision (when fine) */
     int fine;             /* 1 when m1_fine holds m1 (within 2^-30 of the separatrix speed) */
 } InitialState;
 
@@ -307,7 +294,7 @@ typedef struct {
 static void reduce_initial_angle(double theta0, InitialState *st)
 {
     double turns = 0.0;
-    EllipticDD th = elliptic_dd(theta0);
+    DoubleDouble th = dd_of(theta0);
     if (fabs(theta0) >= 0x1p50) {
         th = reduce_large_angle(theta0, &turns);
     }
@@ -316,16 +303,16 @@ static void reduce_initial_angle(double theta0, InitialState *st)
         th = subtract_turns(th, j);
         turns += j;
     }
-    EllipticDD half = {0.5 * th.hi, 0.5 * th.lo};   /* exact */
-    EllipticDD s = elliptic_dd(0.0), c;
-    elliptic_dd_cos_sin(half, &c, &s.hi);
+    DoubleDouble half = {0.5 * th.hi, 0.5 * th.lo};   /* exact */
+    DoubleDouble s = dd_of(0.0), c;
+    dd_cos_sin(half, &c, &s.hi);
     if (c.hi < 0.0 || (c.hi == 0.0 && th.hi < 0.0)) {
         /* th just outside (-pi, pi]: move it by one turn; th/2 moves by pi, s and c change sign. */
         double shift = th.hi > 0.0 ? 1.0 : -1.0;
         turns += shift;
         th = subtract_turns(th, shift);
-        s = elliptic_dd_neg(s);
-        c = elliptic_dd_neg(c);
+        s = dd_neg(s);
+        c = dd_neg(c);
     }
     st->turns = turns;
     st->th = th;
@@ -340,20 +327,20 @@ static void reduce_initial_angle(double theta0, InitialState *st)
  * The sign of m1 = cos^2(th/2) - q^2 is that of w0 c - |omega0|/2; within 2^-30 of the
  * separatrix speed m1 itself is formed in triple-double (above): its sign decides the
  * regime and its digits the period. */
-static void locate_separatrix(double theta0, double omega0, EllipticDD w0, double g, double L,
+static void locate_separatrix(double theta0, double omega0, DoubleDouble w0, double g, double L,
                               InitialState *st)
 {
     const double half_speed = 0.5 * fabs(omega0);          /* |omega0| / 2, exact */
-    const int exponent = elliptic_frexp_exponent(fmax(w0.hi, half_speed));
+    const int exponent = dd_frexp_exponent(fmax(w0.hi, half_speed));
     st->exponent = exponent;
     st->w_n = dd_ldexp(w0, -exponent);
-    st->hs_n = elliptic_ldexp(half_speed, -exponent);
-    st->c_w = elliptic_dd_mul(st->c, st->w_n);
-    st->gap = dd_sub(st->c_w, elliptic_dd(st->hs_n));
-    st->m1_fine = elliptic_dd(0.0);
+    st->hs_n = dd_scalbn(half_speed, -exponent);
+    st->c_w = dd_mul(st->c, st->w_n);
+    st->gap = dd_sub(st->c_w, dd_of(st->hs_n));
+    st->m1_fine = dd_of(0.0);
     st->fine = 0;
     if (fabs(st->gap.hi) < 0x1p-30 * st->hs_n) {
-        const EllipticDD num = g > 0.0 ? elliptic_dd(g) : elliptic_two_prod(w0.hi, w0.hi);
+        const DoubleDouble num = g > 0.0 ? dd_of(g) : dd_two_prod(w0.hi, w0.hi);
         st->fine = m1_near_separatrix(theta0, st->turns, half_speed, num, g > 0.0 ? L : 1.0,
                                       &st->m1_fine) == 0;
     }
@@ -362,20 +349,20 @@ static void locate_separatrix(double theta0, double omega0, EllipticDD w0, doubl
 /* Step 3a. Libration (m1 > 0): w_n >= 1/2 here, q = |omega0| / (2 w0) <= c <= 1.
  * Returns 0, 1 when m1 underflowed (the caller treats it as the separatrix), -1 on failure.
  * *rate_n is the rate of u scaled by 2^-exponent. */
-static int init_libration(PendulumExact *e, double omega0, EllipticDD w0, const InitialState *st,
-                          EllipticDD *rate_n)
+static int init_libration(PendulumExact *e, double omega0, DoubleDouble w0, const InitialState *st,
+                          DoubleDouble *rate_n)
 {
-    const EllipticDD s = st->s, c = st->c;
+    const DoubleDouble s = st->s, c = st->c;
     const int from_rest = omega0 == 0.0;
     /* From rest q = 0 and m1 = c^2; else m1 = (c - q)(c + q) = (gap / w_n)(c + q). */
-    const EllipticDD q = from_rest ? elliptic_dd(0.0) : elliptic_dd_div(elliptic_dd(st->hs_n), st->w_n);
-    EllipticDD m1;
+    const DoubleDouble q = from_rest ? dd_of(0.0) : dd_div(dd_of(st->hs_n), st->w_n);
+    DoubleDouble m1;
     if (st->fine) {
         m1 = st->m1_fine;
     } else if (from_rest) {
-        m1 = elliptic_dd_mul(c, c);
+        m1 = dd_mul(c, c);
     } else {
-        m1 = elliptic_dd_mul(elliptic_dd_div(st->gap, st->w_n), elliptic_dd_add(c, q));
+        m1 = dd_mul(dd_div(st->gap, st->w_n), dd_add(c, q));
     }
     if (!(m1.hi > 0.0)) {
         return 1;
@@ -416,29 +403,29 @@ static int init_libration(PendulumExact *e, double omega0, EllipticDD w0, const 
 
 /* Step 3b. Rotation (m1 < 0, omega0 != 0). Ratios to |omega0|/2: rho = s/|q|, gamma = c/|q| < 1
  * (hs_n > c w_n, and c >= ~1e-33, so hs_n is not tiny). */
-static int init_rotation(PendulumExact *e, double omega0, const InitialState *st, EllipticDD *rate_n)
+static int init_rotation(PendulumExact *e, double omega0, const InitialState *st, DoubleDouble *rate_n)
 {
-    const EllipticDD half = {0.5 * st->th.hi, 0.5 * st->th.lo};   /* exact */
-    EllipticDD s, c_again;
-    elliptic_dd_sincos(half, &s, &c_again);   /* sin(th/2) in double-double */
-    const EllipticDD c = st->c, w_n = st->w_n;
+    const DoubleDouble half = {0.5 * st->th.hi, 0.5 * st->th.lo};   /* exact */
+    DoubleDouble s, c_again;
+    dd_sincos(half, &s, &c_again);   /* sin(th/2) in double-double */
+    const DoubleDouble c = st->c, w_n = st->w_n;
     const double hs_n = st->hs_n;
     e->regime = PENDULUM_ROTATION;
     e->direction = omega0 > 0.0 ? 1.0 : -1.0;
-    const EllipticDD hs = elliptic_dd(hs_n);
-    EllipticDD rho = elliptic_dd_div(elliptic_dd_mul(s, w_n), hs);
-    EllipticDD one_plus_rho2 = elliptic_dd_add(elliptic_dd(1.0), elliptic_dd_mul(rho, rho));
-    EllipticDD mu1;
+    const DoubleDouble hs = dd_of(hs_n);
+    DoubleDouble rho = dd_div(dd_mul(s, w_n), hs);
+    DoubleDouble one_plus_rho2 = dd_add(dd_of(1.0), dd_mul(rho, rho));
+    DoubleDouble mu1;
     if (st->fine) {
         /* mu1 = -m1 mu, mu = (w_n / hs)^2 / (1 + rho^2) */
-        const EllipticDD w_hs_dd = elliptic_dd_div(w_n, hs);
-        mu1 = elliptic_dd_mul(elliptic_dd_neg(st->m1_fine),
-                              elliptic_dd_div(elliptic_dd_mul(w_hs_dd, w_hs_dd), one_plus_rho2));
+        const DoubleDouble w_hs_dd = dd_div(w_n, hs);
+        mu1 = dd_mul(dd_neg(st->m1_fine),
+                              dd_div(dd_mul(w_hs_dd, w_hs_dd), one_plus_rho2));
     } else {
         /* mu1 = -m1/m = (q^2 - c^2)/(q^2 + s^2) = (1 - gamma)(1 + gamma)/(1 + rho^2). */
-        const EllipticDD one_minus_gamma = elliptic_dd_div(elliptic_dd_neg(st->gap), hs);  /* (|q| - c)/|q| */
-        const EllipticDD gamma = elliptic_dd_div(st->c_w, hs);
-        mu1 = elliptic_dd_div(elliptic_dd_mul(one_minus_gamma, elliptic_dd_add(elliptic_dd(1.0), gamma)),
+        const DoubleDouble one_minus_gamma = dd_div(dd_neg(st->gap), hs);  /* (|q| - c)/|q| */
+        const DoubleDouble gamma = dd_div(st->c_w, hs);
+        mu1 = dd_div(dd_mul(one_minus_gamma, dd_add(dd_of(1.0), gamma)),
                               one_plus_rho2);
     }
     /* mu = 1/m = 1/(q^2 (1 + rho^2)). */
@@ -448,8 +435,8 @@ static int init_rotation(PendulumExact *e, double omega0, const InitialState *st
         return -1;
     }
     /* sqrt(m) w0 = |q| w0 sqrt(1 + rho^2) = (|omega0|/2) sqrt(1 + rho^2). */
-    *rate_n = elliptic_dd_mul(hs, elliptic_dd_sqrt(one_plus_rho2));
-    const EllipticDD rate = dd_ldexp(*rate_n, st->exponent);
+    *rate_n = dd_mul(hs, dd_sqrt(one_plus_rho2));
+    const DoubleDouble rate = dd_ldexp(*rate_n, st->exponent);
     e->m = 1.0 / mu;
     e->m1 = -mu1.hi / mu;
     e->k = e->ell.k;
@@ -467,31 +454,31 @@ static int init_rotation(PendulumExact *e, double omega0, const InitialState *st
 /* Step 4. Rate and initial phase in quarter periods: rho = scale / K, x0 = u0 / K; the period
  * 4K / w0 (libration) or 2K / rate (one revolution, rotation), all in double-double. A
  * libration released from rest starts at a turning point, x0 = +-1 exactly. */
-static void set_quarter_rates(PendulumExact *e, EllipticDD rate_n, int exponent, int from_rest)
+static void set_quarter_rates(PendulumExact *e, DoubleDouble rate_n, int exponent, int from_rest)
 {
-    const EllipticDD K = {e->K_hi, e->K_lo};
-    const EllipticDD rho = dd_ldexp(elliptic_dd_div(rate_n, K), exponent);
-    EllipticDD x0;
+    const DoubleDouble K = {e->K_hi, e->K_lo};
+    const DoubleDouble rho = dd_ldexp(dd_div(rate_n, K), exponent);
+    DoubleDouble x0;
     if (from_rest && e->regime == PENDULUM_LIBRATION && e->u0 != 0.0) {
-        x0 = elliptic_dd(e->u0 < 0.0 ? -1.0 : 1.0);
+        x0 = dd_of(e->u0 < 0.0 ? -1.0 : 1.0);
     } else {
-        x0 = elliptic_dd_div(elliptic_dd(e->u0), K);
+        x0 = dd_div(dd_of(e->u0), K);
     }
     e->rho_hi = rho.hi;
     e->rho_lo = rho.lo;
-    e->rho_head = elliptic_head26(rho.hi);
+    e->rho_head = dd_head26(rho.hi);
     e->rho_tail = rho.hi - e->rho_head;
     e->x0_hi = x0.hi;
     e->x0_lo = x0.lo;
     const double quarters_per_period = e->regime == PENDULUM_LIBRATION ? 4.0 : 2.0;
-    const EllipticDD quarters_K = {quarters_per_period * K.hi, quarters_per_period * K.lo};  /* exact */
-    e->period = elliptic_ldexp(elliptic_dd_div(quarters_K, rate_n).hi, -exponent);
+    const DoubleDouble quarters_K = {quarters_per_period * K.hi, quarters_per_period * K.lo};  /* exact */
+    e->period = dd_scalbn(dd_div(quarters_K, rate_n).hi, -exponent);
 }
 
 /* The solution for w0 in double-double (w0.hi > 0 finite); see pendulum_exact_init. The
  * steps: reduce the angle (1), find the side of the separatrix (2), the constants of the
  * regime (3a, 3b or init_separatrix), the rates in quarter periods (4). */
-static int exact_init_dd(PendulumExact *ex, double theta0, double omega0, EllipticDD w0, double t0,
+static int exact_init_dd(PendulumExact *ex, double theta0, double omega0, DoubleDouble w0, double t0,
                          double g, double L)
 {
     PendulumExact e;
@@ -512,7 +499,7 @@ static int exact_init_dd(PendulumExact *ex, double theta0, double omega0, Ellipt
     locate_separatrix(theta0, omega0, w0, g, L, &st);
     const double side = st.fine ? st.m1_fine.hi : st.gap.hi;   /* the sign of m1 */
 
-    EllipticDD rate_n = elliptic_dd(0.0);
+    DoubleDouble rate_n = dd_of(0.0);
     int status = 1;                        /* 1: the separatrix */
     if (side > 0.0) {
         status = init_libration(&e, omega0, w0, &st, &rate_n);
@@ -537,7 +524,7 @@ int pendulum_exact_init(PendulumExact *ex, double theta0, double omega0, double 
         || !(w0 > 0.0)) {
         return -1;
     }
-    return exact_init_dd(ex, theta0, omega0, elliptic_dd(w0), t0, 0.0, 0.0);
+    return exact_init_dd(ex, theta0, omega0, dd_of(w0), t0, 0.0, 0.0);
 }
 
 int pendulum_exact_init_gl(PendulumExact *ex, double theta0, double omega0, double g, double L, double t0)
@@ -550,14 +537,14 @@ int pendulum_exact_init_gl(PendulumExact *ex, double theta0, double omega0, doub
      * the one of those doubles, not of fl(sqrt(fl(g / L))) (whose two roundings moved states
      * within ~1e-16 of the separatrix to the other side). Scaled by powers of two so that
      * neither the quotient nor Dekker's split overflows or underflows. */
-    const int eg = elliptic_frexp_exponent(g), eL = elliptic_frexp_exponent(L);
-    const double gm = elliptic_ldexp(g, -eg), Lm = elliptic_ldexp(L, -eL);   /* frexp's fractions */
+    const int eg = dd_frexp_exponent(g), eL = dd_frexp_exponent(L);
+    const double gm = dd_scalbn(g, -eg), Lm = dd_scalbn(L, -eL);   /* frexp's fractions */
     int shift = eg - eL;                               /* g / L = (gm / Lm) 2^shift */
     if (shift & 1) {
         shift -= 1;                                    /* even, so that the root halves it */
     }
-    const EllipticDD ratio = elliptic_dd_div(elliptic_dd(elliptic_ldexp(gm, eg - eL - shift)), elliptic_dd(Lm));
-    EllipticDD w0 = dd_ldexp(elliptic_dd_sqrt(ratio), shift / 2);
+    const DoubleDouble ratio = dd_div(dd_of(dd_scalbn(gm, eg - eL - shift)), dd_of(Lm));
+    DoubleDouble w0 = dd_ldexp(dd_sqrt(ratio), shift / 2);
     if (!(w0.hi > 0.0) || !isfinite(w0.hi)) {
         return -1;                                     /* g / L overflows or underflows */
     }
@@ -593,7 +580,7 @@ int pendulum_exact_resolvable(const PendulumExact *ex, double t)
  * exact), so f keeps its absolute accuracy (~1e-16) up to PENDULUM_EXACT_MAX_QUARTERS, where
  * the rate's own precision (~2^-102 relative) becomes the limit. This is the branch from 2^50
  * quarter periods on (phase_at has the one below, inline). */
-static double phase_quarters_far(const PendulumExact *ex, EllipticDD tau, EllipticDD *N)
+static double phase_quarters_far(const PendulumExact *ex, DoubleDouble tau, DoubleDouble *N)
 {
     double rho_hi = ex->rho_hi, rho_lo = ex->rho_lo;
     if (fabs(tau.hi) > 0x1p900) {
@@ -602,18 +589,18 @@ static double phase_quarters_far(const PendulumExact *ex, EllipticDD tau, Ellipt
         rho_hi = ldexp(rho_hi, 200);
         rho_lo = ldexp(rho_lo, 200);
     }
-    const EllipticDD a = elliptic_two_prod(rho_hi, tau.hi);   /* the leading product */
-    const EllipticDD b = elliptic_two_prod(rho_lo, tau.hi);   /* ~2^-53 of it */
-    const EllipticDD c = elliptic_two_prod(rho_hi, tau.lo);   /* ~2^-53 of it */
-    const double n_a = elliptic_nearest_integer(a.hi), n_al = elliptic_nearest_integer(a.lo);
-    const double n_b = elliptic_nearest_integer(b.hi), n_c = elliptic_nearest_integer(c.hi);
-    const double n_x = elliptic_nearest_integer(ex->x0_hi);
+    const DoubleDouble a = dd_two_prod(rho_hi, tau.hi);   /* the leading product */
+    const DoubleDouble b = dd_two_prod(rho_lo, tau.hi);   /* ~2^-53 of it */
+    const DoubleDouble c = dd_two_prod(rho_hi, tau.lo);   /* ~2^-53 of it */
+    const double n_a = dd_nearest_integer(a.hi), n_al = dd_nearest_integer(a.lo);
+    const double n_b = dd_nearest_integer(b.hi), n_c = dd_nearest_integer(c.hi);
+    const double n_x = dd_nearest_integer(ex->x0_hi);
     const double small = ((b.lo + c.lo) + rho_lo * tau.lo) + ex->x0_lo;
     const double fraction = ((a.hi - n_a) + (ex->x0_hi - n_x))
                             + (((small + (a.lo - n_al)) + (b.hi - n_b)) + (c.hi - n_c));
-    const double n_f = elliptic_nearest_integer(fraction);
+    const double n_f = dd_nearest_integer(fraction);
     /* the small integers sum exactly (each well below 2^50 while |x| <= 2^60) */
-    *N = elliptic_two_sum(n_a, (((n_al + n_b) + n_c) + n_x) + n_f);
+    *N = dd_two_sum(n_a, (((n_al + n_b) + n_c) + n_x) + n_f);
     return fraction - n_f;
 }
 
@@ -625,9 +612,9 @@ static double phase_quarters_far(const PendulumExact *ex, EllipticDD tau, Ellipt
  * rho_hi split once in init (Dekker) or by the fma, is all the work; a phase within 2^50
  * quarter periods is resolvable (2^50 < PENDULUM_EXACT_MAX_QUARTERS, and a time that is not
  * finite fails |x_hi| < 2^50 as rho_hi > 0). */
-static inline int phase_at(const PendulumExact *ex, double t, double *f, EllipticDD *N)
+static inline int phase_at(const PendulumExact *ex, double t, double *f, DoubleDouble *N)
 {
-    const EllipticDD tau = elliptic_two_sum(t, -ex->t0);
+    const DoubleDouble tau = dd_two_sum(t, -ex->t0);
     const double x_hi = ex->rho_hi * tau.hi;
     if (fabs(x_hi) < 0x1p50) {
 #ifdef FP_FAST_FMA
@@ -638,8 +625,8 @@ static inline int phase_at(const PendulumExact *ex, double t, double *f, Ellipti
         const double x_lo = ((ex->rho_head * tau_head - x_hi) + ex->rho_head * tau_tail
                              + ex->rho_tail * tau_head) + ex->rho_tail * tau_tail;
 #endif
-        const double quarters = elliptic_nearest_integer(x_hi + ex->x0_hi);
-        *N = elliptic_dd(quarters);
+        const double quarters = dd_nearest_integer(x_hi + ex->x0_hi);
+        *N = dd_of(quarters);
         /* x_hi - quarters is exact once quarters exceeds a few (Sterbenz); below, all is small */
         *f = ((x_hi - quarters) + ex->x0_hi)
              + (x_lo + (ex->rho_hi * tau.lo + ex->rho_lo * tau.hi) + ex->x0_lo);
@@ -654,20 +641,20 @@ static inline int phase_at(const PendulumExact *ex, double t, double *f, Ellipti
 
 /* half_turns pi + angle, for an integer-valued double-double half_turns (|half_turns| < 2^64):
  * half_turns.hi pi_hi exact (two-product), the remaining products below its rounding. */
-static double add_half_turns(EllipticDD half_turns, double angle)
+static double add_half_turns(DoubleDouble half_turns, double angle)
 {
     if (half_turns.hi == 0.0 && half_turns.lo == 0.0) {
         return angle;
     }
-    const EllipticDD turn = elliptic_two_prod(half_turns.hi, PI_HI);
+    const DoubleDouble turn = dd_two_prod(half_turns.hi, PI_HI);
     return turn.hi + (turn.lo + (half_turns.hi * PI_LO + (half_turns.lo * PI_HI + angle)));
 }
 
 void pendulum_exact_eval(const PendulumExact *ex, double t, double *theta, double *omega)
 {
     double angle, om, f = 0.0;
-    EllipticDD n = elliptic_dd(0.0);
-    EllipticDD winding = elliptic_dd(0.0);   /* half turns of a rotation since t0: direction N */
+    DoubleDouble n = dd_of(0.0);
+    DoubleDouble winding = dd_of(0.0);   /* half turns of a rotation since t0: direction N */
 
     if (t == ex->t0) {
         *theta = ex->theta0;   /* the initial state as given, bit for bit */
@@ -705,11 +692,11 @@ void pendulum_exact_eval(const PendulumExact *ex, double t, double *theta, doubl
         const double delta = elliptic_atan_ratio((even + odd * ex->kc) * S, C);
         const double dn_num = even * E + odd * (ex->kc * D), den = even * D + odd * E;
         /* theta = 2 pi j + direction (n pi + 2 delta), omega = 2 sqrt(m) w0 dn(nK + r) */
-        winding = ex->direction < 0.0 ? elliptic_dd_neg(n) : n;
+        winding = ex->direction < 0.0 ? dd_neg(n) : n;
         angle = 2.0 * ex->direction * delta;
         om = 2.0 * (ex->direction * ex->omega_half * (dn_num / den));
     } else if (ex->direction != 0.0) {
-        EllipticDD tau = elliptic_two_sum(t, -ex->t0);
+        DoubleDouble tau = dd_two_sum(t, -ex->t0);
         double u = ex->scale * tau.hi + ((ex->scale * tau.lo + ex->scale_lo * tau.hi) + ex->u0);
         angle = 2.0 * ex->direction * atan(sinh(u));          /* gd(u) */
         om = 2.0 * (ex->direction * (ex->omega_half / cosh(u)));   /* 2 w0 sech u */
@@ -722,9 +709,9 @@ void pendulum_exact_eval(const PendulumExact *ex, double t, double *theta, doubl
     if (fabs(ex->theta_turns) < 0x1p50) {
         /* without winding (no rotation) the half turns are 2 j itself (exact): adding a
          * double-double 0 would change no bit */
-        const EllipticDD half_turns = ex->regime == PENDULUM_ROTATION
-                                          ? elliptic_dd_add(elliptic_dd(2.0 * ex->theta_turns), winding)
-                                          : elliptic_dd(2.0 * ex->theta_turns);
+        const DoubleDouble half_turns = ex->regime == PENDULUM_ROTATION
+                                          ? dd_add(dd_of(2.0 * ex->theta_turns), winding)
+                                          : dd_of(2.0 * ex->theta_turns);
         *theta = add_half_turns(half_turns, angle);
     } else {
         /* theta0 beyond 2^52 rad, where no angle is resolved (its ulp is 1 rad or more):
@@ -759,7 +746,7 @@ static int eval_libration_lanes(const PendulumExact *ex, const double *t, double
     const double t0 = ex->t0, rho_hi = ex->rho_hi, rho_lo = ex->rho_lo, x0_hi = ex->x0_hi, x0_lo = ex->x0_lo;
     double tau_hi[EXACT_LANES], tau_lo[EXACT_LANES], x_hi[EXACT_LANES];
     for (int l = 0; l < EXACT_LANES; ++l) {
-        const EllipticDD tau = elliptic_two_sum(t[l], -t0);
+        const DoubleDouble tau = dd_two_sum(t[l], -t0);
         tau_hi[l] = tau.hi;
         tau_lo[l] = tau.lo;
         x_hi[l] = rho_hi * tau.hi;
@@ -784,7 +771,7 @@ static int eval_libration_lanes(const PendulumExact *ex, const double *t, double
         const double x_lo = ((ex->rho_head * tau_head - x_hi[l]) + ex->rho_head * tau_tail
                              + ex->rho_tail * tau_head) + ex->rho_tail * tau_tail;
 #endif
-        /* elliptic_nearest_integer: |x_hi + x0_hi| < 2^50 + 2 here */
+        /* dd_nearest_integer: |x_hi + x0_hi| < 2^50 + 2 here */
         const double quarters = (x_hi[l] + x0_hi + 0x1.8p52) - 0x1.8p52;
         const double fraction = ((x_hi[l] - quarters) + x0_hi)
                                 + (x_lo + (rho_hi * tau_lo[l] + rho_lo * tau_hi[l]) + x0_lo);
@@ -829,9 +816,9 @@ static int eval_libration_lanes(const PendulumExact *ex, const double *t, double
         }
     }
     const double kk = p->landen_k[0], one_plus = p->landen_1pk[0], one_minus = p->landen_1mk[0];
-    const EllipticDD half_turns = elliptic_dd_add(elliptic_dd(2.0 * ex->theta_turns), elliptic_dd(0.0));
+    const DoubleDouble half_turns = dd_add(dd_of(2.0 * ex->theta_turns), dd_of(0.0));
     const int whole = half_turns.hi == 0.0 && half_turns.lo == 0.0;   /* the same for every lane */
-    const EllipticDD turn = elliptic_two_prod(half_turns.hi, PI_HI);
+    const DoubleDouble turn = dd_two_prod(half_turns.hi, PI_HI);
     const double turn_lo = half_turns.hi * PI_LO, half_turns_lo_pi = half_turns.lo * PI_HI;
     const double sqrt_k1 = ex->sqrt_k1, kc = ex->kc, omega_half = ex->omega_half;
     double angle[EXACT_LANES];
@@ -884,7 +871,7 @@ void pendulum_exact_eval_many(const PendulumExact *ex, size_t n, const double *t
 const char *pendulum_exact_qualitative_miss(const PendulumExact *ex, double theta, double omega)
 {
     /* the libration (and the separatrix motion) is centred on the bottom 2 pi j nearest theta0 */
-    const EllipticDD centre = elliptic_two_prod(2.0 * ex->theta_turns, PI_HI);
+    const DoubleDouble centre = dd_two_prod(2.0 * ex->theta_turns, PI_HI);
     const double offset = (theta - centre.hi) - (centre.lo + 2.0 * ex->theta_turns * PI_LO);
     /* past the top by more than half a radian: fallen down the other side, not a rounding-level
      * excursion of a state released at the top itself (pi as a double lies 1.2e-16 below it) */
@@ -926,13 +913,13 @@ void pendulum_exact_sin_cos(const PendulumExact *ex, double t, double *sin_theta
     }
     if (ex->regime == PENDULUM_SEPARATRIX) {
         /* theta = 2 pi j + 2 d gd(u): sin(gd u) = tanh u, cos(gd u) = sech u */
-        const EllipticDD tau = elliptic_two_sum(t, -ex->t0);
+        const DoubleDouble tau = dd_two_sum(t, -ex->t0);
         const double u = ex->scale * tau.hi + ((ex->scale * tau.lo + ex->scale_lo * tau.hi) + ex->u0);
         y = tanh(u);
         x = 1.0 / cosh(u);
         sign = ex->direction;
     } else {
-        EllipticDD n;
+        DoubleDouble n;
         double S, C, E, D, f;
         const int quarter = phase_at(ex, t, &f, &n);   /* resolvable: checked above */
         elliptic_sncndn_homogeneous(&ex->ell, f * ex->K_hi, &S, &C, &E, &D);   /* sn r = S/D, ... */

@@ -1,5 +1,5 @@
-/* test_dd_trig.c: the double-double sin and cos of the exact port's set-up (elliptic.c:
- * elliptic_dd_sincos, and elliptic_dd_cos_sin with cos in double-double and sin in double)
+/* test_dd_trig.c: the double-double sin and cos of the exact port's set-up (dd.c: dd_sincos,
+ * and dd_cos_sin with cos in double-double and sin in double)
  * against mpmath at 300 bits, at arguments on both sides of every switch-over: the number J
  * of leading terms summed in double-double changes with |y| (y = x reduced by pi/2), and the
  * reduction by pi/2 turns at |y| = pi/4. Double-double results within 1e-30 relative (or
@@ -9,7 +9,7 @@
 #include <stdio.h>
 
 #include "check.h"
-#include "elliptic.h"
+#include "dd.h"
 
 /* {x, sin hi, sin lo, cos hi, cos lo}, from mpmath at 300 bits (x taken exactly as a double) */
 static const double TABLE[][5] = {
@@ -204,7 +204,7 @@ static const double TABLE[][5] = {
     {-0x1.8cccccccccccdp+2, 0x1.54558dbbecd1dp-4, 0x1.3e0283625cce4p-58, 0x1.fe3ac4079a9cep-1, -0x1.52eb840edcafbp-57},};
 
 /* |value - ref| for a double-double value and reference */
-static double abs_error(EllipticDD value, double ref_hi, double ref_lo)
+static double abs_error(DoubleDouble value, double ref_hi, double ref_lo)
 {
     return fabs((value.hi - ref_hi) + (value.lo - ref_lo));
 }
@@ -219,25 +219,25 @@ int main(void)
 {
     for (size_t i = 0; i < sizeof TABLE / sizeof TABLE[0]; ++i) {
         const double *row = TABLE[i];
-        const EllipticDD x = {row[0], 0.0};
-        EllipticDD s, c, c2;
+        const DoubleDouble x = {row[0], 0.0};
+        DoubleDouble s, c, c2;
         double s_double;
-        elliptic_dd_sincos(x, &s, &c);
-        elliptic_dd_cos_sin(x, &c2, &s_double);
+        dd_sincos(x, &s, &c);
+        dd_cos_sin(x, &c2, &s_double);
         check(abs_error(s, row[1], row[2]) <= tolerance(row[1]), "dd sin(%a) off by %.3g", row[0],
               abs_error(s, row[1], row[2]));
         check(abs_error(c, row[3], row[4]) <= tolerance(row[3]), "dd cos(%a) off by %.3g", row[0],
               abs_error(c, row[3], row[4]));
-        check(abs_error(c2, row[3], row[4]) <= tolerance(row[3]), "cos of elliptic_dd_cos_sin(%a) off by %.3g",
+        check(abs_error(c2, row[3], row[4]) <= tolerance(row[3]), "cos of dd_cos_sin(%a) off by %.3g",
               row[0], abs_error(c2, row[3], row[4]));
         const double ulp = nextafter(fabs(row[1]), INFINITY) - fabs(row[1]);
-        check(fabs(s_double - (row[1] + row[2])) <= 2.0 * ulp + 1e-300, "sin of elliptic_dd_cos_sin(%a) = %a, ref %a",
+        check(fabs(s_double - (row[1] + row[2])) <= 2.0 * ulp + 1e-300, "sin of dd_cos_sin(%a) = %a, ref %a",
               row[0], s_double, row[1]);
     }
-    EllipticDD s, c;
+    DoubleDouble s, c;
     double s_double;
-    elliptic_dd_cos_sin((EllipticDD){INFINITY, 0.0}, &c, &s_double);
-    elliptic_dd_sincos((EllipticDD){NAN, 0.0}, &s, &c);
+    dd_cos_sin((DoubleDouble){INFINITY, 0.0}, &c, &s_double);
+    dd_sincos((DoubleDouble){NAN, 0.0}, &s, &c);
     check(isnan(s_double) && isnan(s.hi) && isnan(c.hi), "not finite in, NaN out");
     return check_summary("test_dd_trig");
 }

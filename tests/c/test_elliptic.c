@@ -1,4 +1,7 @@
-/* test_elliptic.c: checks of fmu_src/elliptic.{h,c} against tabulated values and identities.
+/* test_elliptic.c: checks of fmu_src/math/elliptic.{h,c} and the double-double arithmetic of
+ * dd.h against tabulated values and identities. sn, cn, dn, am and F of any argument are
+ * composed here (sncndn, amplitude, incomplete_F below) from what the exact solution uses:
+ * the reduction, the Landen kernels, the quarter-period table, the atan and R_F.
  *
  * Tabulated values were generated once with mpmath 1.4.1 at 50-80 significant digits
  * (K = pi / (2 agm(1, sqrt(m1))), mpmath.ellipfun, ellipf, elliprf, sin, cos), at the
@@ -14,6 +17,85 @@
 #include "elliptic.h"
 #include "check.h"
 
+/* pi/2 in two parts */
+#define HALF_PI_HI (0.5 * DD_PI_HI)
+#define HALF_PI_LO (0.5 * DD_PI_LO)
+
+/* sn(u|m), cn(u|m), dn(u|m) for any real u: reduction to u = n K + r, then by n mod 4
+ * (A&S 16.8.1-3 and the table of A&S 16.8 for shifts by K, 2K, 3K):
+ *   n = 0: ( sn r,          cn r,              dn r      )
+ *   n = 1: ( cn r / dn r,  -k' sn r / dn r,    k' / dn r )
+ *   n = 2: (-sn r,         -cn r,              dn r      )
+ *   n = 3: (-cn r / dn r,   k' sn r / dn r,    k' / dn r ) */
+static void sncndn(const EllipticParam *p, double u, double *sn, double *cn, double *dn)
+{
+    double n, S, C, E, D;
+    const double r = elliptic_reduce(p, u, 0.0, &n);
+    elliptic_sncndn_homogeneous(p, r, &S, &C, &E, &D);
+    switch (elliptic_quarter_of(n)) {
+    case 0:
+        *sn = S / D;
+        *cn = C / D;
+        *dn = E / D;
+        break;
+    case 1:
+        *sn = C / E;
+        *cn = -p->kc * S / E;
+        *dn = p->kc * D / E;
+        break;
+    case 2:
+        *sn = -S / D;
+        *cn = -C / D;
+        *dn = E / D;
+        break;
+    default:
+        *sn = -C / E;
+        *cn = p->kc * S / E;
+        *dn = p->kc * D / E;
+        break;
+    }
+}
+
+/* The amplitude am(u|m), continuous and increasing in u (am(u + 2K) = am(u) + pi, A&S 16.1.5):
+ * am(n K + r) = n pi/2 + atan2(sn r, cn r) for n even, n pi/2 + atan2(k' sn r, cn r) for n odd
+ * (from the table above; cn r > 0 for |r| < K). */
+static double amplitude(const EllipticParam *p, double u)
+{
+    double n, S, C, E, D;
+    const double r = elliptic_reduce(p, u, 0.0, &n);
+    elliptic_sncndn_homogeneous(p, r, &S, &C, &E, &D);
+    const double delta = elliptic_atan_ratio((elliptic_quarter_of(n) & 1) ? p->kc * S : S, C);
+    return fma(n, HALF_PI_HI, fma(n, HALF_PI_LO, delta));
+}
+
+/* K(m) from m1 as a double (the double-double K rounded). */
+static double complete_K(double m1)
+{
+    return elliptic_K_dd(dd_of(m1)).hi;
+}
+
+/* F(phi | m), any real phi, 0 <= m <= 1: F(psi | m) = sin psi R_F(cos^2 psi,
+ * cos^2 psi + m1 sin^2 psi, 1) for |psi| <= pi/2 (DLMF 19.25.5), continued by
+ * F(psi + n pi | m) = F(psi | m) + 2 n K(m) (A&S 17.4.3); F(phi | 1) = asinh(tan phi) for
+ * |phi| < pi/2 (A&S 17.4.21). */
+static double incomplete_F(double phi, double m, double m1)
+{
+    if (isnan(phi) || !(m >= 0.0 && m <= 1.0) || !(m1 >= 0.0 && m1 <= 1.0)) {
+        return NAN;
+    }
+    if (m1 == 0.0) {
+        return fabs(phi) >= HALF_PI_HI ? copysign(INFINITY, phi) : asinh(tan(phi));
+    }
+    const double n = nearbyint(phi / DD_PI_HI);
+    const double psi = fma(-n, DD_PI_LO, fma(-n, DD_PI_HI, phi));   /* phi - n pi, pi in two parts */
+    const double s = sin(psi), c = cos(psi);
+    double f = s * elliptic_RF(c * c, c * c + m1 * s * s, 1.0);
+    if (n != 0.0) {
+        const DoubleDouble K = elliptic_K_dd(dd_of(m1));
+        f = fma(2.0 * n, K.hi, fma(2.0 * n, K.lo, f));
+    }
+    return f;
+}
 
 static EllipticParam param(double m, double m1)
 {
@@ -44,19 +126,17 @@ static void test_complete_integral(void)
 {
     for (size_t i = 0; i < sizeof K_TABLE / sizeof K_TABLE[0]; ++i) {
         const double m1 = K_TABLE[i][0], ref_hi = K_TABLE[i][1], ref_lo = K_TABLE[i][2];
-        double K = elliptic_K(m1);
-        check(fabs(K - ref_hi) <= 4.5e-16 * ref_hi, "K(m1=%g) = %.17g, ref %.17g", m1, K, ref_hi);
-        EllipticDD m1_dd = {m1, 0.0};
-        EllipticDD K_dd = elliptic_K_dd(m1_dd);
+        DoubleDouble m1_dd = {m1, 0.0};
+        DoubleDouble K_dd = elliptic_K_dd(m1_dd);
         double err = (K_dd.hi - ref_hi) + (K_dd.lo - ref_lo);
         check(fabs(err) <= 1e-30 * ref_hi, "K_dd(m1=%g) off by %.3g", m1, err);
     }
-    /* K(0) = pi/2 (A&S 17.3.11): to the last bit in double, and in double-double. */
-    check(elliptic_K(1.0) == PI / 2.0, "K(0) = %.17g", elliptic_K(1.0));
-    check(isinf(elliptic_K(0.0)) && elliptic_K(0.0) > 0.0, "K(1) = +inf");
-    check(isnan(elliptic_K(-1e-3)) && isnan(elliptic_K(NAN)), "K of m1 < 0 or NaN is NaN");
-    EllipticDD zero = {0.0, 0.0};
-    check(isinf(elliptic_K_dd(zero).hi), "K_dd(m1 = 0) = +inf");
+    /* K(0) = pi/2 (A&S 17.3.11): to the last bit. */
+    const DoubleDouble K_at_zero = elliptic_K_dd(dd_of(1.0));
+    check(K_at_zero.hi == HALF_PI_HI && K_at_zero.lo == HALF_PI_LO, "K(0) = %a + %a", K_at_zero.hi,
+          K_at_zero.lo);
+    check(isinf(complete_K(0.0)) && complete_K(0.0) > 0.0, "K(1) = +inf");
+    check(isnan(complete_K(-1e-3)) && isnan(complete_K(NAN)), "K of m1 < 0 or NaN is NaN");
 }
 
 /* ---- sn, cn, dn, am ------------------------------------------------------------------------ */
@@ -95,8 +175,8 @@ static void test_jacobi_table(void)
         const double u = row[0];
         EllipticParam p = param(row[1], row[2]);
         double sn, cn, dn;
-        elliptic_sncndn(&p, u, &sn, &cn, &dn);
-        double am = elliptic_am(&p, u);
+        sncndn(&p, u, &sn, &cn, &dn);
+        double am = amplitude(&p, u);
         /* absolute: a few ulps of the reduced argument (|r| <= K/2) and of u itself */
         const double tol = 2e-15 + 2.5e-16 * fabs(u);
         check(fabs(sn - row[3]) <= tol, "sn(%g | m1=%g) = %.17g, ref %.17g", u, row[2], sn, row[3]);
@@ -126,7 +206,7 @@ static void test_jacobi_identities(void)
         for (int i = 0; i <= 60; ++i) {
             const double u = -3.0 * K + 8.0 * K * i / 60.0 + 0.0123;
             double sn, cn, dn;
-            elliptic_sncndn(&p, u, &sn, &cn, &dn);
+            sncndn(&p, u, &sn, &cn, &dn);
             /* A&S 16.9.1: sn^2 + cn^2 = 1, dn^2 + m sn^2 = 1 */
             check(fabs(sn * sn + cn * cn - 1.0) <= 4e-15, "sn^2+cn^2-1 = %.3g (u=%g, m1=%g)",
                   sn * sn + cn * cn - 1.0, u, m1);
@@ -139,11 +219,11 @@ static void test_jacobi_identities(void)
                   (dn * dn - rhs) / rhs, u, m1);
             /* parity: sn odd, cn and dn even, exactly */
             double sn_neg, cn_neg, dn_neg;
-            elliptic_sncndn(&p, -u, &sn_neg, &cn_neg, &dn_neg);
+            sncndn(&p, -u, &sn_neg, &cn_neg, &dn_neg);
             check(sn_neg == -sn && cn_neg == cn && dn_neg == dn, "parity at u=%g, m1=%g", u, m1);
             /* quarter period, A&S 16.8.1-3: sn(u+K) = cd u, cn(u+K) = -k' sd u, dn(u+K) = k'/dn u */
             double sn_k, cn_k, dn_k;
-            elliptic_sncndn(&p, u + K, &sn_k, &cn_k, &dn_k);
+            sncndn(&p, u + K, &sn_k, &cn_k, &dn_k);
             const double tol_shift = 4e-15 + 4e-16 * (fabs(u) + K);
             check(fabs(sn_k - cn / dn) <= tol_shift, "sn(u+K) - cd u = %.3g (u=%g, m1=%g)",
                   sn_k - cn / dn, u, m1);
@@ -152,13 +232,13 @@ static void test_jacobi_identities(void)
             check(fabs(dn_k * dn - kc) <= 1e-12 * kc + 1e-300, "dn(u+K) dn(u) / k' - 1 = %.3g (u=%g, m1=%g)",
                   dn_k * dn / kc - 1.0, u, m1);
             /* half period: am(u + 2K) = am(u) + pi (A&S 16.1.5 ff.) */
-            double am = elliptic_am(&p, u), am_2k = elliptic_am(&p, u + 2.0 * K);
+            double am = amplitude(&p, u), am_2k = amplitude(&p, u + 2.0 * K);
             check(fabs(am_2k - am - PI) <= 1e-14 + 4e-16 * (fabs(u) + 2.0 * K),
                   "am(u+2K) - am(u) - pi = %.3g (u=%g, m1=%g)", am_2k - am - PI, u, m1);
             /* F(am u | m) = u (A&S 17.2.7 inverse); F is ill-conditioned where dn is small
              * (F' = 1/dn), so the tolerance is a few ulps of am divided by dn */
             if (m1 >= 1e-8) {
-                double f = elliptic_F(am, m, m1);
+                double f = incomplete_F(am, m, m1);
                 check(fabs(f - u) <= 1e-15 * (fabs(u) + 4.0) / dn, "F(am u) - u = %.3g (u=%g, m1=%g)",
                       f - u, u, m1);
             }
@@ -168,9 +248,9 @@ static void test_jacobi_identities(void)
             for (int b = 0; b < 9; ++b) {
                 const double u = -1.7 * K + 0.41 * K * a, v = 0.37 * K * b - 1.1 * K;
                 double snu, cnu, dnu, snv, cnv, dnv, snw, cnw, dnw;
-                elliptic_sncndn(&p, u, &snu, &cnu, &dnu);
-                elliptic_sncndn(&p, v, &snv, &cnv, &dnv);
-                elliptic_sncndn(&p, u + v, &snw, &cnw, &dnw);
+                sncndn(&p, u, &snu, &cnu, &dnu);
+                sncndn(&p, v, &snv, &cnv, &dnv);
+                sncndn(&p, u + v, &snw, &cnw, &dnw);
                 const double den = 1.0 - m * snu * snu * snv * snv;
                 if (den < 0.1) {
                     continue;   /* the formula itself cancels there */
@@ -191,14 +271,14 @@ static void test_parameter_one(void)
     for (int i = -20; i <= 20; ++i) {
         const double u = 0.37 * i;
         double sn, cn, dn;
-        elliptic_sncndn(&p, u, &sn, &cn, &dn);
+        sncndn(&p, u, &sn, &cn, &dn);
         check(fabs(sn - tanh(u)) <= 3e-16 && fabs(cn - 1.0 / cosh(u)) <= 3e-16 * (1.0 / cosh(u)) + 1e-300
                   && cn == dn,
               "m = 1 at u = %g: %.17g %.17g %.17g", u, sn, cn, dn);
-        check(fabs(elliptic_am(&p, u) - 2.0 * atan(tanh(0.5 * u))) <= 4e-16, "am(u | 1) = gd(u) at %g", u);
+        check(fabs(amplitude(&p, u) - 2.0 * atan(tanh(0.5 * u))) <= 4e-16, "am(u | 1) = gd(u) at %g", u);
     }
     double sn, cn, dn;
-    elliptic_sncndn(&p, 800.0, &sn, &cn, &dn);
+    sncndn(&p, 800.0, &sn, &cn, &dn);
     check(sn == 1.0 && cn == 0.0 && dn == 0.0, "m = 1, u = 800: no overflow (%g %g %g)", sn, cn, dn);
 }
 
@@ -225,7 +305,7 @@ static void test_reduction(void)
     static const double quarters[] = {0.0, 1.0, 3.0, -7.0, 12345.0, 4e6, 6.7e7};
     for (size_t i = 0; i < sizeof quarters / sizeof quarters[0]; ++i) {
         const double n = quarters[i], r = 0.3 * K;
-        EllipticDD nk = elliptic_two_prod(n, K);
+        DoubleDouble nk = dd_two_prod(n, K);
         double u_hi = nk.hi + r;
         double u_lo = (nk.hi - u_hi + r) + nk.lo + n * p.K_lo;
         double got_n;
@@ -264,7 +344,7 @@ static void test_incomplete_integral(void)
 {
     for (size_t i = 0; i < sizeof F_TABLE / sizeof F_TABLE[0]; ++i) {
         const double *row = F_TABLE[i];
-        double f = elliptic_F(row[0], row[1], row[2]);
+        double f = incomplete_F(row[0], row[1], row[2]);
         check(fabs(f - row[3]) <= 1e-15 * fabs(row[3]), "F(%g | m1=%g) = %.17g, ref %.17g", row[0], row[2],
               f, row[3]);
     }
@@ -275,23 +355,23 @@ static void test_incomplete_integral(void)
               row[2], rf, row[3]);
     }
     /* R_F(0, k'^2, 1) = K (DLMF 19.25.1) */
-    check(fabs(elliptic_RF(0.0, 0.5, 1.0) - elliptic_K(0.5)) <= 5e-16 * elliptic_K(0.5), "RF(0, m1, 1) = K");
+    check(fabs(elliptic_RF(0.0, 0.5, 1.0) - complete_K(0.5)) <= 5e-16 * complete_K(0.5), "RF(0, m1, 1) = K");
     check(isinf(elliptic_RF(0.0, 0.0, 1.0)), "RF with two zero arguments is +inf");
     check(isnan(elliptic_RF(-1.0, 1.0, 1.0)), "RF with a negative argument is NaN");
     /* F(phi + pi) = F(phi) + 2K (A&S 17.4.3) and oddness */
-    const double m = 0.8, m1 = 0.2, K = elliptic_K(m1);
+    const double m = 0.8, m1 = 0.2, K = complete_K(m1);
     for (int i = -10; i <= 10; ++i) {
         const double phi = 0.29 * i;
-        const double f = elliptic_F(phi, m, m1);
-        check(fabs(elliptic_F(phi + PI, m, m1) - f - 2.0 * K) <= 1e-14, "F(phi + pi) = F + 2K at %g", phi);
-        check(elliptic_F(-phi, m, m1) == -f, "F odd at %g", phi);
+        const double f = incomplete_F(phi, m, m1);
+        check(fabs(incomplete_F(phi + PI, m, m1) - f - 2.0 * K) <= 1e-14, "F(phi + pi) = F + 2K at %g", phi);
+        check(incomplete_F(-phi, m, m1) == -f, "F odd at %g", phi);
     }
-    check(fabs(elliptic_F(PI / 2.0, m, m1) - K) <= 5e-16 * K, "F(pi/2) = K");
-    check(fabs(elliptic_F(0.3, 1.0, 0.0) - asinh(tan(0.3))) <= 3e-16, "F(phi | 1) = asinh(tan phi)");
-    check(isinf(elliptic_F(2.0, 1.0, 0.0)), "F(phi >= pi/2 | 1) is infinite");
+    check(fabs(incomplete_F(PI / 2.0, m, m1) - K) <= 5e-16 * K, "F(pi/2) = K");
+    check(fabs(incomplete_F(0.3, 1.0, 0.0) - asinh(tan(0.3))) <= 3e-16, "F(phi | 1) = asinh(tan phi)");
+    check(isinf(incomplete_F(2.0, 1.0, 0.0)), "F(phi >= pi/2 | 1) is infinite");
 }
 
-/* ---- double-double and the small kernels ------------------------------------------------- */
+/* ---- double-double (dd.h) and the small kernels ------------------------------------------------- */
 
 /* {x, sin hi, sin lo, cos hi, cos lo} from mpmath at 60 digits */
 static const double SINCOS_TABLE[][5] = {
@@ -306,28 +386,28 @@ static void test_double_double(void)
 {
     for (size_t i = 0; i < sizeof SINCOS_TABLE / sizeof SINCOS_TABLE[0]; ++i) {
         const double *row = SINCOS_TABLE[i];
-        EllipticDD x = {row[0], 0.0}, s, c;
-        elliptic_dd_sincos(x, &s, &c);
+        DoubleDouble x = {row[0], 0.0}, s, c;
+        dd_sincos(x, &s, &c);
         double err_s = (s.hi - row[1]) + (s.lo - row[2]);
         double err_c = (c.hi - row[3]) + (c.lo - row[4]);
         check(fabs(err_s) <= 1e-30 * fabs(row[1]), "dd sin(%g) off by %.3g", row[0], err_s);
         check(fabs(err_c) <= 1e-30 * fabs(row[3]), "dd cos(%g) off by %.3g", row[0], err_c);
     }
-    EllipticDD two = {2.0, 0.0}, three = {3.0, 0.0}, one = {1.0, 0.0};
-    EllipticDD root = elliptic_dd_sqrt(two);
-    EllipticDD square = elliptic_dd_mul(root, root);
+    DoubleDouble two = {2.0, 0.0}, three = {3.0, 0.0}, one = {1.0, 0.0};
+    DoubleDouble root = dd_sqrt(two);
+    DoubleDouble square = dd_mul(root, root);
     check(fabs((square.hi - 2.0) + square.lo) <= 1e-31, "dd sqrt(2)^2 = 2");
-    EllipticDD third = elliptic_dd_div(one, three);
-    EllipticDD back = elliptic_dd_mul(third, three);
+    DoubleDouble third = dd_div(one, three);
+    DoubleDouble back = dd_mul(third, three);
     check(fabs((back.hi - 1.0) + back.lo) <= 1e-31, "dd (1/3) * 3 = 1");
-    EllipticDD sum = elliptic_dd_add(third, elliptic_dd_mul(third, two));
+    DoubleDouble sum = dd_add(third, dd_mul(third, two));
     check(fabs((sum.hi - 1.0) + sum.lo) <= 1e-31, "dd 1/3 + 2/3 = 1");
-    EllipticDD p = elliptic_two_prod(1.0 + 0x1p-30, 1.0 - 0x1p-30);
+    DoubleDouble p = dd_two_prod(1.0 + 0x1p-30, 1.0 - 0x1p-30);
     check(p.hi == 1.0 && p.lo == -0x1p-60, "two_prod is exact");
-    EllipticDD q = elliptic_two_sum(1.0, 0x1p-60);
+    DoubleDouble q = dd_two_sum(1.0, 0x1p-60);
     check(q.hi == 1.0 && q.lo == 0x1p-60, "two_sum is exact");
-    check(elliptic_nearest_integer(2.5) == 2.0 && elliptic_nearest_integer(-3.5) == -4.0
-              && elliptic_nearest_integer(1e17) == 1e17 && elliptic_nearest_integer(-0.4) == 0.0,
+    check(dd_nearest_integer(2.5) == 2.0 && dd_nearest_integer(-3.5) == -4.0
+              && dd_nearest_integer(1e17) == 1e17 && dd_nearest_integer(-0.4) == 0.0,
           "nearest integer, ties to even");
 }
 
