@@ -10,12 +10,12 @@ and interpolating where its error meets the file's.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 
+from pendulum_fmu.judge import fixed_step
 from pendulum_fmu.judge.reading import Result
 from pendulum_fmu.judge.verdict import Experiment
 
@@ -90,78 +90,11 @@ def fit_parameters(t: np.ndarray, columns: dict[str, np.ndarray], experiment: Ex
     return Fit(theta_f, omega_f, math.exp(log_l), g, float(np.max(np.abs(scaled))))
 
 
-# --- fixed-step methods ------------------------------------------------------------------------
+# --- fixed-step methods: judge/fixed_step.py (a prefix rerun, then every row at once) -----------
 
-def _euler(f: Callable[[State], State], x: State, h: float) -> State:
-    d = f(x)
-    return (x[0] + h * d[0], x[1] + h * d[1])
-
-
-def _symplectic_euler(f: Callable[[State], State], x: State, h: float) -> State:
-    omega = x[1] + h * f(x)[1]
-    return (x[0] + h * omega, omega)
-
-
-def _heun(f: Callable[[State], State], x: State, h: float) -> State:
-    k1 = f(x)
-    k2 = f((x[0] + h * k1[0], x[1] + h * k1[1]))
-    return (x[0] + 0.5 * h * (k1[0] + k2[0]), x[1] + 0.5 * h * (k1[1] + k2[1]))
-
-
-def _rk4(f: Callable[[State], State], x: State, h: float) -> State:
-    k1 = f(x)
-    k2 = f((x[0] + 0.5 * h * k1[0], x[1] + 0.5 * h * k1[1]))
-    k3 = f((x[0] + 0.5 * h * k2[0], x[1] + 0.5 * h * k2[1]))
-    k4 = f((x[0] + h * k3[0], x[1] + h * k3[1]))
-    return (x[0] + h / 6 * (k1[0] + 2 * k2[0] + 2 * k3[0] + k4[0]),
-            x[1] + h / 6 * (k1[1] + 2 * k2[1] + 2 * k3[1] + k4[1]))
-
-
-METHODS: dict[str, Callable[[Callable[[State], State], State, float], State]] = {
-    "explicit Euler": _euler, "symplectic Euler": _symplectic_euler, "Heun (RK2)": _heun, "classic RK4": _rk4}
-
-
-@dataclass(frozen=True)
-class FixedStep:
-    """A fixed-step method that reproduces the file."""
-
-    method: str
-    step: float
-    agreement: float
-    """Largest |file - rerun| over theta and omega."""
-
-
-def identify_fixed_step(result: Result, experiment: Experiment, h: float, error: float) -> FixedStep | None:
-    """The first of :data:`METHODS` at step h, h/2, h/4 or h/10 that reproduces theta and
-    omega to 1e-3 of their error ``error`` against the exact solution (so the rerun explains
-    the error), else None."""
-    if "theta" not in result.values and "omega" not in result.values or error <= 0 or not math.isfinite(error):
-        return None
-    c = experiment.g / experiment.L
-
-    def f(x: State) -> State:
-        return (x[1], -c * math.sin(x[0]))
-
-    n = result.rows
-    if n > 20000 or result.time[0] != experiment.start_time:
-        return None
-    for method, advance in METHODS.items():
-        for parts in (1, 2, 4, 10):
-            x: State = (experiment.theta0, experiment.omega0)
-            trajectory = np.empty((n, 2))
-            trajectory[0] = x
-            step = h / parts
-            for k in range(1, n):
-                for _ in range(parts):
-                    x = advance(f, x, step)
-                trajectory[k] = x
-            worst = 0.0
-            for i, name in enumerate(("theta", "omega")):
-                if name in result.values:
-                    worst = max(worst, float(np.max(np.abs(result.values[name] - trajectory[:, i]))))
-            if worst <= 1e-3 * error:
-                return FixedStep(method, step, worst)
-    return None
+identify_fixed_step = fixed_step.identify_fixed_step
+FixedStep = fixed_step.FixedStep
+METHODS = fixed_step.METHODS
 
 
 # --- tolerance ---------------------------------------------------------------------------------
