@@ -259,8 +259,8 @@ def test_cli_exit_codes_json_and_plot(cs_run: np.ndarray, fmu_path: Path, tmp_pa
                      "--plot", str(tmp_path / "v.png"))
     assert done.returncode == 0, done.stdout + done.stderr
     lines = done.stdout.strip().splitlines()
-    assert [line.split()[0] for line in lines] == ["read", "experiment", "time", "exact", "theta", "omega",
-                                                    "isolated", "bound", "verdict"]
+    assert [line.split()[0] for line in lines] == ["experiment", "read", "experiment", "time", "exact", "theta",
+                                                    "omega", "isolated", "bound", "fmpy", "verdict"]
     assert lines[-1].split()[1] == "PASS:"
     report = json.loads((tmp_path / "v.json").read_text())
     assert report["passed"] is True and report["experiment"]["theta0"] == pytest.approx(THETA0)

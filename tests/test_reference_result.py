@@ -1,11 +1,15 @@
 """The reference result in extra/org.fmi-standard.fmi-ls-ref/ of both FMUs (built at build time
 by reference/write_reference_result.c): declared by its manifest, the FMU's own exact port on
 the default experiment's grid, independent mpmath agrees, and the FMU's Co-Simulation run
-stays within the stated 1e-6 rad of it."""
+stays within the stated 1e-6 rad of it. The manifest, the default experiment's ``.exp`` and
+``documentation/fmi-ls-ref.html`` as FMI-LS-REF 1.0.0-beta.1 and the ma-hs-experiments format
+lay them out."""
 
 from __future__ import annotations
 
 import io
+import posixpath
+import re
 import zipfile
 from pathlib import Path
 from xml.etree import ElementTree
@@ -19,6 +23,13 @@ from pendulum_fmu.bench.reference import closed_form, exact_frequency, max_abs_d
 FOLDER = "extra/org.fmi-standard.fmi-ls-ref/"
 LS = "{http://fmi-standard.org/fmi-ls-manifest}"
 STATED_CS_DEVIATION = 1e-6  # rad, as the manifest's description says
+LS_VERSION = "1.0.0-beta.1"
+LS_DESCRIPTION = "Layered Standard providing information on related files included in an FMU."
+"""The value the standard's manifest schema fixes for fmi-ls-description."""
+ROLE = re.compile(r"(document|requirement|specification|model|parameter|system|testcase"
+                  r"|experiment(/(smoke-test|validation|uncertainty-analysis))?|result|method|rationale|report"
+                  r"|request|delivery|configuration|signature|serialized-state(/.*)?|meta-data|other)")
+"""The roles the standard's manifest schema allows (its pattern for the role attribute)."""
 
 
 def _reference(fmu: Path) -> np.ndarray:
@@ -26,8 +37,8 @@ def _reference(fmu: Path) -> np.ndarray:
     manifest = ElementTree.fromstring(archive.read(FOLDER + "fmi-ls-manifest.xml"))
     assert manifest.tag == "fmiReferences"
     assert manifest.get(LS + "fmi-ls-name") == "org.fmi-standard.fmi-ls-ref"
-    (related,) = manifest.findall("Related")
-    assert (related.get("role"), related.get("type")) == ("result", "text/csv")
+    (related,) = [r for r in manifest.findall("Related") if r.get("role") == "result"]
+    assert related.get("type") == "text/csv"
     text = archive.read(FOLDER + related.get("source", "")).decode()
     return np.genfromtxt(io.StringIO(text), delimiter=",", names=True, deletechars="")
 
@@ -69,3 +80,54 @@ def test_both_fmus_carry_the_same_reference(fmu_path: Path, fmu3_path: Path) -> 
     assert read[0] == read[1]
     with pytest.raises(KeyError):
         zipfile.ZipFile(fmu_path).read("Pendulum_ref.csv")  # only under extra/
+
+
+def _related(archive: zipfile.ZipFile) -> dict[str, ElementTree.Element]:
+    manifest = ElementTree.fromstring(archive.read(FOLDER + "fmi-ls-manifest.xml"))
+    return {r.get("role", ""): r for r in manifest.findall("Related")}
+
+
+def test_manifest_follows_the_standard(fmu_any: Path) -> None:
+    archive = zipfile.ZipFile(fmu_any)
+    manifest = ElementTree.fromstring(archive.read(FOLDER + "fmi-ls-manifest.xml"))
+    assert (manifest.get(LS + "fmi-ls-version"), manifest.get(LS + "fmi-ls-description")) == (LS_VERSION, LS_DESCRIPTION)
+    names = set(archive.namelist())
+    related = manifest.findall("Related")
+    assert {r.get("role") for r in related} == {"result", "experiment/validation", "document"}
+    for entry in related:
+        assert ROLE.fullmatch(entry.get("role", "")), entry.get("role")
+        member = posixpath.normpath(posixpath.join(FOLDER, entry.get("source", "")))
+        assert member in names, member  # a relative source resolves against the manifest's folder
+        assert entry.get("description")
+
+
+def test_the_exp_file_is_the_default_experiment(fmu_any: Path) -> None:
+    archive = zipfile.ZipFile(fmu_any)
+    entry = _related(archive)["experiment/validation"]
+    assert entry.get("type") == "application/x-ma-hs-experiments" and entry.get("source", "").endswith(".exp")
+    root = ElementTree.fromstring(archive.read(FOLDER + entry.get("source", "")))
+    assert root.tag == "Experiments" and root.get("name")
+    (experiment,) = root.findall("Experiment")
+    assert experiment.get("name")
+    default = read_model_description(str(fmu_any)).defaultExperiment
+    for name in ("startTime", "stopTime", "stepSize", "tolerance"):
+        assert float(experiment.get(name, "nan")) == float(getattr(default, name)), name
+    (references,) = experiment.findall("References")
+    assert references.get("type", "text/csv") == "text/csv"
+    assert FOLDER + references.get("source", "") == FOLDER + _related(archive)["result"].get("source", "")
+    assert experiment.find("Parameters") is None  # the FMU's own start values: nothing to apply
+    reference = _reference(fmu_any)
+    assert (reference["time"][0], reference["time"][-1]) == (float(default.startTime), float(default.stopTime))
+
+
+def test_the_documentation_page_is_there_and_linked(fmu_any: Path) -> None:
+    archive = zipfile.ZipFile(fmu_any)
+    assert FOLDER + "../../documentation/fmi-ls-ref.html" not in archive.namelist()
+    assert posixpath.normpath(posixpath.join(FOLDER, _related(archive)["document"].get("source", ""))) == \
+        "documentation/fmi-ls-ref.html"
+    page = archive.read("documentation/fmi-ls-ref.html").decode()
+    default = read_model_description(str(fmu_any)).defaultExperiment
+    for text in ("Pendulum.exp", "experiment/validation", "Pendulum_ref.csv", LS_VERSION,
+                 f"tolerance {default.tolerance}", f"step size {default.stepSize} s", "@"):
+        assert (text in page) == (text != "@"), text  # every placeholder filled in
+    assert 'href="fmi-ls-ref.html"' in archive.read("documentation/index.html").decode()

@@ -16,14 +16,14 @@ from types import ModuleType
 from typing import Any, NoReturn
 
 from pendulum_fmu import __version__
-from pendulum_fmu.cli import animate, bench, compare, judge, simulate, study, sweep
+from pendulum_fmu.cli import animate, bench, compare, cross_check, judge, simulate, study, sweep
 from pendulum_fmu.cli.arguments import resolve_fmu
 from pendulum_fmu.errors import BuildError, SimulationError, UsageError
 from pendulum_fmu.interrupt import check as check_interrupt
 from pendulum_fmu.interrupt import default_dispositions
 from pendulum_fmu.interrupt import forget as forget_interrupt
 
-COMMANDS: tuple[ModuleType, ...] = (simulate, compare, study, animate, sweep, bench, judge)
+COMMANDS: tuple[ModuleType, ...] = (simulate, compare, study, animate, sweep, bench, judge, cross_check)
 
 DESCRIPTION = """\
 Build, run and check Pendulum.fmu: the nonlinear pendulum theta'' + (g/L) sin(theta) = 0,
@@ -42,6 +42,7 @@ examples:
   pendulum-fmu sweep --amplitudes 1:179:100 --solvers dopri5,rkn,cvode --out out/sweep
   pendulum-fmu bench sweep
   pendulum-fmu judge result.csv --interface ME --start tolerance=1e-6
+  pendulum-fmu cross-check out/cross-check
 """
 
 

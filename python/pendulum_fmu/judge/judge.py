@@ -8,7 +8,7 @@ from typing import Any, Literal
 import numpy as np
 
 from pendulum_fmu.fmu.library import exact
-from pendulum_fmu.judge import checks, inference
+from pendulum_fmu.judge import band, checks, inference
 from pendulum_fmu.judge.experiment import make_experiment
 from pendulum_fmu.judge.reading import ReadError, Result, describe_digits, read_result
 from pendulum_fmu.judge.verdict import Check, Experiment, Verdict
@@ -223,6 +223,7 @@ def judge(data: Any, *, start: list[str] | dict[str, float | str] | None = None,
     diagnosis = _diagnosis(result, ref, experiment, errors, bound.status == "fail", fitted, h, runner)
     if diagnosis is not None:
         found.append(diagnosis)
+    found.append(band.band_check(result, ref))
     failed = [c for c in found if c.status == "fail"]
     if failed:
         known = diagnosis is not None and diagnosis.figures.get("cause") is not None
