@@ -10,8 +10,8 @@ import pytest
 from fmpy import simulate_fmu
 from PIL import Image
 
+from fmpy_runs import Interface, Scenario, simulate
 from pendulum_fmu.cli.main import main
-from pendulum_fmu.fmu.simulate import Interface, Scenario, simulate
 from pendulum_fmu.study.seed import ME_TOLERANCE, TABLE_HEADER
 
 PERIODS = 2.0

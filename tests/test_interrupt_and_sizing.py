@@ -11,7 +11,7 @@ import pytest
 
 from pendulum_fmu import interrupt
 from pendulum_fmu.errors import UsageError
-from pendulum_fmu.sizing import BYTES_PER_POINT, check_run, check_sweep, grid_points
+from pendulum_fmu.sizing import BYTES_PER_POINT, check_run, check_sweep
 from pendulum_fmu.spec import TimeGrid
 from pendulum_fmu.sweep.grid import SweepGrid
 
@@ -87,7 +87,7 @@ def test_an_ignored_sigint_is_left_ignored() -> None:
     (TimeGrid(2.5, "s", 50, output_interval=0.04), 9.9), (TimeGrid(1e3, "periods", 97), 0.123),
 ])
 def test_grid_points_counts_the_times_without_building_them(grid: TimeGrid, period: float) -> None:
-    assert grid_points(grid, period) == len(grid.times(period))
+    assert grid.point_count(period) == len(grid.times(period))
 
 
 def test_a_run_is_refused_past_half_the_memory() -> None:

@@ -13,7 +13,7 @@ from fmpy import simulate_fmu
 from scipy.special import ellipk
 
 from pendulum_fmu.fmu.period import measured_period
-from pendulum_fmu.fmu.simulate import Scenario, simulate
+from fmpy_runs import Scenario, simulate
 from fmu_rebuild import rebuild_from_sources
 from reference_cache import cached
 

@@ -9,7 +9,6 @@ refusal and a progress hint, not promises.
 
 from __future__ import annotations
 
-import math
 import os
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -51,16 +50,6 @@ def available_memory() -> int:
         return 8 * 1024 ** 3
 
 
-def grid_points(grid: TimeGrid, reference_period: float) -> int:
-    """The number of output points :meth:`TimeGrid.times` would return, without building them."""
-    step = grid.output_interval or reference_period / grid.points_per_period
-    stop = grid.stop * reference_period if grid.unit == "periods" else grid.stop
-    ratio = stop / step
-    if not math.isfinite(ratio) or ratio > 1e18:
-        return 10 ** 18
-    return max(1, math.ceil(ratio - 1e-9)) + 1
-
-
 def quantity(count: float) -> str:
     """``4.5e9`` as ``4.5 billion``, ``25,000`` as ``25,000``."""
     if count >= 1e9:
@@ -95,7 +84,7 @@ def check_run(points: int, argument: str = "-T/--stop-time", memory: int | None 
     Parameters
     ----------
     points : int
-        Output points of the run (:func:`grid_points`).
+        Output points of the run (:meth:`TimeGrid.point_count`).
     argument : str
         The option to name in the refusal.
     memory : int, optional
@@ -202,7 +191,7 @@ def plan_run(runner: FmuRunner, pendulum: Pendulum, grid: TimeGrid, argument: st
 
     from pendulum_fmu.fmu.runner import reference_period  # fmpy: imported when a run is planned
 
-    points = grid_points(grid, reference_period(runner.period(pendulum), pendulum))
+    points = grid.point_count(reference_period(runner.period(pendulum), pendulum))
     seconds = check_run(points, argument)
     if seconds > SLOW_SECONDS:
         print(f"{what} {quantity(points)} output points: about {duration_text(seconds)} ...", file=sys.stderr,

@@ -179,19 +179,26 @@ class TimeGrid:
         list of float
             Increasing times; the last one is the stop time exactly.
         """
-        step = self.output_interval or reference_period / self.points_per_period
-        stop = self.stop * reference_period if self.unit == "periods" else self.stop
-        count = max(1, math.ceil(stop / step - 1e-9))
-        times = [k * step for k in range(count)]
-        times.append(stop)
-        return times
+        return self.times_array(reference_period).tolist()
 
     def times_array(self, reference_period: float) -> np.ndarray:
-        """:meth:`times` as a float64 array, the same numbers bit for bit (k * step in double)."""
-        step = self.output_interval or reference_period / self.points_per_period
-        stop = self.stop * reference_period if self.unit == "periods" else self.stop
-        count = max(1, math.ceil(stop / step - 1e-9))
+        """:meth:`times` as a float64 array: ``k * step`` in double, then the stop time."""
+        step, stop, ratio = self._span(reference_period)
+        count = max(1, math.ceil(ratio - 1e-9))
         times = np.empty(count + 1)
         np.multiply(np.arange(count, dtype=np.float64), step, out=times[:count])
         times[count] = stop
         return times
+
+    def point_count(self, reference_period: float) -> int:
+        """How many times :meth:`times` returns, without building them (10**18 beyond that)."""
+        _, _, ratio = self._span(reference_period)
+        if not math.isfinite(ratio) or ratio > 1e18:
+            return 10 ** 18
+        return max(1, math.ceil(ratio - 1e-9)) + 1
+
+    def _span(self, reference_period: float) -> tuple[float, float, float]:
+        """The output interval, the stop time (s) and their ratio."""
+        step = self.output_interval or reference_period / self.points_per_period
+        stop = self.stop * reference_period if self.unit == "periods" else self.stop
+        return step, stop, stop / step

@@ -1,11 +1,16 @@
-"""Periods: the exact one from K(m), and one measured from a simulated time series."""
+"""Periods: the exact curve T / T0 for the figures, and one measured from a simulated time series.
+
+A run's period is the FMU's own ``period`` output (:meth:`~pendulum_fmu.fmu.runner.FmuRunner.run`
+reads it after initialization); :func:`exact_period_ratio` draws the dense exact curve of the
+figures over amplitudes no run was made at.
+"""
 
 from __future__ import annotations
 
 import math
 
 import numpy as np
-from scipy.special import ellipk, ellipkm1
+from scipy.special import ellipkm1
 
 
 def exact_period_ratio(amplitude_rad: np.ndarray | float) -> np.ndarray:
@@ -24,11 +29,6 @@ def exact_period_ratio(amplitude_rad: np.ndarray | float) -> np.ndarray:
     half = np.asarray(amplitude_rad, dtype=float) / 2.0
     # scipy's ellipkm1 takes m1 = cos^2(theta0/2) directly: no cancellation near the top.
     return 2.0 * ellipkm1(np.cos(half) ** 2) / math.pi
-
-
-def exact_period(amplitude_rad: float, w0: float) -> float:
-    """Exact period 4 K(m) / w0 of a pendulum released from rest at ``amplitude_rad``."""
-    return 4.0 * float(ellipk(math.sin(amplitude_rad / 2.0) ** 2)) / w0
 
 
 def measured_period(time: np.ndarray, theta: np.ndarray) -> float:

@@ -15,7 +15,7 @@ import sys
 
 from types import ModuleType
 
-from pendulum_fmu.cli.bench import accuracy, exact, speed, sweep
+from pendulum_fmu.cli.bench import accuracy, exact, fmi_versions, judge, speed, sweep
 
 NAME = "bench"
 HELP = "benchmarks: exact evaluation, work-precision of the solvers, sweep throughput"
@@ -33,7 +33,7 @@ FORWARDED: dict[str, tuple[str, str]] = {
 }
 """Benchmark name -> (module with ``main(argv) -> int``, one-line help)."""
 
-PARSED: tuple[ModuleType, ...] = (accuracy, exact, speed, sweep)
+PARSED: tuple[ModuleType, ...] = (accuracy, exact, fmi_versions, judge, speed, sweep)
 """Benchmarks with ``NAME``, ``HELP``, ``DESCRIPTION``, ``EPILOG``, ``configure`` and ``run``."""
 
 
