@@ -2,8 +2,10 @@
 
 libcosim (libcosimpy 0.0.6, FMI 2.0), Ecos (ecospy 0.7.2, FMI 2.0 and 3.0), FMU Manipulation
 Toolbox 2.0 (its checker on both FMUs, and a container of two Pendulums run in fmpy). Each
-engine runs in its own process (tests/engine_runs.py). Known defects are pinned: each test
-that documents one fails the day the engine changes, so docs/importers.md stays true.
+engine runs in its own process (tests/engine_runs.py). The tests of the engines' known
+defects (docs/importers.md) check this project's workaround, not the defect itself: each passes
+while the defect is there and keeps passing the day the engine is fixed, so a fixed upstream
+does not turn CI red.
 An engine that is not installed makes its tests SKIPPED with the install command (a failure
 in CI, where PENDULUM_NO_SKIP=1).
 """
@@ -11,6 +13,8 @@ in CI, where PENDULUM_NO_SKIP=1).
 from __future__ import annotations
 
 import math
+import os
+import re
 import shutil
 import subprocess
 import sys
@@ -22,7 +26,7 @@ import pytest
 from fmpy import simulate_fmu
 from fmpy.util import write_csv
 
-from engine_runs import INSTALL, missing, run_ecos, run_libcosim
+from engine_runs import INSTALL, ecos_environment, missing, run_ecos, run_libcosim, tbb_library_folder
 from pendulum_fmu.judge import ReadError, judge
 
 THETA0 = math.radians(80.0)
@@ -49,31 +53,42 @@ def test_libcosim_fmi2_time_series_pass(fmu_path: Path, tmp_path: Path) -> None:
     assert verdict.check("theta error").figures["largest"] < 1e-11
 
 
-def test_libcosim_file_observer_prints_six_digits(fmu_path: Path, tmp_path: Path) -> None:
-    """libcosim's own CSV observer writes 6 significant digits: too coarse to show 1e-6."""
+def test_libcosim_file_observer_is_judged_by_its_digits(fmu_path: Path, tmp_path: Path) -> None:
+    """libcosim 0.0.6's own CSV observer writes 6 significant digits, too coarse to show 1e-6:
+    the workaround is the time series judged above, and the judge names the cause when it is
+    given the observer's file. An observer that prints every digit passes."""
     require("libcosimpy")
     run = run_libcosim(fmu_path, tmp_path, STARTS)
     verdict = judge(run.files["observer"], start=JUDGED_AS)
-    assert not verdict.passed
-    assert verdict.check("diagnosis").figures["cause"] == "print precision"
-    assert "6 significant digits" in verdict.check("read").line
+    if verdict.passed:  # a libcosim that prints enough digits
+        return
+    assert verdict.check("diagnosis").figures["cause"] == "print precision", verdict.line
+    assert "significant digits" in verdict.check("read").line
 
 
-def test_libcosim_aborts_the_process_on_an_fmu_error(fmu_path: Path, tmp_path: Path) -> None:
-    """L = -1: the FMU refuses at initialization; libcosim aborts the process (no exception)."""
+def test_an_fmu_error_under_libcosim_ends_only_its_own_process(fmu_path: Path, tmp_path: Path) -> None:
+    """L = -1: the FMU refuses at initialization. libcosim 0.0.6 then aborts the whole process
+    (``cosim::error``, no Python exception); the workaround is a process of its own
+    (engine_runs.py). Whether libcosim aborts or raises, this process goes on, the run
+    reports the failure and leaves no time series to judge."""
     require("libcosimpy")
     run = run_libcosim(fmu_path, tmp_path, {"L": -1.0})
-    assert run.returncode in (-6, 134), (run.returncode, run.stderr[-2000:])
-    assert "cosim::error" in run.stderr
+    assert run.returncode != 0, run.stdout[-2000:]
+    assert run.stderr.strip(), "the failed run said nothing"
+    assert "samples" not in run.files
 
 
-def test_libcosim_has_no_fmi3(fmu3_path: Path, tmp_path: Path) -> None:
-    """FMI 3.0: not supported by libcosim; libcosimpy then segfaults in add_local_slave. Run
-    here in a subprocess to pin that behaviour (an FMI 3.0 libcosim would make this fail)."""
+def test_libcosim_on_fmi3_ends_only_its_own_process(fmu3_path: Path, tmp_path: Path) -> None:
+    """FMI 3.0: libcosim 0.0.6 has none, and libcosimpy segfaults in add_local_slave; the
+    workaround is a process of its own (engine_runs.py). This process goes on: the run fails
+    without a time series, or, from a libcosim that reads FMI 3.0, its time series passes."""
     require("libcosimpy")
     run = run_libcosim(fmu3_path, tmp_path, STARTS)
-    assert run.returncode in (-11, 139), (run.returncode, run.stderr[-2000:])
-    assert not run.files.get("samples")
+    if run.returncode != 0:
+        assert "samples" not in run.files
+        return
+    verdict = judge(run.files["samples"], start=JUDGED_AS)
+    assert verdict.passed, verdict.line
 
 
 # --- Ecos ------------------------------------------------------------------------------------------
@@ -85,17 +100,23 @@ def test_ecos_passes_both_fmus(fmu_any: Path, tmp_path: Path) -> None:
     verdict = judge(run.files["observer"], start=JUDGED_AS)
     assert verdict.passed, verdict.line
     assert verdict.columns["theta"] == "pend::theta[REAL]"
-    assert "%.6f" in verdict.check("read").line  # Ecos writes fixed 6 decimals
-    # Ecos sums its time: 1000 steps of 0.01 end at 9.999999999999831 (it prints "10")
-    assert '"time": 9.999999999999831' in run.stdout
+    first_row = run.files["observer"].read_text().splitlines()[1]
+    if all(len(field.partition(".")[2]) == 6 for field in first_row.split(",")[1:] if "." in field):
+        assert "%.6f" in verdict.check("read").line  # Ecos 0.7.2 writes fixed 6 decimals
+    # Ecos 0.7.2 sums its time: 1000 steps of 0.01 end at 9.999999999999831 (it prints "10");
+    # the judge reads the grid either way
+    printed = re.search(r'"time": ([-+.0-9eE]+)', run.stdout)
+    assert printed is not None and abs(float(printed.group(1)) - 10.0) < 1e-12, run.stdout[-2000:]
 
 
-def test_ecos_swallows_an_fmu_error_and_the_judge_catches_it(fmu_path: Path, tmp_path: Path) -> None:
-    """L = -1: the FMU refuses, Ecos logs it at debug level only, init() succeeds and theta
-    stays frozen. The run looks normal; the judge fails it."""
+def test_an_fmu_error_under_ecos_never_passes(fmu_path: Path, tmp_path: Path) -> None:
+    """L = -1: the FMU refuses. Ecos 0.7.2 logs it at debug level only, init() succeeds and
+    theta stays frozen: the run looks normal. The workaround is the judge, which fails the
+    file. An Ecos that reports the error ends the run itself (exit status or no file)."""
     require("ecospy")
     run = run_ecos(fmu_path, tmp_path, {"L": -1.0, "theta": THETA0})
-    assert run.returncode == 0, run.stderr[-2000:]
+    if run.returncode != 0 or "observer" not in run.files:
+        return  # Ecos stopped the run itself
     verdict = judge(run.files["observer"], start=["theta=80deg"])
     assert not verdict.passed
     assert verdict.check("bound").status == "fail"
@@ -103,16 +124,20 @@ def test_ecos_swallows_an_fmu_error_and_the_judge_catches_it(fmu_path: Path, tmp
     assert "the FMU never advanced" in verdict.line
 
 
-def test_ecos_import_needs_tbb_on_the_loader_path(tmp_path: Path) -> None:
-    """Without tbb's folder on LD_LIBRARY_PATH ``import ecospy`` fails: the workaround in
-    engine_runs.ecos_environment is needed (remove it when this test fails)."""
+def test_ecospy_imports_in_the_environment_engine_runs_gives_it(monkeypatch: pytest.MonkeyPatch) -> None:
+    """ecospy 0.7.2 cannot load ``libtbb.so.12`` unless tbb's folder is on LD_LIBRARY_PATH
+    before the interpreter starts; engine_runs.ecos_environment puts it there. Checked from an
+    environment without LD_LIBRARY_PATH: ``import ecospy`` works with the workaround (and with an
+    ecospy that finds tbb by itself)."""
     require("ecospy")
-    import os
-
-    env = {k: v for k, v in os.environ.items() if k != "LD_LIBRARY_PATH"}
+    monkeypatch.delenv("LD_LIBRARY_PATH", raising=False)
+    env = ecos_environment()
+    folder = tbb_library_folder()
+    if folder is not None:
+        assert env["LD_LIBRARY_PATH"].split(os.pathsep)[0] == str(folder)
     done = subprocess.run([sys.executable, "-c", "import ecospy"], capture_output=True, text=True, env=env,
                           timeout=120, check=False)
-    assert done.returncode != 0 and "libtbb.so.12" in done.stderr
+    assert done.returncode == 0, done.stderr[-2000:]
 
 
 # --- FMU Manipulation Toolbox -----------------------------------------------------------------------
