@@ -179,10 +179,25 @@ static inline EllipticHomogeneous elliptic_landen_step(const EllipticParam *p, i
     return up;
 }
 
-/* sn, cn, dn of |v| at Landen level `level` (0 = the parameter m itself), from the bottom
- * level N up. Bottom, z = |v| / prod(1 + k_n), small m_N (A&S 16.13.1-3):
+/* sn, cn, dn at the bottom level N of the chain, from z = |v| / prod(1 + k_n) (z = |v|
+ * bottom_scale), sin z and cos z, for the small m_N (A&S 16.13.1-3):
  *   sn = sin z - m/4 (z - sin z cos z) cos z,  cn = cos z + m/4 (z - sin z cos z) sin z,
- *   dn = 1 - m/2 sin^2 z. For m1 == 0 (no levels): tanh and sech (A&S 16.6.1-3). */
+ *   dn = 1 - m/2 sin^2 z   (D = 1). */
+static inline EllipticHomogeneous elliptic_landen_bottom(const EllipticParam *p, double z, double sz,
+                                                         double cz)
+{
+    EllipticHomogeneous h;
+    const double w = 0.25 * p->bottom_m * (z - sz * cz);
+    h.S = sz - w * cz;
+    h.C = cz + w * sz;
+    h.E = 1.0 - 0.5 * p->bottom_m * sz * sz;
+    h.D = 1.0;
+    return h;
+}
+
+/* sn, cn, dn of |v| at Landen level `level` (0 = the parameter m itself), from the bottom
+ * level N (elliptic_landen_bottom) up. For m1 == 0 (no levels): tanh and sech
+ * (A&S 16.6.1-3). */
 static inline EllipticHomogeneous elliptic_landen_ascend(const EllipticParam *p, double av,
                                                          int level)
 {
@@ -204,11 +219,7 @@ static inline EllipticHomogeneous elliptic_landen_ascend(const EllipticParam *p,
         sz = sin(z);
         cz = cos(z);
     }
-    const double w = 0.25 * p->bottom_m * (z - sz * cz);
-    h.S = sz - w * cz;
-    h.C = cz + w * sz;
-    h.E = 1.0 - 0.5 * p->bottom_m * sz * sz;
-    h.D = 1.0;
+    h = elliptic_landen_bottom(p, z, sz, cz);
     for (int i = p->levels - 1; i >= level; --i) {
         h = elliptic_landen_step(p, i, h);
     }

@@ -604,32 +604,45 @@ static double phase_quarters_far(const PendulumExact *ex, DoubleDouble tau, Doub
     return fraction - n_f;
 }
 
+/* The phase below 2^50 quarter periods, x = rho tau + x0 with tau = t - t0 (tau = tau_hi +
+ * tau_lo exact, TwoSum) and x_hi = rho_hi tau_hi given, |x_hi| < 2^50: returns the fraction
+ * f = x - quarters, *quarters the integer nearest to x_hi + x0_hi. Up to 2^50 quarter periods
+ * the cross terms rho_hi tau_lo, rho_lo tau_hi stay below 1/8 and need no integer split, and
+ * the exact product rho_hi tau_hi = x_hi + x_lo, with rho_hi split once in init (Dekker) or
+ * by the fma, is all the work. The nearest integer is the 1.5 * 2^52 shift of
+ * dd_nearest_integer, whose other branch (|x| >= 2^51) cannot be taken here (|x0| <= 2).
+ * Plain arithmetic without a branch: the lock-step evaluation runs it over its lanes. */
+static inline double phase_near(const PendulumExact *ex, double tau_hi, double tau_lo, double x_hi,
+                                double *quarters)
+{
+#ifdef FP_FAST_FMA
+    const double x_lo = fma(ex->rho_hi, tau_hi, -x_hi);
+#else
+    const double tau_split = 134217729.0 * tau_hi;          /* Veltkamp split of tau_hi */
+    const double tau_head = tau_split - (tau_split - tau_hi), tau_tail = tau_hi - tau_head;
+    const double x_lo = ((ex->rho_head * tau_head - x_hi) + ex->rho_head * tau_tail
+                         + ex->rho_tail * tau_head) + ex->rho_tail * tau_tail;
+#endif
+    const double n = (x_hi + ex->x0_hi + 0x1.8p52) - 0x1.8p52;
+    *quarters = n;
+    /* x_hi - n is exact once n exceeds a few (Sterbenz); below, all is small */
+    return ((x_hi - n) + ex->x0_hi) + (x_lo + (ex->rho_hi * tau_lo + ex->rho_lo * tau_hi) + ex->x0_lo);
+}
+
 /* The phase of a libration or rotation at t: the fraction f of a quarter period (*f), the
  * quarter N (*N) and N mod 4 (returned, 0..3), or -1 where t is not resolvable
  * (pendulum_exact_resolvable; nothing written then). Inline, for the evaluation's common
- * case: up to 2^50 quarter periods the cross terms rho_hi tau.lo, rho_lo tau.hi stay below
- * 1/8 and need no integer split, and the exact product rho_hi tau.hi = x_hi + x_lo, with
- * rho_hi split once in init (Dekker) or by the fma, is all the work; a phase within 2^50
- * quarter periods is resolvable (2^50 < PENDULUM_EXACT_MAX_QUARTERS, and a time that is not
- * finite fails |x_hi| < 2^50 as rho_hi > 0). */
+ * case, phase_near: a phase within 2^50 quarter periods is resolvable
+ * (2^50 < PENDULUM_EXACT_MAX_QUARTERS, and a time that is not finite fails |x_hi| < 2^50 as
+ * rho_hi > 0). */
 static inline int phase_at(const PendulumExact *ex, double t, double *f, DoubleDouble *N)
 {
     const DoubleDouble tau = dd_two_sum(t, -ex->t0);
     const double x_hi = ex->rho_hi * tau.hi;
     if (fabs(x_hi) < 0x1p50) {
-#ifdef FP_FAST_FMA
-        const double x_lo = fma(ex->rho_hi, tau.hi, -x_hi);
-#else
-        const double tau_split = 134217729.0 * tau.hi;          /* Veltkamp split of tau.hi */
-        const double tau_head = tau_split - (tau_split - tau.hi), tau_tail = tau.hi - tau_head;
-        const double x_lo = ((ex->rho_head * tau_head - x_hi) + ex->rho_head * tau_tail
-                             + ex->rho_tail * tau_head) + ex->rho_tail * tau_tail;
-#endif
-        const double quarters = dd_nearest_integer(x_hi + ex->x0_hi);
+        double quarters;
+        *f = phase_near(ex, tau.hi, tau.lo, x_hi, &quarters);
         *N = dd_of(quarters);
-        /* x_hi - quarters is exact once quarters exceeds a few (Sterbenz); below, all is small */
-        *f = ((x_hi - quarters) + ex->x0_hi)
-             + (x_lo + (ex->rho_hi * tau.lo + ex->rho_lo * tau.hi) + ex->x0_lo);
         return (int)((long long)quarters & 3);   /* |quarters| < 2^51 */
     }
     if (!pendulum_exact_resolvable(ex, t)) {
@@ -639,15 +652,58 @@ static inline int phase_at(const PendulumExact *ex, double t, double *f, DoubleD
     return (elliptic_quarter_of(N->hi) + elliptic_quarter_of(N->lo)) & 3;
 }
 
-/* half_turns pi + angle, for an integer-valued double-double half_turns (|half_turns| < 2^64):
- * half_turns.hi pi_hi exact (two-product), the remaining products below its rounding. */
+/* half_turns pi for an integer-valued double-double half_turns (|half_turns| < 2^64), in the
+ * parts an angle is added to: hi + lo = half_turns.hi pi_hi exactly (two-product), then the
+ * remaining products below its rounding, half_turns.hi pi_lo and half_turns.lo pi_hi. */
+typedef struct {
+    double hi, lo, hi_pi_lo, lo_pi_hi;
+    int zero;   /* half_turns == 0: the angle alone */
+} HalfTurns;
+
+static inline HalfTurns half_turns_pi(DoubleDouble half_turns)
+{
+    HalfTurns h;
+    const DoubleDouble turn = dd_two_prod(half_turns.hi, PI_HI);
+    h.hi = turn.hi;
+    h.lo = turn.lo;
+    h.hi_pi_lo = half_turns.hi * PI_LO;
+    h.lo_pi_hi = half_turns.lo * PI_HI;
+    h.zero = half_turns.hi == 0.0 && half_turns.lo == 0.0;
+    return h;
+}
+
+/* half_turns pi + angle, for a nonzero half_turns: the parts summed smallest first. */
+static inline double plus_half_turns(const HalfTurns *h, double angle)
+{
+    return h->hi + (h->lo + (h->hi_pi_lo + (h->lo_pi_hi + angle)));
+}
+
 static double add_half_turns(DoubleDouble half_turns, double angle)
 {
     if (half_turns.hi == 0.0 && half_turns.lo == 0.0) {
         return angle;
     }
-    const DoubleDouble turn = dd_two_prod(half_turns.hi, PI_HI);
-    return turn.hi + (turn.lo + (half_turns.hi * PI_LO + (half_turns.lo * PI_HI + angle)));
+    const HalfTurns h = half_turns_pi(half_turns);
+    return plus_half_turns(&h, angle);
+}
+
+/* The angle (theta without the whole turns of theta0) and omega of a libration from the
+ * Jacobi functions of the reduced argument r at level 0 (h0: sn r = h0.S / h0.D, ...) and
+ * level 1 (h1), and the quarter n mod 4 as exact 0/1 weights: odd = [n odd] and
+ * sign = -1 for n = 2, 3 mod 4, else 1 (x * 0 + y * 1 == y exactly: no data-dependent
+ * branch). By the formulas of the header comment:
+ *   theta/2 = atan2(k sn u, dn u) = 2 atan(sqrt(k_1) sn(u_1 | m_1)) (elliptic.h), and at
+ *   level 1 sn(u_1) = sign sn r_1 (n even) or sign cd r_1 (n odd), |sn(u_1)| <= 1;
+ *   cn u = sign cn r (n even), -sign k' sn r / dn r (n odd), omega = 2 k w0 cn u. */
+static inline void libration_angle_omega(const PendulumExact *ex, EllipticHomogeneous h0,
+                                         EllipticHomogeneous h1, double odd, double sign, double *angle,
+                                         double *omega)
+{
+    const double even = 1.0 - odd;
+    const double y1 = even * h1.S + odd * h1.C, x1 = even * h1.D + odd * h1.E;
+    *angle = 4.0 * elliptic_atan_unit(sign * ex->sqrt_k1 * y1, x1);
+    const double cn_num = even * h0.C - odd * (ex->kc * h0.S), den = even * h0.D + odd * h0.E;
+    *omega = 2.0 * (sign * ex->omega_half * (cn_num / den));
 }
 
 void pendulum_exact_eval(const PendulumExact *ex, double t, double *theta, double *omega)
@@ -672,17 +728,7 @@ void pendulum_exact_eval(const PendulumExact *ex, double t, double *theta, doubl
     if (ex->regime == PENDULUM_LIBRATION) {
         EllipticHomogeneous h0, h1;                 /* sn r = h0.S / h0.D, ... at levels 0, 1 */
         elliptic_sncndn_homogeneous_pair(&ex->ell, f * ex->K_hi, &h0, &h1);
-        /* The quarter n mod 4 picks the formulas of the header comment through exact 0/1
-         * weights (x * 0 + y * 1 == y exactly): no data-dependent branch. */
-        const double odd = (double)(quarter & 1), even = 1.0 - odd;
-        const double sign = 1.0 - (double)(quarter & 2);          /* -1 for n = 2, 3 mod 4 */
-        /* theta/2 = atan2(k sn u, dn u) = 2 atan(sqrt(k_1) sn(u_1 | m_1)) (elliptic.h), and at
-         * level 1 sn(u_1) = sign sn r_1 (n even) or sign cd r_1 (n odd), |sn(u_1)| <= 1. */
-        const double y1 = even * h1.S + odd * h1.C, x1 = even * h1.D + odd * h1.E;
-        angle = 4.0 * elliptic_atan_unit(sign * ex->sqrt_k1 * y1, x1);
-        /* cn u = sign cn r (n even), -sign k' sn r / dn r (n odd) */
-        const double cn_num = even * h0.C - odd * (ex->kc * h0.S), den = even * h0.D + odd * h0.E;
-        om = 2.0 * (sign * ex->omega_half * (cn_num / den));     /* 2 k w0 cn u */
+        libration_angle_omega(ex, h0, h1, (double)(quarter & 1), 1.0 - (double)(quarter & 2), &angle, &om);
     } else if (ex->regime == PENDULUM_ROTATION) {
         double S, C, E, D;
         elliptic_sncndn_homogeneous(&ex->ell, f * ex->K_hi, &S, &C, &E, &D); /* sn r = S/D, ... */
@@ -726,126 +772,94 @@ void pendulum_exact_eval(const PendulumExact *ex, double t, double *theta, doubl
  * divisions and on the chain of Landen steps of one point; EXACT_LANES points of the same
  * libration run here stage by stage, each stage a short loop over the lanes (independent
  * chains the processor overlaps, and loops the compiler may vectorise at the platform's
- * baseline). Every lane performs the same operations in the same order as
- * pendulum_exact_eval (the shared kernels of elliptic.h), so the results are bit for bit
- * the scalar ones. A block with any point off the common path (t == t0, a phase beyond
- * 2^50 quarter periods or not finite, a bottom argument past the series) and every motion
- * other than a libration with at most ELLIPTIC_LEVELS_WITHOUT_RESCALE Landen levels and
- * |theta_turns| < 2^50 go through pendulum_exact_eval.
+ * baseline). The stages are pendulum_exact_eval's own: phase_near, elliptic_landen_bottom,
+ * elliptic_landen_step_plain, libration_angle_omega and plus_half_turns, so the results are
+ * bit for bit the scalar ones; only their order differs (every lane through one stage before
+ * the next). A block with any point off the common path (t == t0, a phase beyond 2^50
+ * quarter periods or not finite, a bottom argument past the series) and every motion other
+ * than a libration with at most ELLIPTIC_LEVELS_WITHOUT_RESCALE Landen levels (so that
+ * elliptic_landen_step is the plain step) and |theta_turns| < 2^50 go through
+ * pendulum_exact_eval.
  * --------------------------------------------------------------------------------------- */
 #define EXACT_LANES 16
 
 /* 1 when the block of EXACT_LANES points went through, 0 when it needs the scalar path
  * (nothing written then). The lanes are held as arrays per quantity and every stage is a
  * loop of plain double arithmetic over them (no branch, no integer), which the compiler
- * vectorises at the platform's baseline (SSE2 on x86-64); the checks for the common path
- * are separate loops. */
+ * vectorises at the platform's baseline (SSE2 on x86-64); the checks for the common path are
+ * separate loops. (An array of EllipticHomogeneous in place of the four arrays S, C, E, D
+ * costs 2-14 more instructions a point: bench_exact --count batch under callgrind.) */
 static int eval_libration_lanes(const PendulumExact *ex, const double *t, double *theta, double *omega)
 {
     const EllipticParam *p = &ex->ell;
-    const double t0 = ex->t0, rho_hi = ex->rho_hi, rho_lo = ex->rho_lo, x0_hi = ex->x0_hi, x0_lo = ex->x0_lo;
     double tau_hi[EXACT_LANES], tau_lo[EXACT_LANES], x_hi[EXACT_LANES];
     for (int l = 0; l < EXACT_LANES; ++l) {
-        const DoubleDouble tau = dd_two_sum(t[l], -t0);
+        const DoubleDouble tau = dd_two_sum(t[l], -ex->t0);
         tau_hi[l] = tau.hi;
         tau_lo[l] = tau.lo;
-        x_hi[l] = rho_hi * tau.hi;
+        x_hi[l] = ex->rho_hi * tau.hi;
     }
     for (int l = 0; l < EXACT_LANES; ++l) {
-        /* not t == t0, and a finite phase below 2^50 quarter periods */
-        if (t[l] == t0 || !(fabs(x_hi[l]) < 0x1p50)) {
+        /* not t == t0, and a finite phase below 2^50 quarter periods (phase_at's test) */
+        if (t[l] == ex->t0 || !(fabs(x_hi[l]) < 0x1p50)) {
             return 0;
         }
     }
-    /* phase_at, the branch below 2^50 quarter periods; the quarter n mod 4 as the
-     * weights of pendulum_exact_eval (odd, sign), from r = n - 4 nearest(n/4) in {-2..2}:
-     * odd = [r = +-1] = r^2 (4 - r^2)/3, [n mod 4 in {2, 3}] = [r = +-2] + [r = -1]
-     * = r^2 (r^2 - 1)/12 + odd (1 - r)/2, all exact small integers */
-    double v[EXACT_LANES], z[EXACT_LANES], odd[EXACT_LANES], sign[EXACT_LANES], flips[EXACT_LANES];
+    /* The phase, and the quarter n mod 4 as the weights of libration_angle_omega (odd, sign)
+     * without an integer: from r = n - 4 nearest(n/4) in {-2..2}, odd = [r = +-1]
+     * = r^2 (4 - r^2)/3, [n mod 4 in {2, 3}] = [r = +-2] + [r = -1]
+     * = r^2 (r^2 - 1)/12 + odd (1 - r)/2, all exact small integers. */
+    double v[EXACT_LANES], z[EXACT_LANES], odd[EXACT_LANES], sign[EXACT_LANES];
     for (int l = 0; l < EXACT_LANES; ++l) {
-#ifdef FP_FAST_FMA
-        const double x_lo = fma(rho_hi, tau_hi[l], -x_hi[l]);
-#else
-        const double tau_split = 134217729.0 * tau_hi[l];
-        const double tau_head = tau_split - (tau_split - tau_hi[l]), tau_tail = tau_hi[l] - tau_head;
-        const double x_lo = ((ex->rho_head * tau_head - x_hi[l]) + ex->rho_head * tau_tail
-                             + ex->rho_tail * tau_head) + ex->rho_tail * tau_tail;
-#endif
-        /* dd_nearest_integer: |x_hi + x0_hi| < 2^50 + 2 here */
-        const double quarters = (x_hi[l] + x0_hi + 0x1.8p52) - 0x1.8p52;
-        const double fraction = ((x_hi[l] - quarters) + x0_hi)
-                                + (x_lo + (rho_hi * tau_lo[l] + rho_lo * tau_hi[l]) + x0_lo);
+        double quarters;
+        v[l] = phase_near(ex, tau_hi[l], tau_lo[l], x_hi[l], &quarters) * ex->K_hi;
         const double r = quarters - 4.0 * ((0.25 * quarters + 0x1.8p52) - 0x1.8p52);
         const double r2 = r * r;
         odd[l] = r2 * (4.0 - r2) / 3.0;
         sign[l] = 1.0 - 2.0 * (r2 * (r2 - 1.0) / 12.0 + odd[l] * (1.0 - r) * 0.5);
-        v[l] = fraction * ex->K_hi;
         z[l] = fabs(v[l]) * p->bottom_scale;
-        flips[l] = v[l] < 0.0 ? -1.0 : 1.0;   /* sn is odd: pendulum_exact_eval's (v < 0) flip */
     }
     for (int l = 0; l < EXACT_LANES; ++l) {
         if (!(z[l] <= ELLIPTIC_SERIES_Z_MAX)) {
             return 0;
         }
     }
-    /* elliptic_sncndn_homogeneous_pair: the bottom level, the steps up to level 1, level 0 */
-    double S[EXACT_LANES], C[EXACT_LANES], E[EXACT_LANES], D[EXACT_LANES];
-    const double bottom_m = p->bottom_m;
+    /* elliptic_sncndn_homogeneous_pair, stage by stage: the bottom level, the steps up to
+     * level 1 (h), then below level 0 and the outputs */
+    double S[EXACT_LANES], C[EXACT_LANES], E[EXACT_LANES], D[EXACT_LANES];   /* level by level */
     for (int l = 0; l < EXACT_LANES; ++l) {
         double sz, cz;
         elliptic_sincos_series(z[l], &sz, &cz);
-        const double w = 0.25 * bottom_m * (z[l] - sz * cz);
-        S[l] = sz - w * cz;
-        C[l] = cz + w * sz;
-        E[l] = 1.0 - 0.5 * bottom_m * sz * sz;
-        D[l] = 1.0;
+        const EllipticHomogeneous h = elliptic_landen_bottom(p, z[l], sz, cz);
+        S[l] = h.S;
+        C[l] = h.C;
+        E[l] = h.E;
+        D[l] = h.D;
     }
     for (int i = p->levels - 1; i >= 1; --i) {
-        const double kk = p->landen_k[i], one_plus = p->landen_1pk[i], one_minus = p->landen_1mk[i];
         for (int l = 0; l < EXACT_LANES; ++l) {
-            /* elliptic_landen_step_plain, operation for operation */
-            const double d2 = D[l] * D[l];
-            const double S_up = one_plus * S[l] * D[l];
-            const double C_up = C[l] * E[l];
-            const double E_up = one_minus * d2 + kk * C[l] * C[l];
-            const double D_up = d2 + kk * S[l] * S[l];
-            S[l] = S_up;
-            C[l] = C_up;
-            E[l] = E_up;
-            D[l] = D_up;
+            const EllipticHomogeneous below = {S[l], C[l], E[l], D[l]};
+            const EllipticHomogeneous h = elliptic_landen_step_plain(p, i, below);
+            S[l] = h.S;
+            C[l] = h.C;
+            E[l] = h.E;
+            D[l] = h.D;
         }
     }
-    const double kk = p->landen_k[0], one_plus = p->landen_1pk[0], one_minus = p->landen_1mk[0];
-    const DoubleDouble half_turns = dd_add(dd_of(2.0 * ex->theta_turns), dd_of(0.0));
-    const int whole = half_turns.hi == 0.0 && half_turns.lo == 0.0;   /* the same for every lane */
-    const DoubleDouble turn = dd_two_prod(half_turns.hi, PI_HI);
-    const double turn_lo = half_turns.hi * PI_LO, half_turns_lo_pi = half_turns.lo * PI_HI;
-    const double sqrt_k1 = ex->sqrt_k1, kc = ex->kc, omega_half = ex->omega_half;
     double angle[EXACT_LANES];
     for (int l = 0; l < EXACT_LANES; ++l) {
-        const double d2 = D[l] * D[l];
-        double S0 = one_plus * S[l] * D[l];
-        const double C0 = C[l] * E[l];
-        const double E0 = one_minus * d2 + kk * C[l] * C[l];
-        const double D0 = d2 + kk * S[l] * S[l];
-        const double flip = flips[l];
-        const double S1 = flip * S[l];
-        S0 = flip * S0;
-        const double even = 1.0 - odd[l];
-        const double y1 = even * S1 + odd[l] * C[l], x1 = even * D[l] + odd[l] * E[l];
-        angle[l] = 4.0 * elliptic_atan_unit(sign[l] * sqrt_k1 * y1, x1);
-        const double cn_num = even * C0 - odd[l] * (kc * S0), den = even * D0 + odd[l] * E0;
-        omega[l] = 2.0 * (sign[l] * omega_half * (cn_num / den));
+        EllipticHomogeneous h1 = {S[l], C[l], E[l], D[l]};
+        EllipticHomogeneous h0 = elliptic_landen_step_plain(p, 0, h1);
+        if (v[l] < 0.0) {   /* sn is odd, cn and dn are even */
+            h1.S = -h1.S;
+            h0.S = -h0.S;
+        }
+        libration_angle_omega(ex, h0, h1, odd[l], sign[l], &angle[l], &omega[l]);
     }
-    /* add_half_turns */
-    if (whole) {
-        for (int l = 0; l < EXACT_LANES; ++l) {
-            theta[l] = angle[l];
-        }
-    } else {
-        for (int l = 0; l < EXACT_LANES; ++l) {
-            theta[l] = turn.hi + (turn.lo + (turn_lo + (half_turns_lo_pi + angle[l])));
-        }
+    /* add_half_turns with the whole turns of theta0 (a libration has no winding) */
+    const HalfTurns turns = half_turns_pi(dd_of(2.0 * ex->theta_turns));
+    for (int l = 0; l < EXACT_LANES; ++l) {
+        theta[l] = turns.zero ? angle[l] : plus_half_turns(&turns, angle[l]);
     }
     return 1;
 }
