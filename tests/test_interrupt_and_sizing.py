@@ -6,13 +6,16 @@ import ctypes
 import math
 import os
 import signal
+from pathlib import Path
+from typing import Any
 
 import pytest
 
 from pendulum_fmu import interrupt
 from pendulum_fmu.errors import UsageError
-from pendulum_fmu.sizing import BYTES_PER_POINT, check_run, check_sweep
-from pendulum_fmu.spec import TimeGrid
+from pendulum_fmu.fmu.runner import FmuRunner
+from pendulum_fmu.sizing import BYTES_PER_POINT, check_run, check_sweep, planned_run
+from pendulum_fmu.spec import Method, Pendulum, TimeGrid
 from pendulum_fmu.sweep.grid import SweepGrid
 
 
@@ -107,3 +110,19 @@ def test_a_sweep_is_counted_without_building_it_and_refused_past_the_memory() ->
         check_sweep(len(sweep), 501, 2, memory=16 * 10 ** 9)
     small = SweepGrid((10.0, 10.0, 20.0), solvers=("rkn", "rkn"))
     assert len(small) == len(small.points()) == 2
+
+
+@pytest.mark.parametrize("solver", ["rkn", "cvode"])
+def test_a_planned_run_initializes_the_fmu_once(fmu_path: Path, monkeypatch: pytest.MonkeyPatch, solver: str) -> None:
+    """The size check reads the period of the run's own initialization (Model Exchange: fmpy's
+    simulate_fmu then initializes the instance it is handed once more, itself)."""
+    calls: list[Any] = []
+    initialize = FmuRunner._initialize
+    monkeypatch.setattr(FmuRunner, "_initialize", lambda runner, *args: calls.append(args) or initialize(runner, *args))
+    method = Method(solver)
+    with FmuRunner(fmu_path) as runner:
+        trajectory = planned_run(runner, Pendulum.from_degrees(80.0), method, TimeGrid(1, "periods", 10))
+        assert len(calls) == 1 and trajectory.result.size == 11
+        with pytest.raises(UsageError, match="output points"):
+            planned_run(runner, Pendulum.from_degrees(80.0), method, TimeGrid(1e12, "periods", 1000))
+        assert len(calls) == 2   # refused after its initialization, before any point

@@ -10,14 +10,15 @@ refusal and a progress hint, not promises.
 from __future__ import annotations
 
 import os
+import sys
 from pathlib import Path
 from typing import TYPE_CHECKING
 
 from pendulum_fmu.errors import UsageError
-from pendulum_fmu.spec import Pendulum, TimeGrid
+from pendulum_fmu.spec import Method, Pendulum, TimeGrid
 
 if TYPE_CHECKING:
-    from pendulum_fmu.fmu.runner import FmuRunner
+    from pendulum_fmu.fmu.runner import FmuRunner, Trajectory
 
 BYTES_PER_POINT = 256
 """Memory per output point of one run: the recorded values, the result table, the time list
@@ -160,18 +161,19 @@ def check_sweep(runs: int, points_per_run: int, workers: int, memory: int | None
     return seconds
 
 
-def plan_run(runner: FmuRunner, pendulum: Pendulum, grid: TimeGrid, argument: str = "-T/--stop-time",
-             what: str = "simulating") -> int:
-    """Check one run's size before it starts, and say so when it will take a while.
+def planned_run(runner: FmuRunner, pendulum: Pendulum, method: Method, grid: TimeGrid,
+                argument: str = "-T/--stop-time", what: str = "simulating") -> Trajectory:
+    """Run one problem, its size checked before the first output point, saying so when it will take a while.
+
+    The check comes between the FMU's initialization (which gives the period the grid counts
+    in) and the first output point: the run is initialized once.
 
     Parameters
     ----------
     runner : FmuRunner
-        The loaded FMU (asked for the exact period the grid counts in).
-    pendulum : Pendulum
-        The problem.
-    grid : TimeGrid
-        The output points asked for.
+        The loaded FMU.
+    pendulum, method, grid
+        What to run.
     argument : str
         The option to name in a refusal.
     what : str
@@ -179,21 +181,19 @@ def plan_run(runner: FmuRunner, pendulum: Pendulum, grid: TimeGrid, argument: st
 
     Returns
     -------
-    int
-        The run's output points.
+    Trajectory
+        The run.
 
     Raises
     ------
     UsageError
-        From :func:`check_run`.
+        From :func:`check_run`, before any output point is computed.
     """
-    import sys
+    def plan(period: float) -> None:
+        points = grid.point_count(period)
+        seconds = check_run(points, argument)
+        if seconds > SLOW_SECONDS:
+            print(f"{what} {quantity(points)} output points: about {duration_text(seconds)} ...", file=sys.stderr,
+                  flush=True)
 
-    from pendulum_fmu.fmu.runner import reference_period  # fmpy: imported when a run is planned
-
-    points = grid.point_count(reference_period(runner.period(pendulum), pendulum))
-    seconds = check_run(points, argument)
-    if seconds > SLOW_SECONDS:
-        print(f"{what} {quantity(points)} output points: about {duration_text(seconds)} ...", file=sys.stderr,
-              flush=True)
-    return points
+    return runner.run(pendulum, method, grid, plan)

@@ -74,11 +74,10 @@ def run(args: argparse.Namespace) -> int:
     from pendulum_fmu.output.tables import write_table
 
     pendulum, method, grid = pendulum_from(args), method_from(args), grid_from(args)
-    from pendulum_fmu.sizing import plan_run
+    from pendulum_fmu.sizing import planned_run
 
     with FmuRunner(locate_fmu(args.fmu)) as runner:
-        plan_run(runner, pendulum, grid)  # refused at once when it cannot fit
-        trajectory = runner.run(pendulum, method, grid)
+        trajectory = planned_run(runner, pendulum, method, grid)  # refused at once when it cannot fit
     print("\n".join(summary_lines(trajectory)))
     if args.out is not None:
         write_table(trajectory_columns(trajectory), args.out, trajectory_metadata(trajectory))

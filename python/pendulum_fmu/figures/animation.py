@@ -11,7 +11,7 @@ from typing import Any
 import numpy as np
 
 from pendulum_fmu.errors import UsageError
-from pendulum_fmu.fmu.runner import FmuRunner, Trajectory, reference_period
+from pendulum_fmu.fmu.runner import FmuRunner, Trajectory
 from pendulum_fmu.spec import Method, Pendulum, StopUnit, TimeGrid
 
 
@@ -19,10 +19,6 @@ MAX_FRAMES = 1500
 """Most frames an animation may have (a minute at 25 frames/s; a GIF is assembled in memory)."""
 SLOW_FRAMES = 250
 """Films of more frames say so before they are drawn (about 100 frames a second here)."""
-
-
-def _frame_count(grid: TimeGrid, period: float, pendulum: Pendulum) -> int:
-    return len(grid.times(reference_period(period, pendulum)))
 
 
 class _GifFrames:
@@ -205,13 +201,19 @@ def animate(fmu: Path, pendulum: Pendulum, method: Method, stop: float, unit: St
         If the film would have more than :data:`MAX_FRAMES` frames.
     """
     grid = TimeGrid(stop, unit, output_interval=speed / fps)
-    with FmuRunner(fmu) as runner:
-        frames = _frame_count(grid, runner.period(pendulum), pendulum)
+    counted: list[int] = []
+
+    def plan(period: float) -> None:
+        frames = grid.point_count(period)
+        counted.append(frames)
         if frames > MAX_FRAMES:
             argument = "--periods" if unit == "periods" else "--stop-time"
             raise UsageError(argument, f"the animation would have {frames} frames, at most {MAX_FRAMES} are "
                                        "allowed: shorten it, lower --fps or raise --speed")
-        trajectory = runner.run(pendulum, method, grid)
+
+    with FmuRunner(fmu) as runner:
+        trajectory = runner.run(pendulum, method, grid, plan)   # refused before the first frame
+    frames = counted[0]
     if frames > SLOW_FRAMES:
         print(f"animate: drawing {frames} frames into {out} ...", file=sys.stderr, flush=True)
     render(trajectory, out, fps)

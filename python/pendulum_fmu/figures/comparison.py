@@ -72,11 +72,10 @@ def compare(fmu: Path, pendulum: Pendulum, method: Method, grid: TimeGrid, out: 
     Trajectory
         The run drawn.
     """
-    from pendulum_fmu.sizing import plan_run
+    from pendulum_fmu.sizing import planned_run
 
     with FmuRunner(fmu) as runner:
-        plan_run(runner, pendulum, grid)  # refused at once when it cannot fit
-        trajectory = runner.run(pendulum, method, grid)
+        trajectory = planned_run(runner, pendulum, method, grid)  # refused at once when it cannot fit
     plot_comparison(trajectory, out)
     return trajectory
 

@@ -24,6 +24,7 @@ import shutil
 import tempfile
 import time
 import weakref
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 from types import TracebackType
@@ -235,8 +236,8 @@ class FmuRunner:
         self._model_used = True
         return self._model
 
-    def _initialize(self, instance: Any, pendulum: Pendulum, method: Method) -> float:
-        """Experiment, start values, initialization; returns the FMU's ``period``."""
+    def _initialize(self, instance: Any, pendulum: Pendulum, method: Method) -> None:
+        """Experiment, start values, initialization."""
         values = pendulum.start_values()
         references = [self.vr[name] for name in values]
         solver = [CS_SOLVERS.index(method.solver) + 1] if method.interface == "CS" else None
@@ -247,13 +248,33 @@ class FmuRunner:
                 instance.setInteger([self.vr["solver"]], solver)
             instance.enterInitializationMode()
             instance.exitInitializationMode()
-            return float(instance.getReal([self.vr["period"]])[0])
+            return
         instance.setFloat64(references, list(values.values()))
         if solver:
             instance.setInt64([self.vr["solver"]], solver)   # an Enumeration is set as Int64 (FMI 3.0 2.2.6.1)
         instance.enterInitializationMode(tolerance=method.effective_tolerance, startTime=0.0)
         instance.exitInitializationMode()
-        return float(instance.getFloat64([self.vr["period"]])[0])
+
+    def _set_up(self, co_simulation: bool, pendulum: Pendulum, method: Method) -> Any:
+        """The runner's instance, fresh and initialized for ``pendulum`` and ``method``.
+
+        Raises
+        ------
+        SimulationError
+            If loading the binary (another model, another platform) or an FMI call fails.
+        """
+        try:
+            instance = self._fresh_slave() if co_simulation else self._fresh_model()
+            self._log.clear()
+            self._initialize(instance, pendulum, method)
+        except Exception as error:  # fmpy raises FMICallException, ctypes may raise OSError
+            raise SimulationError(f"the FMU failed to initialize {pendulum}: {self._reason(error)}") from error
+        return instance
+
+    def _read(self, instance: Any, name: str) -> float:
+        """One Real (FMI 2.0) / Float64 (FMI 3.0) variable by name."""
+        getter = instance.getReal if self.fmi_version == 2 else instance.getFloat64
+        return float(getter([self.vr[name]])[0])
 
     def _integers(self, instance: Any, names: tuple[str, ...]) -> list[int]:
         """Integer variables by name (Integer in FMI 2.0, Int32 in 3.0)."""
@@ -264,16 +285,17 @@ class FmuRunner:
     # -- runs --------------------------------------------------------------------------------
     def period(self, pendulum: Pendulum) -> float:
         """The FMU's exact ``period`` for this problem, s (``inf`` on the separatrix)."""
-        try:
-            with deferred_interrupt():
-                slave = self._fresh_slave()  # loading the binary may fail too (another model, another platform)
-                value = self._initialize(slave, pendulum, DEFAULT_METHOD)
+        with deferred_interrupt():
+            slave = self._set_up(True, pendulum, DEFAULT_METHOD)
+            try:
+                value = self._read(slave, "period")
                 slave.terminate()
-        except Exception as error:  # fmpy raises FMICallException, ctypes may raise OSError
-            raise SimulationError(f"the FMU failed to initialize {pendulum}: {self._reason(error)}") from error
+            except Exception as error:  # fmpy raises FMICallException
+                raise SimulationError(f"the FMU failed to initialize {pendulum}: {self._reason(error)}") from error
         return value
 
-    def run(self, pendulum: Pendulum, method: Method = DEFAULT_METHOD, grid: TimeGrid = DEFAULT_GRID) -> Trajectory:
+    def run(self, pendulum: Pendulum, method: Method = DEFAULT_METHOD, grid: TimeGrid = DEFAULT_GRID,
+            plan: Callable[[float], object] | None = None) -> Trajectory:
         """Simulate one problem.
 
         Parameters
@@ -284,6 +306,10 @@ class FmuRunner:
             Solver and tolerance (``cvode`` runs in Model Exchange).
         grid : TimeGrid
             Output points and stop time.
+        plan : callable, optional
+            Called with the period the grid counts in (:func:`reference_period`, s) once the
+            FMU is initialized, before the first output point: a UsageError it raises stops
+            the run (:func:`pendulum_fmu.sizing.planned_run` refuses a run too big there).
 
         Returns
         -------
@@ -294,15 +320,17 @@ class FmuRunner:
         ------
         SimulationError
             If an FMI call fails.
+        UsageError
+            From ``plan``.
         RunInterrupted
             On Ctrl-C during a Co-Simulation run's output loop, with the points finished.
         """
         try:
             with deferred_interrupt():  # Ctrl-C inside a ctypes callback would be lost
                 if method.interface == "CS":
-                    return self._run_cs(pendulum, method, grid)
-                return self._run_me(pendulum, method, grid)
-        except SimulationError:
+                    return self._run_cs(pendulum, method, grid, plan)
+                return self._run_me(pendulum, method, grid, plan)
+        except (SimulationError, UsageError):
             raise
         except MemoryError:
             raise SimulationError(f"{method.label} on {pendulum}: not enough memory for the output points "
@@ -319,12 +347,15 @@ class FmuRunner:
             text = f"{text.rstrip('.')}: {rest if rest and call in text else logged}"
         return " ".join(text.split())
 
-    def _run_cs(self, pendulum: Pendulum, method: Method, grid: TimeGrid) -> Trajectory:
+    def _run_cs(self, pendulum: Pendulum, method: Method, grid: TimeGrid,
+                plan: Callable[[float], object] | None) -> Trajectory:
         start = time.perf_counter()
-        slave = self._fresh_slave()
-        self._log.clear()
-        period = self._initialize(slave, pendulum, method)
-        times = grid.times_array(reference_period(period, pendulum))
+        slave = self._set_up(True, pendulum, method)
+        period = self._read(slave, "period")
+        counted_in = reference_period(period, pendulum)
+        if plan is not None:
+            plan(counted_in)
+        times = grid.times_array(counted_in)
         result = np.empty(len(times), dtype=RESULT_DTYPE)
         result["time"] = times
         references = [self.vr[name] for name in RECORDED]
@@ -341,15 +372,19 @@ class FmuRunner:
         wall = time.perf_counter() - start
         return Trajectory(pendulum, method, grid, period, result, steps, rejected, rhs, wall, self._log.warnings())
 
-    def _run_me(self, pendulum: Pendulum, method: Method, grid: TimeGrid) -> Trajectory:
+    def _run_me(self, pendulum: Pendulum, method: Method, grid: TimeGrid,
+                plan: Callable[[float], object] | None) -> Trajectory:
         start = time.perf_counter()
-        model = self._fresh_model()
-        self._log.clear()
-        # The grid needs the period before the run: ask the FMU, then start afresh.
-        period = self._initialize(model, pendulum, method)
+        # The grid needs the period before the run, and fmpy's simulate_fmu initializes the
+        # instance it is handed itself: ask the FMU, then start afresh.
+        model = self._set_up(False, pendulum, method)
+        period = self._read(model, "period")
         model.terminate()
         model.reset()
-        times = grid.times(reference_period(period, pendulum))
+        counted_in = reference_period(period, pendulum)
+        if plan is not None:
+            plan(counted_in)
+        times = grid.times(counted_in)
         interval = times[1] - times[0]
         recorded = simulate_fmu(
             self._unzipdir, model_description=self.model_description, fmu_instance=model,
