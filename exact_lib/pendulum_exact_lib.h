@@ -1,9 +1,10 @@
 /* pendulum_exact_lib.h: the FMU's exact solution as a plain C library (no FMI), for callers
  * that need theta_exact at many points without an FMU round trip per point (the Python
- * function pendulum_fmu.exact). It runs the same pendulum_exact_init as the FMU, with
- * w0 = sqrt(g / L) and the initial state posed at t = 0, as the FMU does after initialization
- * at start time 0, and evaluates with pendulum_exact_eval_many (several points in lock-step,
- * bit for bit pendulum_exact_eval), so its theta equals the FMU's theta_exact bit for bit. */
+ * function pendulum_fmu.exact). It sets the solution up as the FMU's initialization does,
+ * pendulum_exact_init_gl from the doubles g and L with the initial state posed at t = 0 (the
+ * FMU at start time 0), and evaluates with pendulum_exact_eval_many (several points in
+ * lock-step, bit for bit pendulum_exact_eval), so its theta equals the FMU's theta_exact bit
+ * for bit. */
 #ifndef PENDULUM_EXACT_LIB_H
 #define PENDULUM_EXACT_LIB_H
 

@@ -21,7 +21,8 @@
  *    quarter-period identities turn them into products and quotients, never differences.
  *    The levels run in homogeneous coordinates (sn = S/D, cn = C/D, dn = E/D), so a level
  *    costs a few multiplications and no division.
- *    The bottom level's sin and cos are a short Maclaurin series (|z| <= pi/4 there).
+ *    The bottom level's sin and cos are a short Maclaurin series (trig_sincos_small, trig.h;
+ *    |z| <= pi/4 there).
  *  - R_F by Carlson's duplication algorithm (DLMF 19.36.1; Carlson, Numer. Algorithms 10
  *    (1995) 13-26): the incomplete integral F(phi | m) of an initial phase is
  *    sin phi R_F(cos^2 phi, 1 - m sin^2 phi, 1) (DLMF 19.25.5), formed by the caller.
@@ -36,6 +37,7 @@
 #include <math.h>
 
 #include "dd.h"
+#include "trig.h"
 
 /* The double-double names fmu_src/solvers/integrator_core.c still uses: the same functions
  * under dd.h's names, until that file takes those names itself. */
@@ -105,35 +107,12 @@ int elliptic_param_init_root(EllipticParam *p, double m, double m1_hi, double m1
  * mod 8. When K is infinite, returns u_hi + u_lo, n = 0. */
 double elliptic_reduce(const EllipticParam *p, double u_hi, double u_lo, double *quarters);
 
-/* Above this |z| the bottom level calls libm's sin and cos instead of the series below. */
+/* Above this |z| the bottom level calls libm's sin and cos, below it trig_sincos_small
+ * (trig.h: their Maclaurin series to z^17 and z^16, no range reduction). */
 #define ELLIPTIC_SERIES_Z_MAX 0.8
 
 /* Renormalise the homogeneous coordinates when D exceeds this (only for m1 < ~1e-30). */
 #define ELLIPTIC_HOMOGENEOUS_RESCALE 0x1p200
-
-/* sin z and cos z for 0 <= z <= ELLIPTIC_SERIES_Z_MAX by their Maclaurin series
- * (A&S 4.3.65-66) to z^17 and z^16: the first omitted terms are below 1.2e-19 and 2.8e-18
- * relative there.
- * sin z = z + z s P(s), cos z = 1 + s Q(s), s = z^2, P and Q of degree 7 in s, evaluated by
- * Estrin's scheme (pairs, then powers s^2, s^4) for a short dependency chain. */
-static inline void elliptic_sincos_series(double z, double *sin_z, double *cos_z)
-{
-    const double s = z * z, s2 = s * s, s4 = s2 * s2;
-    /* P(s) = -1/3! + s/5! - s^2/7! + ... - s^7/17! */
-    const double p01 = -1.0 / 6.0 + s * (1.0 / 120.0);
-    const double p23 = -1.0 / 5040.0 + s * (1.0 / 362880.0);
-    const double p45 = -1.0 / 39916800.0 + s * (1.0 / 6227020800.0);
-    const double p67 = -1.0 / 1307674368000.0 + s * (1.0 / 355687428096000.0);
-    const double p = (p01 + s2 * p23) + s4 * (p45 + s2 * p67);
-    /* Q(s) = -1/2! + s/4! - s^2/6! + ... + s^7/16! */
-    const double q01 = -0.5 + s * (1.0 / 24.0);
-    const double q23 = -1.0 / 720.0 + s * (1.0 / 40320.0);
-    const double q45 = -1.0 / 3628800.0 + s * (1.0 / 479001600.0);
-    const double q67 = -1.0 / 87178291200.0 + s * (1.0 / 20922789888000.0);
-    const double q = (q01 + s2 * q23) + s4 * (q45 + s2 * q67);
-    *sin_z = z + z * s * p;
-    *cos_z = 1.0 + s * q;
-}
 
 /* Homogeneous coordinates of (sn, cn, dn): sn = S/D, cn = C/D, dn = E/D, D > 0. */
 typedef struct {
@@ -214,7 +193,7 @@ static inline EllipticHomogeneous elliptic_landen_ascend(const EllipticParam *p,
     const double z = av * p->bottom_scale;
     double sz, cz;
     if (z <= ELLIPTIC_SERIES_Z_MAX) {
-        elliptic_sincos_series(z, &sz, &cz);          /* always so for a reduced argument */
+        trig_sincos_small(z, &sz, &cz);               /* always so for a reduced argument */
     } else {
         sz = sin(z);
         cz = cos(z);

@@ -129,9 +129,9 @@ static DoubleDouble reduce_large_angle(double theta, double *turns)
 /* ---------------------------------------------------------------------------------------
  * Triple-double, only for m1 next to the separatrix. There m1 = c^2 - q^2 (c = cos(th/2),
  * q = |omega0| / (2 w0)) cancels: with c and q in double-double (absolute error ~1e-32) a
- * state within 1e-13 of the separatrix kept only ~18 digits of m1, and the period, hence the
- * phase after 1e6 periods, inherited the rest (1.9e-12 rad). A value is an expansion
- * x[0] + x[1] + x[2] (relative error ~2^-150), formed by error-free transformations and
+ * state within 1e-13 of the separatrix would keep only ~18 digits of m1, and the period,
+ * hence the phase after 1e6 periods, would inherit the rest (about 2e-12 rad). A value is
+ * an expansion x[0] + x[1] + x[2] (relative error ~2^-150), formed by error-free transformations and
  * renormalised by repeated vector sums (Ogita, Rump & Oishi, SIAM J. Sci. Comput. 26 (2005)
  * 1955-1988, Algorithm 4.8, SumK with K = 3), which run only once per initial state.
  * --------------------------------------------------------------------------------------- */
@@ -514,7 +514,8 @@ static int exact_init_dd(PendulumExact *ex, double theta0, double omega0, Double
     } else {
         set_quarter_rates(&e, rate_n, st.exponent, omega0 == 0.0);
     }
-    memcpy(ex, &e, sizeof e); /* bytewise, padding included (see fmi2_state.c) */
+    memcpy(ex, &e, sizeof e); /* bytewise, padding included: FMU states compare and checksum it
+                                 (pendulum_exact_same, instance/state.c) */
     return 0;
 }
 
@@ -534,8 +535,8 @@ int pendulum_exact_init_gl(PendulumExact *ex, double theta0, double omega0, doub
         return -1;
     }
     /* w0 = sqrt(g / L) in double-double from the doubles g and L as given: the regime is then
-     * the one of those doubles, not of fl(sqrt(fl(g / L))) (whose two roundings moved states
-     * within ~1e-16 of the separatrix to the other side). Scaled by powers of two so that
+     * the one of those doubles, not of fl(sqrt(fl(g / L))) (whose two roundings can move a
+     * state within ~1e-16 of the separatrix to the other side). Scaled by powers of two so that
      * neither the quotient nor Dekker's split overflows or underflows. */
     const int eg = dd_frexp_exponent(g), eL = dd_frexp_exponent(L);
     const double gm = dd_scalbn(g, -eg), Lm = dd_scalbn(L, -eL);   /* frexp's fractions */
@@ -829,7 +830,7 @@ static int eval_libration_lanes(const PendulumExact *ex, const double *t, double
     double S[EXACT_LANES], C[EXACT_LANES], E[EXACT_LANES], D[EXACT_LANES];   /* level by level */
     for (int l = 0; l < EXACT_LANES; ++l) {
         double sz, cz;
-        elliptic_sincos_series(z[l], &sz, &cz);
+        trig_sincos_small(z[l], &sz, &cz);
         const EllipticHomogeneous h = elliptic_landen_bottom(p, z[l], sz, cz);
         S[l] = h.S;
         C[l] = h.C;

@@ -1,5 +1,11 @@
-/* trig.h: sine and cosine of a double, inline: rkn's stages (trig_sin_moved) and the outputs
- * x and y (one trig_sincos for both).
+/* trig.h: sine and cosine of a double, inline: the bottom level of the Landen chain
+ * (trig_sincos_small, elliptic.h), rkn's stages (trig_sin_moved) and the outputs x and y (one
+ * trig_sincos for both).
+ *
+ * The project's other sine and cosine, dd_sincos (dd.h, dd.c), takes a double-double to
+ * ~1e-31 for the once-per-state set-ups and sums its series in double-double; these are the
+ * 1-ulp double ones of the evaluation and step loops, inline and without a libm call on the
+ * usual path. The two share no arithmetic, so each stays with its precision.
  *
  * rkn evaluates sin(theta) at 16 stages a step, 15 of them one after another on the step's
  * chain of dependent operations, where libm's sin is a call with branches on the argument's
@@ -46,6 +52,19 @@ static inline void trig_series(double z, double *ps, double *pc)
           + z4 * ((c[11] + z * c[13]) + z2 * (c[15] + z * c[17]));
     *pc = ((c[2] + z * c[4]) + z2 * (c[6] + z * c[8]))
           + z4 * ((c[10] + z * c[12]) + z2 * (c[14] + z * c[16]));
+}
+
+/* sin r and cos r for a double |r| <= 0.8 without a low part: sin r = r + r z ps,
+ * cos r = 1 + z pc, z = r^2. The first omitted terms, r^19/19! and r^18/18!, stay below 2e-19
+ * and 3e-18 relative up to |r| = 0.8, so the error is the rounding of the sums: 1 ulp. The
+ * bottom level of the Landen chain (elliptic.h) takes its sine and cosine here. */
+static inline void trig_sincos_small(double r, double *sin_r, double *cos_r)
+{
+    const double z = r * r;
+    double ps, pc;
+    trig_series(z, &ps, &pc);
+    *sin_r = r + (r * z) * ps;
+    *cos_r = 1.0 + z * pc;
 }
 
 /* sin and cos of r + r_lo for |r| <= pi/4 (plus a rounding), |r_lo| <= ulp(r) */
