@@ -14,8 +14,8 @@ double integ_hmin(const Integrator *it)
     /* 16 eps in the motion's time unit 1/rate: a shorter step moves the state by less than
      * 16 ulps of its own scale, so its error estimate measures rounding and the step size has
      * collapsed (HNW's DOPRI5 stops at 0.1 |h| <= eps |t|, in absolute time; here the time is a
-     * compensated sum, t + t_lo, which every step advances, so the test needs no clock and
-     * the same problem takes the same steps from every start time) */
+     * compensated sum, t + t_lo, which resolves steps far below ulp(t), so the test needs no
+     * clock and the same problem takes the same steps from every start time) */
     return 16.0 * DBL_EPSILON / it->rate;
 }
 

@@ -135,11 +135,11 @@ void integ_hermite_eval(const Integrator *it, double s, double y[2]);
 
 /* The smallest step any method may take before reporting underflow: 16 eps / rate, in the
  * motion's own time unit, whatever the start time (the time itself is the compensated sum
- * t + t_lo, which every step longer than this advances). */
+ * t + t_lo, which resolves steps far below ulp(t)). */
 double integ_hmin(const Integrator *it);
 
-/* 1 if the compensated time t + t_lo lies before x (exact: |t_lo| <= ulp(t) / 2, so the low
- * part decides only where t == x). */
+/* 1 if the compensated time t + t_lo lies before x (|t_lo| <= ulp(t) / 2, the rounding error
+ * of the sum: the low part decides only where t == x). */
 static inline int integ_time_before(double t, double t_lo, double x)
 {
     return t < x || (t == x && t_lo < 0.0);

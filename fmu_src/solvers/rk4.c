@@ -46,7 +46,7 @@ int integ_rk4_step(Integrator *it)
 
     if (!(h >= integ_hmin(it)))
         return -1;   /* below the smallest step (integ_hmin): measured in the motion's time, not
-                        against the clock t, which the compensated sum t + t_lo advances anyway */
+                        against the clock t (the compensated sum t + t_lo resolves the step) */
     for (int i = 0; i < 2; i++)
         ys[i] = y[i] + 0.5 * h * k1[i];
     integ_rhs(it, ys, k2);

@@ -81,7 +81,7 @@ int integ_symplectic_step(Integrator *it)
 
     if (!(h >= integ_hmin(it)))
         return -1;   /* below the smallest step (integ_hmin): measured in the motion's time, not
-                        against the clock t, which the compensated sum t + t_lo advances anyway */
+                        against the clock t (the compensated sum t + t_lo resolves the step) */
     /* compensated sums: dense[1] (unused by the output) carries the rounding of x and v */
     double *carry = it->dense[1];
     for (int i = 0; i < SYMP_STAGES; i++) {
