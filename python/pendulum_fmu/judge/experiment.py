@@ -314,7 +314,7 @@ def read_ref_opt(path: Path) -> Settings:
         raise ValueError(f"{path.name}: no {', '.join(missing)}")
     if not values["StopTime"] > values["StartTime"]:
         raise ValueError(f"{path.name}: StartTime must be before StopTime")
-    kind = path.parts[-6] if len(path.parts) >= 6 else ""
+    kind = path.parts[-6] if len(path.parts) >= 8 and path.parts[-8] == "fmus" else ""
     interface: Literal["CS", "ME"] | None = "CS" if kind == "cs" else "ME" if kind == "me" else None
     return Settings(str(path), values["StartTime"], values["StopTime"], values["StepSize"] or None,
                     values["RelTol"], interface)
