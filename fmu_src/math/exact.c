@@ -555,9 +555,7 @@ int pendulum_exact_init_gl(PendulumExact *ex, double theta0, double omega0, doub
 int pendulum_exact_same(const PendulumExact *ex)
 {
     PendulumExact fresh;
-    int status = ex->g != 0.0 || ex->L != 0.0
-                     ? pendulum_exact_init_gl(&fresh, ex->theta0, ex->omega0, ex->g, ex->L, ex->t0)
-                     : pendulum_exact_init(&fresh, ex->theta0, ex->omega0, ex->w0, ex->t0);
+    const int status = pendulum_exact_init_gl(&fresh, ex->theta0, ex->omega0, ex->g, ex->L, ex->t0);
     return status == 0 && memcmp(&fresh, ex, sizeof fresh) == 0;
 }
 

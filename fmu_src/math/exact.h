@@ -2,7 +2,8 @@
  *
  * Regimes (documentation/math.html): libration (m < 1), separatrix (m1 == 0), rotation (m > 1),
  * with m = sin^2(theta0/2) + (omega0/(2 w0))^2 and m1 = cos^2(theta0/2) - (omega0/(2 w0))^2.
- * All constants are computed once by pendulum_exact_init; an evaluation is one argument
+ * All constants are computed once by the set-up (pendulum_exact_init_gl from g and L, as the
+ * FMU and pendulum_exact_lib do, or pendulum_exact_init from w0); an evaluation is one argument
  * reduction and one sn/cn/dn call. The struct is plain data (no pointers), so an FMU can
  * copy and serialize it byte for byte. */
 #ifndef PENDULUM_EXACT_H
@@ -51,8 +52,11 @@ typedef struct {
     EllipticParam ell;    /* Landen chain and K of the parameter (plain data) */
 } PendulumExact;
 
-/* Sets up the solution through (theta0, omega0) at time t0 for w0 > 0.
- * Returns 0 on success, -1 if an input is not finite or w0 <= 0 (ex is then untouched). */
+/* Sets up the solution through (theta0, omega0) at time t0 for w0 > 0 as the double given.
+ * Returns 0 on success, -1 if an input is not finite or w0 <= 0 (ex is then untouched).
+ * For callers that pose w0 itself, as the C tests' tables (references at a binary w0, the
+ * separatrix at omega0 = 2 w0 exactly) and the benchmarks do; the FMU calls only
+ * pendulum_exact_init_gl (its g and L give w0 only as a double-double). */
 int pendulum_exact_init(PendulumExact *ex, double theta0, double omega0, double w0, double t0);
 
 /* The same for the parameters g > 0 and L > 0 as given: w0 = sqrt(g / L) is formed in
@@ -61,9 +65,10 @@ int pendulum_exact_init(PendulumExact *ex, double theta0, double omega0, double 
  * Returns -1 for a non-finite input, g or L <= 0, or g / L not a normal double's range. */
 int pendulum_exact_init_gl(PendulumExact *ex, double theta0, double omega0, double g, double L, double t0);
 
-/* 1 if *ex is exactly (bytewise) what its own recorded inputs (theta0, omega0, g and L or
- * w0, t0) set up, 0 otherwise: the check of a solution read from untrusted bytes (an FMU
- * state blob), which so can never carry a field out of its range. */
+/* 1 if *ex is exactly (bytewise) what pendulum_exact_init_gl sets up from its own recorded
+ * inputs (theta0, omega0, g, L, t0), 0 otherwise (also for a solution set up from w0 by
+ * pendulum_exact_init, which the FMU never makes): the check of a solution read from
+ * untrusted bytes (an FMU state blob), which so can never carry a field out of its range. */
 int pendulum_exact_same(const PendulumExact *ex);
 
 /* Most quarter periods from t0 at which the phase is resolved: the rate is held in
