@@ -126,12 +126,15 @@ def test_honest_run_passes_the_me_bound(name: str, method: str) -> None:
     assert verdict.passed, verdict.line
     bound = verdict.check("bound")
     assert bound.status == "pass" and bound.figures["worst_ratio"] < 1.0
-    assert "growth" in bound.line and bound.figures["growth"] > 1.0
+    if math.isinf(bound.figures["linear_until"]):
+        assert bound.figures["growth"] > 1.0 and f"growth {bound.figures['growth']:.2g} at t" in bound.line
+    else:  # the allowed energy error reaches the separatrix: said so
+        assert "the allowed energy error reaches the separatrix: no value refused" in bound.line
 
 
-LOOSER_FAILS = [(n, m) for n in HONEST for m in METHODS if n != "179.99 deg" and m != "Radau"]
-"""At 179.99 deg a looser tolerance's allowed energy error reaches the separatrix, and Radau
-stays 100 times below its tolerance (docs/importers.md, "The bound")."""
+LOOSER_FAILS = [(n, m) for n in HONEST for m in ("CVODE", "LSODA") if n != "179.99 deg"]
+"""At 179.99 deg a looser tolerance's allowed energy error reaches the separatrix; DOP853 and
+Radau at 100 tol stay within what CVODE makes at tol (docs/importers.md, "The bound")."""
 
 
 @pytest.mark.parametrize(("name", "method"), LOOSER_FAILS)

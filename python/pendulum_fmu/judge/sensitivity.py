@@ -184,27 +184,32 @@ def periodic_part(experiment: Experiment, period: float, kappa: float, d: float,
 
 
 class WindowMax:
-    """max over [tau - half, tau + half] of a T-periodic function tabulated on ``grid``: a
-    sparse table of maxima over 2^k cells of three periods side by side, O(1) a query."""
+    """max over [tau - half, tau + half] of T-periodic functions tabulated on ``grid``, for
+    the same windows: a sparse table of maxima over 2^k cells of three periods side by side,
+    O(1) a query (two table entries whose spans cover the window)."""
 
-    def __init__(self, grid: np.ndarray, period: float) -> None:
-        self.cells = grid.size - 1
-        self.step = period / self.cells
-        self.levels = int(math.log2(3 * self.cells)) + 1
+    def __init__(self, grid: np.ndarray, period: float, tau: np.ndarray, half: np.ndarray) -> None:
+        n = self.cells = grid.size - 1
+        step = period / n
+        self.levels = int(math.log2(3 * n)) + 1
+        centre = n + tau / step
+        reach = np.minimum(half / step, n)  # a window of a whole period or more holds the maximum
+        low = np.clip(np.floor(centre - reach).astype(np.int64) - 1, 0, 3 * n - 1)
+        high = np.clip(np.ceil(centre + reach).astype(np.int64) + 1, 0, 3 * n - 1)
+        level = np.floor(np.log2(high - low + 1)).astype(np.int64)
+        self.first = level * (3 * n) + low
+        self.second = level * (3 * n) + high - (1 << level) + 1
 
-    def __call__(self, values: np.ndarray, tau: np.ndarray, half: np.ndarray) -> np.ndarray:
+    def __call__(self, values: np.ndarray) -> np.ndarray:
+        """The windows' maxima of ``values`` (on ``grid``, the last point equal to the first)."""
         n = self.cells
         table = np.full((self.levels, 3 * n), -np.inf)
         table[0] = np.tile(values[:-1], 3)
         for k in range(1, self.levels):
             width = 1 << (k - 1)
             table[k, : 3 * n - width] = np.maximum(table[k - 1, : 3 * n - width], table[k - 1, width:])
-        centre = n + tau / self.step
-        reach = np.minimum(half / self.step, n)  # a window of a whole period or more holds the maximum
-        low = np.clip(np.floor(centre - reach).astype(np.int64) - 1, 0, 3 * n - 1)
-        high = np.clip(np.ceil(centre + reach).astype(np.int64) + 1, 0, 3 * n - 1)
-        level = np.floor(np.log2(high - low + 1)).astype(np.int64)
-        return np.maximum(table[level, low], table[level, high - (1 << level) + 1])
+        flat = table.ravel()
+        return np.maximum(flat[self.first], flat[self.second])
 
 
 def _cumulative(tau: np.ndarray, values: np.ndarray) -> np.ndarray:
@@ -212,27 +217,35 @@ def _cumulative(tau: np.ndarray, values: np.ndarray) -> np.ndarray:
     return np.concatenate(([0.0], np.cumsum(0.5 * (values[1:] + values[:-1]) * np.diff(tau))))
 
 
-def accumulate(grid: np.ndarray, base: np.ndarray, per_turn: np.ndarray, period: float,
-               turns: np.ndarray, tau: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """int_0^t h(s) ds and int_0^t s h(s) ds for h(s) = base(sigma) + j per_turn(sigma),
-    s = j T + sigma (j whole periods), at t = turns T + tau.
+def accumulate(grid: np.ndarray, base: np.ndarray, per_turn: np.ndarray | None, period: float,
+               turns: np.ndarray, tau: np.ndarray, moment: bool = False) -> tuple[np.ndarray, np.ndarray | None]:
+    """int_0^t h(s) ds and (with ``moment``) int_0^t s h(s) ds for h(s) = base(sigma) +
+    j per_turn(sigma) (per_turn None: 0), s = j T + sigma (j whole periods), at t = turns T + tau.
 
     Over whole periods: sum_j (S0 + j S1) and sum_j (j T S0 + j^2 T S1 + R0 + j R1), S the
     period's integrals of base and per_turn, R those of sigma times them; the last part period
     from the cumulative integrals on ``grid``, linearly interpolated at ``tau``.
     """
-    p0, p1 = _cumulative(grid, base), _cumulative(grid, per_turn)
-    q0, q1 = _cumulative(grid, grid * base), _cumulative(grid, grid * per_turn)
-    s0, s1, r0, r1 = p0[-1], p1[-1], q0[-1], q1[-1]
     j = turns
     sum_j = j * (j - 1) / 2.0
-    sum_j2 = (j - 1) * j * (2 * j - 1) / 6.0
-    part0, part1 = np.interp(tau, grid, p0), np.interp(tau, grid, p1)
-    first = j * s0 + sum_j * s1 + part0 + j * part1
-    moment = (period * s0 * sum_j + period * s1 * sum_j2 + j * r0 + sum_j * r1
-              + j * period * part0 + j * j * period * part1
-              + np.interp(tau, grid, q0) + j * np.interp(tau, grid, q1))
-    return first, moment
+    p0 = _cumulative(grid, base)
+    part0 = np.interp(tau, grid, p0)
+    first = j * p0[-1] + part0
+    second = None
+    if moment:
+        q0 = _cumulative(grid, grid * base)
+        second = period * p0[-1] * sum_j + j * q0[-1] + j * period * part0 + np.interp(tau, grid, q0)
+    if per_turn is None:
+        return first, second
+    p1 = _cumulative(grid, per_turn)
+    part1 = np.interp(tau, grid, p1)
+    first += sum_j * p1[-1] + j * part1
+    if second is not None:
+        q1 = _cumulative(grid, grid * per_turn)
+        sum_j2 = (j - 1) * j * (2 * j - 1) / 6.0
+        second += (period * p1[-1] * sum_j2 + sum_j * q1[-1] + j * j * period * part1
+                   + j * np.interp(tau, grid, q1))
+    return first, second
 
 
 def allowance(t: np.ndarray, theta: np.ndarray, omega: np.ndarray, experiment: Experiment,
@@ -289,23 +302,25 @@ def allowance(t: np.ndarray, theta: np.ndarray, omega: np.ndarray, experiment: E
     rotation = d < 0
     # eps_theta <= rate (max(1, |theta(sigma)|) + 2 pi j) in revolution j; eps_omega = rate max(w0, |omega|)
     ms, mw = np.maximum(1.0, np.abs(g_theta)), np.maximum(w0, np.abs(g_omega))
-    turn = 2.0 * math.pi if rotation else 0.0
-    a_base, a_turn = np.abs(p_omega) * ms + np.abs(p_theta) * mw, turn * np.abs(p_omega)
-    e_base, e_turn = np.abs(n_theta) * ms + np.abs(g_omega) * mw, turn * np.abs(n_theta)
+    a_base = np.abs(p_omega) * ms + np.abs(p_theta) * mw
+    e_base = np.abs(n_theta) * ms + np.abs(g_omega) * mw
+    a_turn = 2.0 * math.pi * np.abs(p_omega) if rotation else None
+    e_turn = 2.0 * math.pi * np.abs(n_theta) if rotation else None
 
     turns = np.floor(elapsed / period)
     tau = np.clip(elapsed - turns * period, 0.0, period)
     along, _ = accumulate(grid, a_base, a_turn, period, turns, tau)
-    energy, energy_moment = accumulate(grid, e_base, e_turn, period, turns, tau)
+    energy, energy_moment = accumulate(grid, e_base, e_turn, period, turns, tau, moment=True)
+    assert energy_moment is not None
     drift = np.maximum(elapsed * energy - energy_moment, 0.0)
     shift = rate * (along + abs(kappa) * drift)
     # The a and kappa terms move the state along the orbit by a time within `shift`: by the mean
     # value theorem |x_i(t + u) - x_i(t)| <= shift max |f_i| over |u| <= shift, which holds where
     # f_i(t) = 0 too; p likewise over the same window (the orbit the energy error moves to).
-    window = WindowMax(grid, period)
+    window = WindowMax(grid, period, tau, shift)
     f_grid = np.abs(g_omega), np.abs(c * np.sin(g_theta))
     p_grid = np.abs(p_theta), np.abs(p_omega)
-    terms = {name: (local, shift * window(f_grid[i], tau, shift), rate * energy * window(p_grid[i], tau, shift))
+    terms = {name: (local, shift * window(f_grid[i]), rate * energy * window(p_grid[i]))
              for i, (name, local) in enumerate((("theta", local_theta), ("omega", local_omega)))}
     # beyond LINEAR_LIMIT of the energy gap 2 c |d| the run may have crossed the separatrix
     crossed = rate * energy >= LINEAR_LIMIT * 2.0 * c * abs(d)
