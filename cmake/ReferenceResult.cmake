@@ -1,6 +1,7 @@
 # The reference result of the default experiment, the exact solution, in both FMUs as the
 # layered standard for reference results, FMI-LS-REF 1.0.0-beta.1, lays it out:
-#   extra/org.fmi-standard.fmi-ls-ref/fmi-ls-manifest.xml   names each related file and its role
+#   extra/org.fmi-standard.fmi-ls-ref/fmi-ls-manifest.xml   names each related file, its role and its
+#                                                            SHA3-256 digest (cmake/ReferenceManifest.cmake)
 #   extra/org.fmi-standard.fmi-ls-ref/Pendulum_ref.csv       time and outputs, 1000 intervals (role result)
 #   extra/org.fmi-standard.fmi-ls-ref/Pendulum.exp           the default experiment in the
 #                                                            ma-hs-experiments format (role experiment/validation)
@@ -30,25 +31,6 @@ target_compile_options(write_reference_result PRIVATE ${WARNING_FLAGS})
 target_link_libraries(write_reference_result PRIVATE pendulum_core)
 
 set(REFERENCE_CS_DEVIATION 1e-6)
-file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/reference/fmi-ls-manifest.xml.new
-  "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-  "<fmiReferences\n"
-  "    xmlns:fmi-ls=\"http://fmi-standard.org/fmi-ls-manifest\"\n"
-  "    fmi-ls:fmi-ls-name=\"org.fmi-standard.fmi-ls-ref\"\n"
-  "    fmi-ls:fmi-ls-version=\"${REFERENCE_LS_VERSION}\"\n"
-  "    fmi-ls:fmi-ls-description=\"Layered Standard providing information on related files included in an FMU.\">\n"
-  "    <Related type=\"application/x-ma-hs-experiments\" source=\"Pendulum.exp\" role=\"experiment/validation\"\n"
-  "             description=\"The default experiment (the model description's DefaultExperiment and start values) "
-  "with its reference result\"/>\n"
-  "    <Related type=\"text/csv\" source=\"Pendulum_ref.csv\" role=\"result\"\n"
-  "             description=\"Exact solution (Jacobi elliptic functions) from the start values, "
-  "t = ${REFERENCE_START} .. ${REFERENCE_STOP} s in ${REFERENCE_INTERVALS} intervals: what the outputs are "
-  "without solver error; the Co-Simulation run at the default tolerance stays within ${REFERENCE_CS_DEVIATION} rad of it\"/>\n"
-  "    <Related type=\"text/html\" source=\"../../documentation/fmi-ls-ref.html\" role=\"document\"\n"
-  "             description=\"What the related files hold and what a correct run reproduces\"/>\n"
-  "</fmiReferences>\n")
-configure_file(${CMAKE_CURRENT_BINARY_DIR}/reference/fmi-ls-manifest.xml.new ${REFERENCE_DIR}/fmi-ls-manifest.xml
-               COPYONLY)
 file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/reference/Pendulum.exp.new
   "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
   "<Experiments name=\"Pendulum\"\n"
@@ -69,6 +51,16 @@ add_custom_command(
           ${REFERENCE_INTERVALS}
   DEPENDS write_reference_result
   COMMENT "Writing the reference result of the default experiment"
+  VERBATIM)
+add_custom_command(
+  OUTPUT ${REFERENCE_DIR}/fmi-ls-manifest.xml
+  COMMAND ${CMAKE_COMMAND} -DREFERENCE_DIR=${REFERENCE_DIR} -DREFERENCE_HTML=${REFERENCE_HTML}
+          -DLS_VERSION=${REFERENCE_LS_VERSION} -DSTART=${REFERENCE_START} -DSTOP=${REFERENCE_STOP}
+          -DINTERVALS=${REFERENCE_INTERVALS} -DCS_DEVIATION=${REFERENCE_CS_DEVIATION}
+          -P ${CMAKE_CURRENT_SOURCE_DIR}/cmake/ReferenceManifest.cmake
+  DEPENDS ${REFERENCE_DIR}/Pendulum_ref.csv ${REFERENCE_DIR}/Pendulum.exp ${REFERENCE_HTML}
+          ${CMAKE_CURRENT_SOURCE_DIR}/cmake/ReferenceManifest.cmake
+  COMMENT "Writing the FMI-LS-REF manifest with the files' SHA3-256 digests"
   VERBATIM)
 
 # Adds extra/ and documentation/fmi-ls-ref.html to a packed FMU: copies them into its folder

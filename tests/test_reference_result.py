@@ -7,6 +7,7 @@ lay them out."""
 
 from __future__ import annotations
 
+import hashlib
 import io
 import posixpath
 import re
@@ -99,6 +100,8 @@ def test_manifest_follows_the_standard(fmu_any: Path) -> None:
         member = posixpath.normpath(posixpath.join(FOLDER, entry.get("source", "")))
         assert member in names, member  # a relative source resolves against the manifest's folder
         assert entry.get("description")
+        assert entry.get("checksumType", "SHA3-256") == "SHA3-256"
+        assert entry.get("checksum") == hashlib.sha3_256(archive.read(member)).hexdigest(), member
 
 
 def test_the_exp_file_is_the_default_experiment(fmu_any: Path) -> None:
