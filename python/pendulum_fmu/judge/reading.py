@@ -27,7 +27,9 @@ from __future__ import annotations
 
 import csv
 import io
+import os
 import re
+from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -49,6 +51,8 @@ _SKIPPED_LINES = re.compile(rb"^[ \t]*(?:#[^\n]*)?\r?(?:\n|\Z)", re.MULTILINE)
 _NONBLANK = re.compile(rb"\S")
 _BLANK_LINE = re.compile(rb"\n[ \t]+\r?\n")
 """A line of blanks only (Arrow skips an empty line, not one of blanks)."""
+HEAD_BYTES = 1 << 16
+"""The bytes read to recognise a file (Parquet's signature, the CSV header)."""
 PANDAS_INDEX = "__index_level_0__"
 """The column pandas stores an unnamed index in, in Parquet."""
 
@@ -214,30 +218,22 @@ def read_csv_bytes(raw: bytes, source: str, instance: str | None = None) -> Resu
     """Parse CSV bytes (UTF-8, see the module's description) into a :class:`Result`.
 
     Arrow reads the used columns as strings; their numbers and print formats are computed
-    column by column. What Arrow refuses (a short row, a cell that is not a number) goes to
+    column by column. Comment lines and lines of blanks are removed first (Arrow skips only
+    empty lines). What Arrow still refuses (a short row, a cell that is not a number) goes to
     :func:`read_csv_text`, which names the row.
     """
     if raw.startswith(b"\xef\xbb\xbf"):
         raw = raw[3:]
     raw = raw.lstrip()
-    if b"#" in raw or _BLANK_LINE.search(raw):
+    cleaned = b"#" in raw
+    if cleaned:
         raw = _SKIPPED_LINES.sub(b"", raw)
     end = raw.find(b"\n")
-    head = raw if end < 0 else raw[:end]
-    try:
-        header_line = head.decode("utf-8").rstrip("\r")
-    except UnicodeDecodeError:
-        raise ReadError(f"{source}: not a text (CSV) or Parquet file") from None
-    if not header_line.strip():
-        raise ReadError(f"{source}: empty (no header, no rows)")
-    delimiter = _delimiter(header_line)
+    header_line, delimiter, header = _header(raw if end < 0 else raw[:end], source)
     body = pa.py_buffer(raw).slice(len(raw) if end < 0 else end + 1)  # no copy
     if delimiter is None:  # blanks: one comma between fields
-        header = header_line.split()
         body = pa.py_buffer(re.sub(rb"[ \t]+", b",", re.sub(rb"(?m)^[ \t]+|[ \t]+(?=\r?$)", b"",
                                                               body.to_pybytes())))
-    else:
-        header = next(csv.reader([header_line], delimiter=delimiter, skipinitialspace=True))
     if end < 0 or not _NONBLANK.search(raw, end + 1):
         raise ReadError(f"{source}: a header and no rows")
     time_index, picked, used = _pick(header, instance, source)
@@ -245,6 +241,8 @@ def read_csv_bytes(raw: bytes, source: str, instance: str | None = None) -> Resu
     try:
         numbers, formats = _parse(body, len(header), delimiter or ",", wanted)
     except _Unparsed:
+        if not cleaned and _BLANK_LINE.search(raw):
+            return read_csv_bytes(_SKIPPED_LINES.sub(b"", raw), source, instance)
         try:
             text = raw.decode("utf-8")
         except UnicodeDecodeError:
@@ -254,16 +252,60 @@ def read_csv_bytes(raw: bytes, source: str, instance: str | None = None) -> Resu
     return _assemble(numbers, formats, columns, used, source)
 
 
-def _parse(body: pa.Buffer, width: int, delimiter: str, wanted: dict[str, int]) -> tuple[dict[str, np.ndarray],
-                                                                                   dict[str, Format]]:
-    """Numbers and formats of the ``wanted`` columns (name -> index) of the CSV rows ``body``."""
+def _header(line: bytes, source: str) -> tuple[str, str | None, list[str]]:
+    """The header line as text, its delimiter (None: blanks) and its names."""
+    try:
+        text = line.decode("utf-8").rstrip("\r")
+    except UnicodeDecodeError:
+        raise ReadError(f"{source}: not a text (CSV) or Parquet file") from None
+    if not text.strip():
+        raise ReadError(f"{source}: empty (no header, no rows)")
+    delimiter = _delimiter(text)
+    if delimiter is None:
+        return text, None, text.split()
+    return text, delimiter, next(csv.reader([text], delimiter=delimiter, skipinitialspace=True))
+
+
+def read_csv_file(path: Path, head: bytes, instance: str | None = None) -> Result:
+    """Parse a CSV file whose first bytes are ``head``: Arrow reads the file itself when it
+    begins with its header (no byte order mark, comment or blank line before it) and has a
+    delimiter; anything else, or anything Arrow refuses, is read as :func:`read_csv_bytes`."""
+    end = head.find(b"\n")
+    source = str(path)
+    if end > 0 and head[:1] not in (b"\xef", b"#", b" ", b"\t", b"\r"):
+        _, delimiter, header = _header(head[:end], source)
+        if delimiter is not None:
+            time_index, picked, used = _pick(header, instance, source)
+            wanted = {"time": time_index, **picked}
+            try:
+                numbers, formats = _parse(str(path), len(header), delimiter, wanted, skip_rows=1)
+            except _Unparsed:
+                pass
+            else:
+                if numbers["time"].size == 0:
+                    raise ReadError(f"{source}: a header and no rows")
+                columns = {name: header[c].strip().strip('"') for name, c in wanted.items()}
+                return _assemble(numbers, formats, columns, used, source)
+    try:
+        raw = path.read_bytes()
+    except OSError as error:
+        raise ReadError(f"{path}: {error.strerror or error}") from None
+    return read_csv_bytes(raw, source, instance)
+
+
+def _parse(body: pa.Buffer | str, width: int, delimiter: str, wanted: dict[str, int],
+           skip_rows: int = 0) -> tuple[dict[str, np.ndarray], dict[str, Format]]:
+    """Numbers and formats of the ``wanted`` columns (name -> index) of the CSV rows in
+    ``body`` (bytes, or a file whose first ``skip_rows`` lines are skipped); the columns
+    are converted in threads (Arrow and numpy release the interpreter)."""
     import pyarrow.csv as pacsv  # noqa: PLC0415
 
     names = [f"c{i}" for i in range(width)]
     used = {name: names[c] for name, c in wanted.items()}
     try:
-        table = pacsv.read_csv(pa.BufferReader(body),
-                               read_options=pacsv.ReadOptions(column_names=names, block_size=1 << 24),
+        table = pacsv.read_csv(pa.BufferReader(body) if isinstance(body, pa.Buffer) else body,
+                               read_options=pacsv.ReadOptions(column_names=names, block_size=1 << 24,
+                                                              skip_rows=skip_rows),
                                parse_options=pacsv.ParseOptions(delimiter=delimiter, ignore_empty_lines=True),
                                convert_options=pacsv.ConvertOptions(include_columns=sorted(set(used.values())),
                                                                     column_types=dict.fromkeys(used.values(),
@@ -272,11 +314,11 @@ def _parse(body: pa.Buffer, width: int, delimiter: str, wanted: dict[str, int]) 
                                                                     quoted_strings_can_be_null=False))
     except (pa.ArrowInvalid, UnicodeDecodeError):
         raise _Unparsed from None
-    numbers, formats = {}, {}
-    for name, column in used.items():
-        numbers[name], counts = _column_numbers(table.column(column), delimiter == ";")
-        formats[name] = counts.format()
-    return numbers, formats
+    with ThreadPoolExecutor(max_workers=min(len(used), os.cpu_count() or 1)) as pool:
+        done = {name: pool.submit(_column_numbers, table.column(column), delimiter == ";")
+                for name, column in used.items()}
+        parsed = {name: future.result() for name, future in done.items()}
+    return {name: p[0] for name, p in parsed.items()}, {name: p[1].format() for name, p in parsed.items()}
 
 
 def _from_columns(columns: dict[str, Any], source: str, instance: str | None) -> Result:
@@ -349,13 +391,13 @@ def read_result(data: Any, instance: str | None = None) -> Result:
     if isinstance(data, (str, Path)):
         path = Path(data)
         try:
-            raw = path.read_bytes()
+            with path.open("rb") as handle:
+                head = handle.read(HEAD_BYTES)
         except OSError as error:
             raise ReadError(f"{path}: {error.strerror or error}") from None
-        if raw[:4] == b"PAR1":
-            del raw
+        if head[:4] == b"PAR1":
             return _read_parquet(path, instance)
-        return read_csv_bytes(raw, str(path), instance)
+        return read_csv_file(path, head, instance)
     if hasattr(data, "columns") and hasattr(data, "index") and hasattr(data, "__getitem__"):  # a pandas DataFrame
         return _from_columns(_frame_columns(data), type(data).__name__, instance)
     if isinstance(data, np.ndarray) and data.dtype.names:
@@ -379,4 +421,4 @@ def describe_digits(result: Result) -> str:
 
 
 __all__ = ["DEFAULT_PRECISION", "Format", "ReadError", "Result", "VARIABLES", "describe_digits", "read_csv_bytes",
-           "read_csv_text", "read_result"]
+           "read_csv_file", "read_csv_text", "read_result"]
