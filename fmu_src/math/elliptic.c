@@ -16,7 +16,7 @@
 #define BOTTOM_M 5e-8
 
 /* ------------------------------------------------------------------------------------- */
-/* Complete and incomplete integrals                                                      */
+/* K and Carlson's R_F                                                                     */
 /* ------------------------------------------------------------------------------------- */
 
 /* K from k' = sqrt(m1) in double-double (k' > 0): K = (pi/2) / AGM(1, k').
@@ -52,17 +52,6 @@ static DoubleDouble K_dd_of_root(DoubleDouble kc)
         a = a_next;
     }
     return dd_of(NAN);
-}
-
-DoubleDouble elliptic_K_dd(DoubleDouble m1)
-{
-    if (!(m1.hi >= 0.0)) {
-        return dd_of(NAN);
-    }
-    if (m1.hi == 0.0) {
-        return dd_of(INFINITY);
-    }
-    return K_dd_of_root(dd_sqrt(m1));
 }
 
 double elliptic_RF(double x, double y, double z)
@@ -148,7 +137,7 @@ int elliptic_param_init_root(EllipticParam *p, double m, double m1_hi, double m1
         q->sqrt_k1 = 1.0;
         return 0;
     }
-    DoubleDouble K = K_dd_of_root(kc);   /* elliptic_K_dd(m1), sharing the root */
+    DoubleDouble K = K_dd_of_root(kc);
     q->K_hi = K.hi;
     q->K_lo = K.lo;
     q->inv_K = 1.0 / K.hi;
@@ -184,32 +173,6 @@ int elliptic_param_init_root(EllipticParam *p, double m, double m1_hi, double m1
                                           dd_of(1.0 + m_n * (0.25 + m_n * (9.0 / 64.0))));
     q->bottom_scale = dd_div(K_bottom, K).hi;
     return 0;
-}
-
-double elliptic_reduce(const EllipticParam *p, double u_hi, double u_lo, double *quarters)
-{
-    double n = dd_nearest_integer((u_hi + u_lo) * p->inv_K);
-    if (n == 0.0 || !(p->K_hi < INFINITY)) {
-        *quarters = 0.0;
-        return u_hi + u_lo;
-    }
-    *quarters = n;
-    if (fabs(n) < 0x1p26) {
-        /* Cody-Waite: n K_head and n K_tail are exact; u_hi - n K_head is exact once n is
-         * more than a few (Sterbenz), otherwise all terms are small. */
-        return ((u_hi - n * p->K_head) - n * p->K_tail) + (u_lo - n * p->K_lo);
-    }
-    if (fabs(n) < 0x1p52) {
-        /* Large n: n K_hi = prod.hi + prod.lo exactly by a two-product. */
-        DoubleDouble prod = dd_two_prod(n, p->K_hi);
-        return ((u_hi - prod.hi) - prod.lo) + (u_lo - n * p->K_lo);
-    }
-    /* Beyond 2^52 quarter periods doubles cannot resolve the phase; the exact remainder
-     * modulo K_hi (C99 remquo, which also gives n mod 8) keeps the result finite. */
-    int quotient_bits = 0;
-    double r = remquo(u_hi, p->K_hi, &quotient_bits);
-    *quarters = isnan(r) ? 0.0 : (double)(quotient_bits % 8);
-    return r;
 }
 
 int elliptic_quarter_of(double n)

@@ -8,13 +8,14 @@
  * the caller's m1 (for the pendulum: a product of cosines) carries digits that 1 - m has lost.
  *
  * Method (why it is accurate for m1 -> 0):
- *  - K by the arithmetic-geometric mean from k' (A&S 17.6.1-2, DLMF 19.8.5) in double-double.
+ *  - K by the arithmetic-geometric mean from k' (A&S 17.6.1-2, DLMF 19.8.5) in double-double,
+ *    formed with the parameter set (elliptic_param_init).
  *  - sn, cn, dn by the descending Landen (Gauss) transformation A&S 16.12.2-4 in its
  *    algebraic form, i.e. the AGM sequence of moduli k_{n+1} = (1 - k_n')/(1 + k_n') of
  *    A&S 17.5 / 16.4, bottomed out with the small-parameter expansions A&S 16.13.1-3.
- *    The caller reduces the argument to u = n K + v, |v| <= K/2 (elliptic_reduce), and
- *    applies the quarter-period identities A&S 16.8.1-3 (sn(v+K) = cd v, cn(v+K) = -k' sd v,
- *    dn(v+K) = k'/dn v) by n mod 4 (elliptic_quarter_of).
+ *    The caller reduces the argument to u = n K + v, |v| <= K/2 (exact.c: its phase in
+ *    quarter periods), and applies the quarter-period identities A&S 16.8.1-3
+ *    (sn(v+K) = cd v, cn(v+K) = -k' sd v, dn(v+K) = k'/dn v) by n mod 4 (elliptic_quarter_of).
  *    On |v| <= K/2 every quantity of every Landen level is positive and is formed from
  *    products and sums of positive numbers only (1 - k s^2 is written (1 - k) + k c^2), so
  *    sn, cn and dn all keep their relative accuracy, including dn(K/2) = sqrt(k'), and the
@@ -50,14 +51,8 @@
 #define elliptic_two_prod dd_two_prod
 
 /* ---------------------------------------------------------------------------------------
- * The complete integral of the first kind and Carlson's R_F.
+ * Carlson's R_F (the complete integral K is part of EllipticParam).
  * --------------------------------------------------------------------------------------- */
-
-/* K(m) = pi / (2 AGM(1, sqrt(m1)))  (A&S 17.6.1-2, DLMF 19.8.5) in double-double, from
- * m1 = 1 - m >= 0 in double-double (m1 may exceed 1, i.e. m < 0): the AGM in double-double
- * until the pair is within 2^-15 of each other, then the series of 2F1 (elliptic.c).
- * Returns +INFINITY for m1 == 0 and NaN for m1 < 0 or NaN. */
-DoubleDouble elliptic_K_dd(DoubleDouble m1);
 
 /* Carlson's symmetric integral R_F(x, y, z) = 1/2 int_0^inf dt / sqrt((t+x)(t+y)(t+z))
  * for x, y, z >= 0, at most one of them 0 (DLMF 19.16.1), by the duplication theorem
@@ -75,7 +70,9 @@ typedef struct {
     double m, m1;           /* parameter and complementary parameter (m1 as given) */
     double k, kc;           /* modulus sqrt(m) and complementary modulus sqrt(m1) */
     double K_hi, K_lo;      /* K(m) in double-double; K_hi = +INFINITY when m1 == 0 */
-    double inv_K;           /* 1 / K_hi, for the quotient estimate of the reduction */
+    /* For a reduction of an argument by K (tests/c/test_elliptic.c); exact.c reduces its phase
+     * in quarter periods from its own rates instead. Part of the solution's bytes (FMU states). */
+    double inv_K;           /* 1 / K_hi, the quotient estimate */
     double K_head, K_tail;  /* K_hi = K_head + K_tail, each with at most 27 significant bits,
                                so n K_head and n K_tail are exact for |n| < 2^26 (Cody-Waite) */
     double bottom_scale;    /* z_N = v * bottom_scale = v / prod(1 + k_n), n = 1..N */
@@ -97,15 +94,6 @@ int elliptic_param_init(EllipticParam *p, double m, double m1_hi, double m1_lo);
  * from m1), for a caller that has it without a square root (the pendulum from rest:
  * k' = cos(theta0/2)). */
 int elliptic_param_init_root(EllipticParam *p, double m, double m1_hi, double m1_lo, const DoubleDouble *root);
-
-/* Reduces u = u_hi + u_lo to u = n K + r with n = nearest integer to u / K, so |r| <= K/2
- * (up to rounding of the quotient). Returns r; *quarters = n (an integer-valued double).
- * u_lo need not be small (it may hold a phase offset of a few K). K is used in double-double
- * and n K is formed exactly (Cody-Waite: n K_head + n K_tail for |n| < 2^26, a two-product
- * up to 2^52), so r keeps the absolute accuracy of u even for n in the millions. Beyond
- * 2^52 quarter periods (no phase resolvable) r = remquo(u_hi, K_hi) and n is only right
- * mod 8. When K is infinite, returns u_hi + u_lo, n = 0. */
-double elliptic_reduce(const EllipticParam *p, double u_hi, double u_lo, double *quarters);
 
 /* Above this |z| the bottom level calls libm's sin and cos, below it trig_sincos_small
  * (trig.h: their Maclaurin series to z^17 and z^16, no range reduction). */
@@ -206,7 +194,7 @@ static inline EllipticHomogeneous elliptic_landen_ascend(const EllipticParam *p,
 }
 
 /* sn, cn, dn of a reduced argument v (|v| <= K/2 for full relative accuracy; accurate to a
- * few ulps of v up to |v| <= K; reduce a larger |v| with elliptic_reduce first) in homogeneous
+ * few ulps of v up to |v| <= K; a larger |v| is reduced by K first) in homogeneous
  * form: sn = *S / *D, cn = *C / *D, dn = *E / *D with *D > 0, by the descending Landen
  * scheme above. */
 static inline void elliptic_sncndn_homogeneous(const EllipticParam *p, double v,
