@@ -15,8 +15,8 @@ fmi-cross-check write it, or Parquet) and check it against the exact solution: t
 (monotone, step, drift from k h), the theta_exact/omega_exact columns against
 pendulum_fmu.exact at the file's own times, theta and omega against the exact solution (largest
 error, where, growth), isolated mangled values, and the bound: in CS the certificate's
-100 tol max(1, |theta_e|) (omega: max(w0, |omega_e|)); in ME 1000 tol times A(t), the sum of
-one such error per period grown by the pendulum's own sensitivity (docs/importers.md). When
+100 tol max(1, |theta_e|) (omega: max(w0, |omega_e|)); in ME 300 tol of local error per
+natural period, propagated by the pendulum's linearised flow and summed (docs/importers.md). When
 it fails the judge says what fits: other parameters or start values, a fixed-step method,
 another tolerance. The check "fmpy band" reports what fmpy's cross-check validation (a band
 of 10 % of each signal's range) says of the same file; it never decides.

@@ -75,10 +75,10 @@ def write_plot(verdict: Verdict, data: Any, path: Path) -> None:
     for ax, (name, error) in zip(axes[:, 0], errors.items()):
         ax.semilogy(result.time, np.maximum(np.abs(error), tiny), lw=1, label=f"|{name} - {name}_exact|")
         me = verdict.experiment.interface == "ME"
-        factor = "1000 tol" if me else "100 tol"
+        factor = f"{checks.ME_FACTOR:g} tol" if me else f"{checks.CS_FACTOR:g} tol"
         scale = "max(1, |theta_e|)" if name == "theta" else "max(w0, |omega_e|)"
         ax.semilogy(result.time, checks.bound(name, ref, verdict.experiment), "k--", lw=1.2,
-                    label=f"bound {factor} {scale}" + (" A(t)" if me else ""))
+                    label=f"bound {factor} {scale}" + (" x growth" if me else ""))
         exact_name = f"{name}_exact"
         mismatch = checks.exact_mismatch(result, ref, verdict.experiment).get(exact_name)
         if mismatch is not None and np.any(mismatch[0] > mismatch[1]):
