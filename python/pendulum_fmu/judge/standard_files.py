@@ -41,7 +41,7 @@ def judge_with_experiment(data: Any, *, start: list[str] | None = None, interfac
     verdict = judge(data, start=pairs, interface=chosen, instance=instance, step=step, fmu=fmu)
     if settings is None or step is not None or settings.step is None:
         return verdict, settings
-    grid = verdict.check("time grid").figures
+    grid = next((check.figures for check in verdict.checks if check.name == "time grid"), {})
     if {"start", "end", "rows", "step"} <= grid.keys() and settings.covers(grid["start"], grid["end"], grid["rows"]) \
             and grid["step"] != settings.step:
         verdict = judge(data, start=pairs, interface=chosen, instance=instance, step=settings.step, fmu=fmu)
