@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import sys
 
 import pendulum_fmu.bench.judge as bench_judge
 from pendulum_fmu.cli.arguments import add_fmu_argument, integer, plain_text
@@ -30,7 +31,11 @@ def configure(parser: argparse.ArgumentParser) -> None:
 def run(args: argparse.Namespace) -> int:
     """Write the files, judge each warm in a child process, print the table against the targets."""
     fmu = locate_fmu(args.fmu)
-    timings = bench_judge.measure(fmu, tuple(args.rows), tuple(args.interface))
+    try:
+        timings = bench_judge.measure(fmu, tuple(args.rows), tuple(args.interface))
+    except (RuntimeError, OSError) as error:
+        print(f"pendulum-fmu bench judge: {error}", file=sys.stderr)
+        return 1
     print(f"honest runs of the FMU's rkn (tol 1e-8, {bench_judge.AMPLITUDE_DEG:g} deg, an output every "
           f"{bench_judge.OUTPUT_INTERVAL:g} s), CSV; each judged warm in a child process; FMU {fmu}")
     print("| rows | interface | read s | judge s (total) | target s | peak RSS MB (target 1024) | verdict | within |")
