@@ -165,15 +165,17 @@ def _run_columns(rows: int = 1001) -> dict[str, np.ndarray]:
 
 
 @pytest.mark.parametrize("index_name", ["time", None, "Time"])
-def test_a_dataframe_indexed_by_time(index_name: str | None) -> None:
+def test_a_dataframe_indexed_by_time(tmp_path: Path, index_name: str | None) -> None:
     pd = pytest.importorskip("pandas", reason="pip install pandas==3.1.1")
     columns = _run_columns()
     frame = pd.DataFrame({"theta": columns["theta"], "omega": columns["omega"]},
                          index=pd.Index(columns["time"], name=index_name))
-    result = read_result(frame)
-    assert np.array_equal(result.time, columns["time"])
-    assert np.array_equal(result.values["theta"], columns["theta"])
-    assert judge(frame).passed
+    frame.to_parquet(tmp_path / "frame.parquet")  # the index goes with it, named or as __index_level_0__
+    for data in (frame, tmp_path / "frame.parquet"):
+        result = read_result(data)
+        assert np.array_equal(result.time, columns["time"])
+        assert np.array_equal(result.values["theta"], columns["theta"])
+        assert judge(data).passed
 
 
 def test_a_dataframe_with_the_default_index_and_no_time_is_refused() -> None:
