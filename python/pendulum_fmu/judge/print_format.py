@@ -1,6 +1,7 @@
 """How a CSV column was printed, from its cells, and what that print can resolve.
 
-The cells are measured as Arrow string arrays, every cell at once (``pyarrow.compute``):
+The cells are measured as Arrow string arrays, every cell at once (``pyarrow.compute`` on
+the cells, numpy on their lengths and positions, a byte search for the rare exponent mark):
 significant digits of the mantissa (leading zeros, sign and point not counted; trailing
 zeros counted: ``1.500`` has 4) and digits after the point when there is no exponent. A
 column whose cells all have the same number d > 0 of decimals was printed as ``%.{d}f``;
