@@ -12,6 +12,8 @@ from __future__ import annotations
 import hashlib
 import json
 import math
+import os
+from collections import Counter
 from pathlib import Path
 
 import numpy as np
@@ -32,8 +34,15 @@ def _require_fmus() -> None:
 
 @pytest.fixture(scope="session")
 def corpus_root(tmp_path_factory: pytest.TempPathFactory) -> Path:
-    """Both parts generated, each into its own folder."""
+    """Both parts generated, each into its own folder; with ``PENDULUM_JUDGE_CORPUS=DIR`` the
+    corpus that ``tests/judge_corpus.py DIR`` generated there (to judge it again quickly)."""
     _require_fmus()
+    given = os.environ.get("PENDULUM_JUDGE_CORPUS")
+    if given:
+        root = Path(given)
+        for part in corpus.PARTS:
+            assert (root / part / "manifest.json").exists(), f"PENDULUM_JUDGE_CORPUS={given}: no {part}/manifest.json"
+        return root
     root = tmp_path_factory.mktemp("judge_corpus")
     for part in corpus.PARTS:
         corpus.generate(root / part, part)
@@ -58,7 +67,7 @@ def test_corpus_sizes_and_kinds(corpus_root: Path) -> None:
     """At least 2,000 honest runs in all, every engine, FMI version, interface, regime and wrong
     kind in both parts, the held-out part about a quarter of the whole."""
     cases = {part: corpus.load(corpus_root / part) for part in corpus.PARTS}
-    honest = {part: [c for c in found if c.corpus == "honest"] for part, found in cases.items()}
+    honest = {part: [c for c in found if c.kind == "honest"] for part, found in cases.items()}
     assert sum(len(h) for h in honest.values()) >= 2000
     share = len(honest["held-out"]) / sum(len(h) for h in honest.values())
     assert 0.2 <= share <= 0.3, share
