@@ -86,3 +86,30 @@ def test_compare_writes_one_png(fmu_path: Path, tmp_path: Path, capsys: pytest.C
     printed = capsys.readouterr().out
     assert "method    CS rk4, tol 1e-06" in printed
     assert "max |theta - theta_exact| = " in printed
+
+
+@pytest.mark.parametrize("solver", ["rkn", "cvode"])
+def test_simulate_reads_the_fmu_once_and_initializes_it_once(fmu_path: Path, tmp_path: Path, solver: str,
+                                                             monkeypatch: pytest.MonkeyPatch,
+                                                             capsys: pytest.CaptureFixture[str]) -> None:
+    """--fmu's check, the FMI version and the runner share one reading of the model description;
+    the size check reads the period of the run's own initialization."""
+    import fmpy
+
+    from pendulum_fmu.fmu import identity, locate
+
+    copy = tmp_path / "Pendulum.fmu"   # a file no earlier test has read
+    copy.write_bytes(fmu_path.read_bytes())
+    identity._read_description.cache_clear()
+    locate._runnable_problem.cache_clear()
+    readings: list[object] = []
+    read = fmpy.read_model_description
+    monkeypatch.setattr(fmpy, "read_model_description", lambda *a, **k: readings.append(a) or read(*a, **k))
+    initializations: list[object] = []
+    initialize = FmuRunner._initialize
+    monkeypatch.setattr(FmuRunner, "_initialize",
+                        lambda runner, *args: initializations.append(args) or initialize(runner, *args))
+    assert main(["simulate", "-p", "1", "-s", solver, "--fmu", str(copy), "--fmi-version", "2"]) == 0
+    assert "max |theta - theta_exact|" in capsys.readouterr().out
+    assert len(readings) == 1
+    assert len(initializations) == 1   # Model Exchange: fmpy's simulate_fmu initializes once more, itself

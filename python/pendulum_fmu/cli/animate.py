@@ -8,7 +8,6 @@ from pathlib import Path
 from pendulum_fmu.cli.arguments import (add_fmu_argument, add_method_arguments, add_pendulum_arguments, integer, method_from,
                         output_file, pendulum_from, positive)
 from pendulum_fmu.cli.extras import require_extra
-from pendulum_fmu.fmu.locate import locate_fmu
 from pendulum_fmu.spec import StopUnit
 
 NAME = "animate"
@@ -56,7 +55,7 @@ def run(args: argparse.Namespace) -> int:
     pendulum, method = pendulum_from(args), method_from(args)
     unit: StopUnit = "s" if args.stop_time is not None else "periods"
     stop = args.stop_time if unit == "s" else args.periods or 2.0
-    trajectory = animate(locate_fmu(args.fmu), pendulum, method, stop, unit, args.out, args.fps, args.speed)
+    trajectory = animate(args.fmu, pendulum, method, stop, unit, args.out, args.fps, args.speed)
     print("\n".join(summary_lines(trajectory)))
     print(f"written   {args.out} ({trajectory.result.size} frames at {args.fps} frames/s)")
     return 0

@@ -210,18 +210,20 @@ def add_fmu_argument(parser: argparse.ArgumentParser) -> None:
 def resolve_fmu(args: argparse.Namespace) -> None:
     """Settle ``args.fmu`` from ``--fmu`` and ``--fmi-version`` (a no-op for commands without them).
 
-    ``--fmi-version 3`` without ``--fmu`` puts the FMI 3.0 FMU's path in ``args.fmu``; with
-    ``--fmu`` the file's version must be the one asked.
+    The one place a command's FMU is found (and built when its sources changed): the command
+    runs ``args.fmu`` as it is afterwards. ``--fmi-version 3`` without ``--fmu`` puts the FMI
+    3.0 FMU's path in ``args.fmu``; with ``--fmu`` the file's version must be the one asked.
 
     Raises
     ------
     UsageError
         If the versions disagree or no FMU of the version asked is found.
+    BuildError
+        If CMake fails to rebuild the checkout's FMU.
     """
-    version = getattr(args, "fmi_version", None)
-    if version is None:
+    if not hasattr(args, "fmi_version"):
         return
-    args.fmu = locate_fmu(args.fmu, fmi_version=version)
+    args.fmu = locate_fmu(args.fmu, fmi_version=args.fmi_version)
 
 
 def add_pendulum_arguments(parser: argparse.ArgumentParser, default_amplitude: str = "75") -> None:

@@ -7,7 +7,6 @@ from pathlib import Path
 
 from pendulum_fmu.cli.arguments import (add_fmu_argument, add_method_arguments, add_pendulum_arguments, add_time_arguments,
                         grid_from, method_from, output_file, pendulum_from)
-from pendulum_fmu.fmu.locate import locate_fmu
 
 NAME = "compare"
 HELP = "numerical against exact theta and the error over time, as one PNG"
@@ -39,7 +38,7 @@ def run(args: argparse.Namespace) -> int:
     from pendulum_fmu.figures.comparison import compare
 
     pendulum, method, grid = pendulum_from(args), method_from(args), grid_from(args)
-    trajectory = compare(locate_fmu(args.fmu), pendulum, method, grid, args.out)
+    trajectory = compare(args.fmu, pendulum, method, grid, args.out)
     print("\n".join(summary_lines(trajectory)))
     print(f"written   {args.out}")
     return 0

@@ -9,7 +9,6 @@ import numpy as np
 
 from pendulum_fmu.cli.arguments import (add_fmu_argument, add_method_arguments, add_pendulum_arguments, add_time_arguments,
                         grid_from, method_from, output_file, pendulum_from)
-from pendulum_fmu.fmu.locate import locate_fmu
 
 if TYPE_CHECKING:
     from pendulum_fmu.fmu.runner import Trajectory
@@ -76,7 +75,7 @@ def run(args: argparse.Namespace) -> int:
     pendulum, method, grid = pendulum_from(args), method_from(args), grid_from(args)
     from pendulum_fmu.sizing import planned_run
 
-    with FmuRunner(locate_fmu(args.fmu)) as runner:
+    with FmuRunner(args.fmu) as runner:
         trajectory = planned_run(runner, pendulum, method, grid)  # refused at once when it cannot fit
     print("\n".join(summary_lines(trajectory)))
     if args.out is not None:

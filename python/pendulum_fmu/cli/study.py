@@ -7,7 +7,6 @@ import sys
 from pathlib import Path
 
 from pendulum_fmu.cli.arguments import add_fmu_argument, output_folder, positive
-from pendulum_fmu.fmu.locate import locate_fmu
 from pendulum_fmu.output.paths import make_output_folder
 
 NAME = "study"
@@ -41,7 +40,7 @@ def run(args: argparse.Namespace) -> int:
     """Run the study with parsed arguments; write plots, CSV, table and reports to ``args.out``."""
     from pendulum_fmu.study.job import write_study
 
-    fmu = locate_fmu(args.fmu)
+    fmu = args.fmu
     make_output_folder(args.out)
     def progress(line: str) -> None:
         print(f"study: {line} ...", file=sys.stderr, flush=True)

@@ -14,7 +14,6 @@ from pendulum_fmu.cli.arguments import (add_fmu_argument, angle_degrees, describ
                                         positive, solver_list, tolerance)
 from pendulum_fmu.cli.extras import require_extra
 from pendulum_fmu.errors import UsageError
-from pendulum_fmu.fmu.locate import locate_fmu
 from pendulum_fmu.spec import DEFAULT_CS_SOLVER
 from pendulum_fmu.sweep.grid import SweepGrid
 
@@ -114,7 +113,7 @@ def run(args: argparse.Namespace) -> int:
     workers = args.workers or os.cpu_count() or 1
     seconds = check_sweep(total, math.ceil(args.periods * args.points_per_period) + 1,
                           1 if args.scheduler else workers)  # refused at once when it cannot fit
-    fmu = locate_fmu(args.fmu)
+    fmu = args.fmu
     print(f"sweep of {runs_text(total)}: amplitude {describe(sweep.amplitudes_deg, ' deg')}, "
           f"omega0 {describe(sweep.omega0s, ' rad/s')}, L {describe(sweep.lengths, ' m')}, "
           f"g {describe(sweep.gravities, ' m/s^2')}, solvers {', '.join(sweep.solvers)}, "

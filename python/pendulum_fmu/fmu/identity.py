@@ -5,10 +5,15 @@ The package drives the FMU by its variables' names (``theta``, ``theta_exact``, 
 message about a missing variable, or run and record nonsense; so every entry point
 (:func:`~pendulum_fmu.fmu.locate.locate_fmu`, :class:`~pendulum_fmu.fmu.runner.FmuRunner`,
 :func:`~pendulum_fmu.sweep.run.run_sweep`) asks :func:`pendulum_problem` first.
+
+fmpy reads a file's model description once (:func:`read_description`): the check of the
+command line, the FMI version asked and the runner that loads the FMU share that reading, as
+long as the file is not changed on disk.
 """
 
 from __future__ import annotations
 
+from functools import lru_cache
 from pathlib import Path
 from typing import Any
 
@@ -69,8 +74,6 @@ def pendulum_problem(path: Path) -> str | None:
         ``'X.fmu' is not the Pendulum FMU of pendulum-fmu: ...`` when the model description
         cannot be read or describes another model.
     """
-    from fmpy import read_model_description
-
     def refused(problem: str) -> str:
         return (f"{str(path)!r} is not the Pendulum FMU of pendulum-fmu: {problem}; the package runs only its own "
                 "Pendulum.fmu (FMI 2.0 or 3.0)")
@@ -79,7 +82,7 @@ def pendulum_problem(path: Path) -> str | None:
         version = _root_attribute(Path(path), "fmiVersion")
         if version not in FMI_VERSIONS:   # fmpy would read it by the rules of its version, or fail oddly
             return refused(f"it is an FMI {version} FMU (the package runs FMI 2.0 and 3.0)")
-        description = read_model_description(str(path), validate=False)
+        description = read_description(path)
     except Exception as error:  # noqa: BLE001 (lxml, zipfile and fmpy raise many kinds)
         reason = " ".join(str(error).split()) or type(error).__name__
         return f"{str(path)!r} is not a usable FMU: its modelDescription.xml cannot be read ({reason})"
@@ -102,6 +105,36 @@ def _root_attribute(path: Path, name: str) -> str:
 
 def fmi_version_of(path: Path) -> int:
     """The major FMI version (2 or 3) of a Pendulum FMU that :func:`pendulum_problem` accepted."""
+    return FMI_VERSIONS[str(read_description(path).fmiVersion)]
+
+
+def file_key(path: Path) -> tuple[str, int, int]:
+    """``path`` as given, with the modification time (ns) and size of its model description's file.
+
+    Raises
+    ------
+    OSError
+        If there is no such file.
+    """
+    path = Path(path)
+    stat = (path / "modelDescription.xml" if path.is_dir() else path).stat()
+    return str(path), stat.st_mtime_ns, stat.st_size
+
+
+def read_description(path: Path) -> Any:
+    """fmpy's model description of an FMU file or extracted folder, read once per version of the file.
+
+    Raises
+    ------
+    Exception
+        Whatever reading it raises (OSError, zipfile's, lxml's and fmpy's errors).
+    """
+    return _read_description(*file_key(path))
+
+
+@lru_cache(maxsize=16)
+def _read_description(path: str, mtime_ns: int, size: int) -> Any:
+    """The reading behind :func:`read_description`; the time and size make a changed file a new key."""
     from fmpy import read_model_description
 
-    return FMI_VERSIONS[str(read_model_description(str(path), validate=False).fmiVersion)]
+    return read_model_description(path, validate=False)

@@ -14,12 +14,13 @@ from __future__ import annotations
 import os
 import shutil
 import zipfile
-from xml.etree import ElementTree
+from functools import lru_cache
 from pathlib import Path
+from xml.etree import ElementTree
 
 from pendulum_fmu.fmu.build import DEFAULT_BUILD_DIR, PACKAGED_FMU, PACKAGED_FMU3, REPO_ROOT, build_fmu, fmu3_in, fmu_in
 from pendulum_fmu.errors import BuildError, UsageError
-from pendulum_fmu.fmu.identity import fmi_version_of, pendulum_problem
+from pendulum_fmu.fmu.identity import file_key, fmi_version_of, pendulum_problem
 
 SOURCES: tuple[str, ...] = ("fmu_src", "modelDescription.xml", "CMakeLists.txt", "cmake", "fmi3", "reference")
 """What the FMUs (FMI 2.0 and 3.0) are built from, relative to the repository root."""
@@ -75,8 +76,22 @@ def fmu_problem(path: Path) -> str | None:
 
 def runnable_problem(path: Path) -> str | None:
     """Why the package cannot run ``path``: not an FMU file (:func:`fmu_problem`), or not this
-    project's Pendulum (:func:`~pendulum_fmu.fmu.identity.pendulum_problem`); None if it can."""
-    return fmu_problem(path) or pendulum_problem(path)
+    project's Pendulum (:func:`~pendulum_fmu.fmu.identity.pendulum_problem`); None if it can.
+
+    Checked once per version of the file: the command line's ``--fmu`` and :func:`locate_fmu`
+    ask again for free.
+    """
+    try:
+        key = file_key(path)
+    except OSError:
+        return fmu_problem(path) or pendulum_problem(path)
+    return _runnable_problem(*key)
+
+
+@lru_cache(maxsize=16)
+def _runnable_problem(path: str, mtime_ns: int, size: int) -> str | None:
+    """The check behind :func:`runnable_problem`; the time and size make a changed file a new key."""
+    return fmu_problem(Path(path)) or pendulum_problem(Path(path))
 
 
 def locate_fmu(explicit: Path | None = None, build: bool = True, fmi_version: int | None = None) -> Path:

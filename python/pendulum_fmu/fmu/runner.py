@@ -31,13 +31,13 @@ from types import TracebackType
 from typing import Any, Literal, Self
 
 import numpy as np
-from fmpy import extract, read_model_description, simulate_fmu
+from fmpy import extract, simulate_fmu
 from fmpy.fmi2 import FMU2Model, FMU2Slave
 from fmpy.fmi3 import FMU3Model, FMU3Slave
 
 from pendulum_fmu.errors import BuildError, SimulationError, UsageError
 from pendulum_fmu.fmu import driver
-from pendulum_fmu.fmu.identity import FMI_VERSIONS, description_problem
+from pendulum_fmu.fmu.identity import FMI_VERSIONS, description_problem, read_description
 from pendulum_fmu.interrupt import deferred_interrupt
 from pendulum_fmu.interrupt import pending as interrupt_pending
 from pendulum_fmu.fmu.log import FmuLog, register, shared_callbacks, unique_instance_name, unregister
@@ -158,7 +158,7 @@ class FmuRunner:
         self._remove_files = weakref.finalize(self, shutil.rmtree, self._tempdir, True)
         try:
             self._unzipdir = extract(str(self.fmu), unzipdir=self._tempdir)
-            self.model_description = read_model_description(self._unzipdir, validate=False)
+            self.model_description = read_description(self.fmu)   # the command line's check read it already
         except BaseException as error:  # nothing left behind: not even on Ctrl-C
             self._remove_files()
             if isinstance(error, Exception):  # zipfile, lxml and fmpy raise many kinds

@@ -7,7 +7,6 @@ import math
 
 from pendulum_fmu.cli.arguments import add_fmu_argument, integer, plain_text
 from pendulum_fmu.cli.extras import module_docstring, require_extra
-from pendulum_fmu.fmu.locate import locate_fmu
 
 NAME = "accuracy"
 HELP = "the FMU's exact solution against mpmath at 50 digits, every regime (the README's table)"
@@ -31,7 +30,7 @@ def run(args: argparse.Namespace) -> int:
     require_extra("bench accuracy", "bench", ("mpmath",))
     import pendulum_fmu.bench.accuracy as accuracy
 
-    results = accuracy.measure(locate_fmu(args.fmu), args.points)
+    results = accuracy.measure(args.fmu, args.points)
     print(f"against mpmath at {accuracy.DIGITS} digits, {args.points} points a case over 3 periods "
           f"(40/w0 on the separatrix)")
     print("| case | max abs(theta error) (rad) | max abs(omega error) / amplitude | naive scipy theta error (rad) |")

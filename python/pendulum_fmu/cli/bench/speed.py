@@ -7,7 +7,6 @@ import math
 
 import pendulum_fmu.bench.speed as speed
 from pendulum_fmu.cli.arguments import add_fmu_argument, integer, plain_text
-from pendulum_fmu.fmu.locate import locate_fmu
 
 NAME = "speed"
 HELP = "one simulation from Python: this package's path against fmpy and scipy's DOP853, side by side"
@@ -31,7 +30,7 @@ def run(args: argparse.Namespace) -> int:
     """Measure and print the table: best and median per run and per point, error, and ratios."""
     from pendulum_fmu.fmu import driver
 
-    fmu = locate_fmu(args.fmu)
+    fmu = args.fmu
     timings = speed.measure(fmu, args.repeat)
     by_name = {t.name: t for t in timings}
     peer = by_name[speed.NUMBALSODA]

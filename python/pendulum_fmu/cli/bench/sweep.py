@@ -10,7 +10,6 @@ import pendulum_fmu.bench.sweep as bench_sweep
 from pendulum_fmu.bench.sweep import bench_points, measure
 from pendulum_fmu.cli.arguments import add_fmu_argument, integer, plain_text, positive
 from pendulum_fmu.cli.extras import require_extra
-from pendulum_fmu.fmu.locate import locate_fmu
 
 NAME = "sweep"
 HELP = "sweep throughput, runs/s with 1 and 2 Dask workers, and the speed-up"
@@ -53,7 +52,7 @@ def run(args: argparse.Namespace) -> int:
                           fewer="fewer --runs, --repeat or --workers counts, or one --loop")
     if seconds > SLOW_SECONDS:
         print(f"bench sweep: about {duration_text(seconds)} of sweeps ...", file=sys.stderr, flush=True)
-    fmu = locate_fmu(args.fmu)
+    fmu = args.fmu
     points = bench_points(args.runs, args.periods)
     with FmuRunner(fmu) as runner:  # a run that fails here would be timed as a fast one: refuse now
         first = points[0]
