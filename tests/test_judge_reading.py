@@ -100,6 +100,44 @@ def test_formats_equal_the_cell_by_cell_rule_on_random_prints() -> None:
         assert (form.decimals, form.digits) == cell_by_cell_format(cells), (style, cells)
 
 
+def test_random_dialect_files_read_as_the_line_by_line_reader_reads_them(tmp_path: Path) -> None:
+    """Arrow's path (the file itself, or its bytes after comments and blank lines go) against
+    read_csv_text, which splits lines with the csv module and parses cells with float()."""
+    from pendulum_fmu.judge.reading import read_csv_text
+
+    rng = np.random.default_rng(5)
+    prints = ["%r", "%.17g", "%.16E", "%.6f", "%g", "%.10f"]
+    for trial in range(40):
+        rows = int(rng.integers(2, 80))
+        columns = {"time": np.arange(rows) * 0.01, "theta": rng.standard_normal(rows),
+                   "omega": rng.standard_normal(rows) * 1e-4}
+        styles = {name: prints[int(rng.integers(len(prints)))] for name in columns}
+        delimiter = [",", ";", "\t", " ", ", "][trial % 5]
+        quote = delimiter != " " and rng.random() < 0.4
+
+        def cell(name: str, value: float, semicolon: bool = delimiter == ";", quoted: bool = quote) -> str:
+            text = repr(float(value)) if styles[name] == "%r" else styles[name] % value
+            text = text.replace(".", ",") if semicolon else text
+            return f'"{text}"' if quoted else text
+
+        lines = [delimiter.join(columns)] + [delimiter.join(cell(n, columns[n][k]) for n in columns)
+                                             for k in range(rows)]
+        if trial % 3 == 0:
+            lines.insert(1 + int(rng.integers(rows)), "# a comment")
+        if trial % 4 == 0:
+            lines.insert(1 + int(rng.integers(rows)), "   ")
+        text = "\n".join(lines) + "\n"
+        path = tmp_path / f"r{trial}.csv"
+        path.write_text(text)
+        expected, got = read_csv_text(text, str(path)), read_result(path)
+        assert got.columns == expected.columns
+        assert np.array_equal(got.time, expected.time)
+        for name in ("theta", "omega"):
+            assert np.array_equal(got.values[name], expected.values[name]), (trial, styles)
+            assert np.array_equal(got.resolution[name], expected.resolution[name]), (trial, styles)
+        assert got.formats == expected.formats
+
+
 def test_a_semicolon_file_with_decimal_commas_keeps_its_resolution() -> None:
     result = read_csv_bytes(b"time;theta\n0;1,500\n0,01;1,250\n", "de.csv")
     assert result.values["theta"].tolist() == [1.5, 1.25]
