@@ -426,6 +426,9 @@ def make_honest(job: tuple[dict[str, Any], str]) -> Case | str:
                               spec["startTime"], spec["interval"], spec["rows"], spec["extra"], warned)
             if warned:
                 spec = dict(spec, warnings=len(warned), warning=warned[0])
+            grid = spec["startTime"] + spec["interval"] * np.arange(spec["rows"])
+            if len(result) != spec["rows"] or np.max(np.abs(result["time"] - grid)) > 1e-9 * max(1.0, grid[-1]):
+                return f"{name}: fmpy returned {len(result)} rows, not {spec['rows']} at the asked times"
             from fmpy.util import write_csv  # noqa: PLC0415
 
             engine = f"fmpy {spec['interface']} FMI {spec['fmi']}"

@@ -87,14 +87,16 @@ def test_corpus_sizes_and_kinds(corpus_root: Path) -> None:
 
 
 def test_engine_runs_are_in_the_corpus(corpus_root: Path) -> None:
-    """libcosim and Ecos runs: made when their Python packages are installed."""
+    """libcosim and Ecos runs: made when their Python packages are installed (every one of
+    them; an fmpy or scipy run that fails is left out and listed in the manifest)."""
     for module in ("libcosimpy", "ecospy"):
         why_not = missing(module)
         if why_not:
             pytest.skip(why_not)
     for part in corpus.PARTS:
         manifest = json.loads((corpus_root / part / "manifest.json").read_text())
-        assert manifest["failures"] == [], manifest["failures"]
+        not_made = [line for line in manifest["failures"] if line.startswith("honest/e")]
+        assert not_made == [], not_made
         engines = Counter(c["engine"] for c in manifest["cases"])
         assert engines["libcosim FMI 2.0"] >= 3 and engines["Ecos FMI 2.0"] >= 1 and engines["Ecos FMI 3.0"] >= 1
 
