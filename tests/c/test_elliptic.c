@@ -450,14 +450,6 @@ static void test_double_double(void)
 
 static void test_kernels(void)
 {
-    /* the bottom level's sin/cos (trig.h's series) on [0, 0.8] against libm: within 2 ulps */
-    for (int i = 0; i <= 800; ++i) {
-        const double z = 0.001 * i;
-        double s, c;
-        trig_sincos_small(z, &s, &c);
-        check(fabs(s - sin(z)) <= 2.3e-16 * sin(z) + 1e-300 && fabs(c - cos(z)) <= 2.3e-16,
-              "series sin/cos at %g: %.3g %.3g", z, s - sin(z), c - cos(z));
-    }
     /* elliptic_atan_ratio against atan2 over ratios from 1e-300 to 1e300, both signs */
     for (int e = -300; e <= 300; e += 7) {
         for (int j = 0; j < 40; ++j) {
