@@ -15,7 +15,7 @@ import pytest
 from fmpy import extract, read_model_description, simulate_fmu
 from fmpy.model_description import ModelDescription
 
-from pendulum_fmu.bench.workprecision.runs import FMU_SOLVERS
+from pendulum_fmu.spec import CS_SOLVERS
 
 P1_AMPLITUDES = (75.0, 80.0, 85.0, 90.0)
 W0SQ = 9.81
@@ -43,7 +43,7 @@ def _run(unzipped: Path, md: ModelDescription, solver: str | None, tol: float, a
     period = _period(unzipped, md, amplitude)
     start: dict[str, float | int] = {"theta": math.radians(amplitude)}
     if solver is not None:
-        start["solver"] = FMU_SOLVERS.index(solver) + 1
+        start["solver"] = CS_SOLVERS.index(solver) + 1
     return simulate_fmu(str(unzipped), model_description=md, stop_time=periods * period,
                         output_interval=period / points, relative_tolerance=tol, start_values=start,
                         output=["theta", "omega", "theta_exact", "stats.steps", "stats.rhs_evaluations", *extra])
@@ -90,7 +90,7 @@ def test_convergence_order_on_p1(unzipped: Path, md: ModelDescription, solver: s
 
 def test_default_solver_is_the_12th_order_nystrom_pair(md: ModelDescription) -> None:
     solver = next(v for v in md.modelVariables if v.name == "solver")
-    assert FMU_SOLVERS[int(solver.start) - 1] == "rkn"
+    assert CS_SOLVERS[int(solver.start) - 1] == "rkn"
     assert "12(10)" in next(i for i in md.typeDefinitions[0].items if i.name == "rkn").description
     stats = [v for v in md.modelVariables if v.name.startswith("stats.")]
     assert [v.causality for v in stats] == ["local"] * 3  # readable, but not among a scene's outputs
@@ -134,7 +134,7 @@ def test_dopri5_also_keeps_the_libration(unzipped: Path, md: ModelDescription) -
         assert np.max(np.abs(r["theta"])) < math.pi, tol
 
 
-@pytest.mark.parametrize("solver", FMU_SOLVERS)
+@pytest.mark.parametrize("solver", CS_SOLVERS)
 def test_coarse_and_fine_grids_agree(unzipped: Path, md: ModelDescription, solver: str) -> None:
     # the solver's steps never depend on the communication points: 3 and 300 points a
     # period give the same values at the common points (the target is 1e-7; by design they

@@ -38,21 +38,21 @@ DEFAULT_AMPLITUDES_DEG: tuple[float, ...] = (10.0, 90.0, 170.0, 179.9999)
 
 
 @dataclass(frozen=True)
-class Timing:
+class BestMedian:
     """Best and median of one timing over interleaved rounds, ns per point (NaN: not measured)."""
 
     best: float
     median: float
 
     @staticmethod
-    def of(samples: list[float]) -> Timing:
+    def of(samples: list[float]) -> BestMedian:
         """The best and the median of ``samples`` (NaN, NaN when there are none)."""
         if not samples:
-            return Timing(math.nan, math.nan)
-        return Timing(min(samples), float(np.median(samples)))
+            return BestMedian(math.nan, math.nan)
+        return BestMedian(min(samples), float(np.median(samples)))
 
 
-NOT_MEASURED = Timing(math.nan, math.nan)
+NOT_MEASURED = BestMedian(math.nan, math.nan)
 
 
 @dataclass(frozen=True)
@@ -61,20 +61,20 @@ class CTimings:
 
     Attributes
     ----------
-    eval : Timing
+    eval : BestMedian
         ``pendulum_exact_eval`` in a loop.
-    batch : Timing
+    batch : BestMedian
         ``pendulum_exact_eval_many`` (lock-step) over the same times.
-    gsl : Timing
+    gsl : BestMedian
         GSL's ``gsl_sf_elljac_e`` plus atan2 (NaN when the benchmark was built without GSL).
-    init : Timing
+    init : BestMedian
         ``pendulum_exact_init`` for a new release angle and one evaluation.
     """
 
-    eval: Timing
-    batch: Timing
-    gsl: Timing
-    init: Timing
+    eval: BestMedian
+    batch: BestMedian
+    gsl: BestMedian
+    init: BestMedian
 
 
 NO_C = CTimings(NOT_MEASURED, NOT_MEASURED, NOT_MEASURED, NOT_MEASURED)
@@ -99,13 +99,13 @@ class BenchResult:
         ns per point of the scipy pipeline, best over the rounds.
     c : CTimings
         All figures of the C benchmark (best and median).
-    python : Timing
+    python : BestMedian
         :func:`pendulum_fmu.exact`, one state over many times.
-    scipy : Timing
+    scipy : BestMedian
         scipy, one state over many times.
-    python_states : Timing
+    python_states : BestMedian
         :func:`pendulum_fmu.exact` with a new state per point.
-    scipy_states : Timing
+    scipy_states : BestMedian
         scipy's ``ellipkm1`` + ``ellipj`` with a new state per point.
     """
 
@@ -115,10 +115,10 @@ class BenchResult:
     python_ns: float
     scipy_ns: float
     c: CTimings = NO_C
-    python: Timing = NOT_MEASURED
-    scipy: Timing = NOT_MEASURED
-    python_states: Timing = NOT_MEASURED
-    scipy_states: Timing = NOT_MEASURED
+    python: BestMedian = NOT_MEASURED
+    scipy: BestMedian = NOT_MEASURED
+    python_states: BestMedian = NOT_MEASURED
+    scipy_states: BestMedian = NOT_MEASURED
 
     @property
     def ratio(self) -> float:
@@ -177,10 +177,10 @@ def run_c_benchmark(executable: Path, n: int, amplitudes_deg: tuple[float, ...])
             continue
         values = dict(field.split("=", 1) for field in fields[1:])
 
-        def pair(kind: str, values: dict[str, str] = values) -> Timing:
-            return Timing(float(values.get(f"{kind}_best", "nan")), float(values.get(f"{kind}_median", "nan")))
+        def pair(kind: str, values: dict[str, str] = values) -> BestMedian:
+            return BestMedian(float(values.get(f"{kind}_best", "nan")), float(values.get(f"{kind}_median", "nan")))
 
-        eval_timing = pair("eval") if "eval_best" in values else Timing(float(values["ns_per_eval"]), math.nan)
+        eval_timing = pair("eval") if "eval_best" in values else BestMedian(float(values["ns_per_eval"]), math.nan)
         timings[float(values["amplitude_deg"])] = CTimings(eval_timing, pair("batch"), pair("gsl"), pair("init"))
     return timings
 
@@ -321,7 +321,7 @@ def run(executable: Path | None, n: int, amplitudes_deg: tuple[float, ...], roun
     results = []
     for amplitude in amplitudes_deg:
         c = c_timings.get(float(f"{amplitude:.10g}"), NO_C)
-        timing = {kind: Timing.of(samples[(amplitude, kind)]) for kind in kinds}
+        timing = {kind: BestMedian.of(samples[(amplitude, kind)]) for kind in kinds}
         results.append(BenchResult(amplitude, n, c.eval.best, timing["python"].best, timing["scipy"].best, c,
                                    timing["python"], timing["scipy"], timing["python_states"],
                                    timing["scipy_states"]))

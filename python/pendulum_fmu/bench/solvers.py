@@ -19,17 +19,12 @@ forward Euler on it (the baseline: how today's co-simulation FMUs integrate).
 A Python run predicted to take longer than ``--budget`` seconds is skipped and listed as
 such (on P3 most of the slow peers at tight tolerances); the C driver runs everything.
 
-Usage::
-
-    pendulum-fmu bench solvers [--out out/bench] [--problems P1,P2,P3] [--quick]
-    python -m pendulum_fmu.bench.solvers ...
+``pendulum-fmu bench solvers`` runs it (:mod:`pendulum_fmu.cli.bench.solvers` reads its options).
 """
 
 from __future__ import annotations
 
-import argparse
 import math
-import os
 import shutil
 import sys
 import time
@@ -38,18 +33,15 @@ from typing import Callable
 
 from fmpy import extract, read_model_description
 
-from pendulum_fmu.errors import BuildError, UsageError
-from pendulum_fmu.fmu.identity import fmi_version_of
-from pendulum_fmu.fmu.locate import locate_fmu
-from pendulum_fmu.output.paths import OutputError, check_output_folder
 from pendulum_fmu.bench.workprecision.analysis import Point, aggregate, best_method, curve, log_slope
-from pendulum_fmu.bench.workprecision.cdriver import Floor, find_driver, run_driver, shared_library
+from pendulum_fmu.bench.workprecision.cdriver import Floor, run_driver, shared_library
 from pendulum_fmu.bench.workprecision.problems import Grid, cases, make_grid
 from pendulum_fmu.bench.workprecision.report import cost_table, energy_table, plot_problem, write_csv
-from pendulum_fmu.bench.workprecision.runs import (FMU_SOLVERS, SOLVE_IVP_METHODS, Run, run_fmu_cs, run_fmu_me, run_ode_dop853,
+from pendulum_fmu.bench.workprecision.runs import (SOLVE_IVP_METHODS, Run, run_fmu_cs, run_fmu_me, run_ode_dop853,
                       run_solve_ivp)
-from pendulum_fmu.bench.workprecision.targets import (T1_LEVELS, Verdict, default_near_separatrix, default_vs_dop853, fmpy_against_dop853,
+from pendulum_fmu.bench.workprecision.targets import (T1_LEVELS, TargetOutcome, default_near_separatrix, default_vs_dop853, fmpy_against_dop853,
                          grid_independence, wall_against_floor)
+from pendulum_fmu.spec import CS_SOLVERS
 
 FMU_TOLS: tuple[float, ...] = tuple(float(f"1e-{k}") for k in range(3, 13))
 """Tolerances of the FMU's solvers: 1e-3 .. 1e-12."""
@@ -65,41 +57,6 @@ GROWTH = 3.0
 TITLES = {"P1": "P1: 75, 80, 85, 90 deg from rest, 10 periods each, 50 points a period",
           "P2": "P2: 179.99 deg from rest, 20 periods, 50 points a period",
           "P3": "P3: 90 deg from rest, {periods:g} periods, 50 points a period"}
-
-
-def build_parser() -> argparse.ArgumentParser:
-    """The command's options (``pendulum-fmu bench solvers --help``)."""
-    parser = argparse.ArgumentParser(
-        prog="pendulum-fmu bench solvers",
-        description=(__doc__ or "").split("Usage::")[0].replace("``", ""),
-        epilog="examples:\n  pendulum-fmu bench solvers --quick                # about 30 s\n"
-               "  pendulum-fmu bench solvers --out out/bench       # the full study, about 6 min on 2 cores\n"
-               "  pendulum-fmu bench solvers --problems P1 --no-peers\n",
-        formatter_class=_HelpFormatter)
-    parser.add_argument("--fmu", type=Path, default=None, metavar="PATH",
-                        help="the FMU (default: $PENDULUM_FMU, the installed one, or the repository's build/)")
-    parser.add_argument("--driver", type=Path, default=None, metavar="PATH",
-                        help="the C driver tests/c/bench_solvers (default: in the FMU's CMake build)")
-    parser.add_argument("--out", type=Path, default=Path("out") / "bench", metavar="DIR",
-                        help="output folder, created with its missing parents")
-    parser.add_argument("--problems", default="P1,P2,P3", help="comma-separated subset of P1,P2,P3")
-    parser.add_argument("--budget", type=float, default=30.0,
-                        help="skip a Python run predicted to take longer, seconds")
-    parser.add_argument("--p3-periods", type=float, default=10_000.0, help="length of P3 in periods")
-    parser.add_argument("--points", type=int, default=50, help="output points a period")
-    parser.add_argument("--no-peers", action="store_true", help="only the FMU's solvers")
-    parser.add_argument("--quick", action="store_true",
-                        help="a smoke run: tolerances 1e-4 and 1e-8, P3 100 periods, no targets 2 and 4")
-    return parser
-
-
-class _HelpFormatter(argparse.RawDescriptionHelpFormatter, argparse.ArgumentDefaultsHelpFormatter):
-    """Keep the description's lines and show every default that is not None or False."""
-
-    def _get_help_string(self, action: argparse.Action) -> str | None:
-        if action.default is None or action.default is False:
-            return action.help
-        return super()._get_help_string(action)
 
 
 class Budget:
@@ -158,7 +115,7 @@ def python_runs(unzipped: Path, grid: Grid, tols_fmu: tuple[float, ...], tols_pe
     """
     case = grid.case
     key = (case.problem, case.amplitude_deg)
-    jobs: list[tuple[str, str, float]] = [("fmpy", s, t) for s in FMU_SOLVERS for t in tols_fmu]
+    jobs: list[tuple[str, str, float]] = [("fmpy", s, t) for s in CS_SOLVERS for t in tols_fmu]
     if peers:
         jobs += [("scipy", m, t) for m in (*SOLVE_IVP_METHODS, "dop853") for t in tols_peer]
         jobs += [("fmpy-me", "cvode", t) for t in tols_fmu]
@@ -181,13 +138,13 @@ def python_runs(unzipped: Path, grid: Grid, tols_fmu: tuple[float, ...], tols_pe
     return runs
 
 
-def _markdown_targets(verdicts: list[Verdict]) -> str:
+def _markdown_targets(verdicts: list[TargetOutcome]) -> str:
     lines = ["| target | met | measured |", "|---|---|---|"]
     lines += [f"| {v.name} | {'yes' if v.met else 'NO'} | {v.figure} |" for v in verdicts]
     return "\n".join(lines)
 
 
-def report(points: list[Point], floors: list[Floor], verdicts: list[Verdict],
+def report(points: list[Point], floors: list[Floor], verdicts: list[TargetOutcome],
            t1_rows: list[tuple[float, float, float, float]], default: str, problems: list[str],
            p3_periods: float) -> str:
     """The Markdown report: tables per problem, the default's ranking, the targets."""
@@ -200,7 +157,7 @@ def report(points: list[Point], floors: list[Floor], verdicts: list[Verdict],
         if problem == "P3":
             parts += ["Energy behaviour (P3):", "", energy_table(points, problem), ""]
     if "P1" in problems:
-        ranking = best_method(points, "P1", "c", list(FMU_SOLVERS), list(T1_LEVELS))
+        ranking = best_method(points, "P1", "c", list(CS_SOLVERS), list(T1_LEVELS))
         parts += ["## The default", "", f"The FMU's default solver is `{default}`. Cheapest of the FMU's solvers "
                   "on P1 at each error level: " + ", ".join(f"{lvl:.0e}: {m or 'none'}" for lvl, m in ranking.items()),
                   ""]
@@ -214,49 +171,41 @@ def report(points: list[Point], floors: list[Floor], verdicts: list[Verdict],
     return "\n".join(parts)
 
 
-def main(argv: list[str] | None = None) -> int:
-    """Run the study.
+def study(fmu: Path, driver: Path, out: Path, problems: list[str], budget_s: float = 30.0,
+          p3_periods: float = 10_000.0, points: int = 50, peers: bool = True, quick: bool = False) -> int:
+    """Run the study and write its files; print its progress and report.
 
     Parameters
     ----------
-    argv : list of str, optional
-        Arguments (default: ``sys.argv[1:]``).
+    fmu : Path
+        The FMI 2.0 Pendulum.fmu.
+    driver : Path
+        The C driver ``tests/c/bench_solvers`` of a CMake build.
+    out : Path
+        Output folder, created with its missing parents.
+    problems : list of str
+        Some of ``P1``, ``P2``, ``P3``.
+    budget_s : float
+        Skip a Python run predicted to take longer, s.
+    p3_periods : float
+        Length of P3 in periods.
+    points : int
+        Output points a period.
+    peers : bool
+        Also run the peers (else only the FMU's solvers).
+    quick : bool
+        A smoke run: tolerances 1e-4 and 1e-8, P3 at most 100 periods, no targets 2 and 4.
 
     Returns
     -------
     int
-        0 when every target is met, 1 when one is not or a run failed, 2 on bad usage.
+        0 when every target is met, 1 when one is not or a run failed.
     """
-    args = build_parser().parse_args(argv)
-    problems = [p.strip() for p in args.problems.split(",") if p.strip()]
-    if not problems or any(p not in ("P1", "P2", "P3") for p in problems):
-        print(f"bench solvers: --problems must name P1, P2 and/or P3, got {args.problems!r}", file=sys.stderr)
-        return 2
-    try:
-        fmu = locate_fmu(args.fmu)
-        check_output_folder(args.out)
-        if fmi_version_of(fmu) != 2:
-            raise UsageError("--fmu", f"{str(fmu)!r} is an FMI 3.0 FMU: bench solvers drives the FMI 2.0 API from "
-                                      "its C driver, give the FMI 2.0 Pendulum.fmu")
-    except (UsageError, BuildError, OutputError) as error:
-        print(f"pendulum-fmu bench solvers: error: {error}", file=sys.stderr)
-        return 2
-    driver = args.driver or find_driver(fmu)
-    if driver is None or not driver.is_file():
-        print("pendulum-fmu bench solvers: error: the C driver tests/c/bench_solvers is not installed with the "
-              "package: run it from a source checkout after cmake --build build, or give --driver", file=sys.stderr)
-        return 2
-    if not os.access(driver, os.X_OK):
-        print(f"pendulum-fmu bench solvers: error: argument --driver: {str(driver)!r} is not an executable file: "
-              "give the C driver tests/c/bench_solvers of a CMake build", file=sys.stderr)
-        return 2
     fmu_tols, peer_tols, p3_tols, euler = FMU_TOLS, PEER_TOLS, P3_TOLS, EULER_STEPS
-    p3_periods = args.p3_periods
-    if args.quick:
+    if quick:
         fmu_tols = peer_tols = p3_tols = (1e-4, 1e-8)
         euler = (1, 16)
         p3_periods = min(p3_periods, 100.0)
-    out: Path = args.out
     out.mkdir(parents=True, exist_ok=True)
     log = print
     started = time.perf_counter()
@@ -264,56 +213,56 @@ def main(argv: list[str] | None = None) -> int:
     try:
         md = read_model_description(str(unzipped), validate=False)
         solver_variable = next(v for v in md.modelVariables if v.name == "solver")
-        default = FMU_SOLVERS[int(solver_variable.start) - 1]
+        default = CS_SOLVERS[int(solver_variable.start) - 1]
         log(f"bench solvers: FMU {fmu} (default solver {default}), C driver {driver}")
 
         log("C driver: the FMU's solvers and the exact-evaluation floor ...")
         try:
             c_runs, floors = run_driver(driver, shared_library(unzipped), problems, list(fmu_tols), p3_periods,
-                                        args.points)
+                                        points)
         except (RuntimeError, OSError) as error:  # OSError: a file the kernel cannot execute
             print(f"pendulum-fmu bench solvers: error: the C driver {driver} failed: {error}", file=sys.stderr)
             return 1
         runs: list[Run] = list(c_runs)
-        budget = Budget(args.budget)
+        budget = Budget(budget_s)
         hints: dict[tuple[str, str, float], float] = {}
         for problem in problems:
             for case in cases(problem, p3_periods):
-                grid = make_grid(unzipped, case, args.points)
+                grid = make_grid(unzipped, case, points)
                 log(f"{problem} {case.amplitude_deg:g} deg, {case.periods:g} periods: Python runs ...")
                 p3 = problem == "P3"
                 new = python_runs(unzipped, grid, p3_tols if p3 else fmu_tols, p3_tols if p3 else peer_tols,
-                                  euler[:2] if p3 else euler, budget, not args.no_peers, hints, log)
+                                  euler[:2] if p3 else euler, budget, peers, hints, log)
                 runs += new
                 if problem == "P1" and case.amplitude_deg == 90.0:
                     scale = p3_periods / case.periods
                     hints = {(r.runner, r.method, r.tol): r.wall_s * scale for r in new if math.isfinite(r.wall_s)}
-        points = aggregate(runs)
+        aggregated = aggregate(runs)
         write_csv(out / "runs.csv", runs)
-        write_csv(out / "points.csv", points)
+        write_csv(out / "points.csv", aggregated)
         write_csv(out / "floors.csv", floors)
         for problem in problems:
-            plot_problem(points, floors, problem, TITLES[problem].format(periods=p3_periods), out / f"wp_{problem}.png")
+            plot_problem(aggregated, floors, problem, TITLES[problem].format(periods=p3_periods), out / f"wp_{problem}.png")
 
-        verdicts: list[Verdict] = []
+        verdicts: list[TargetOutcome] = []
         t1_rows: list[tuple[float, float, float, float]] = []
-        if "P1" in problems and not args.no_peers:
+        if "P1" in problems and peers:
             # --quick runs tolerances 1e-4 and 1e-8 only: target 1 is judged at the errors they reach.
-            verdict, t1_rows = default_vs_dop853(points, default, reachable_only=args.quick)
+            verdict, t1_rows = default_vs_dop853(aggregated, default, reachable_only=quick)
             verdicts.append(verdict)
         if "P1" in problems:
-            verdicts.append(wall_against_floor(points, floors, default)[0])
+            verdicts.append(wall_against_floor(aggregated, floors, default)[0])
         if "P2" in problems:
-            verdicts.append(default_near_separatrix(points, default)[0])
-        if not args.quick:
+            verdicts.append(default_near_separatrix(aggregated, default)[0])
+        if not quick:
             log("targets 2 and 4 ...")
             verdicts.append(fmpy_against_dop853(fmu, unzipped)[0])
             verdicts.append(grid_independence(unzipped)[0])
-        consistency = _fmpy_matches_c(points)
-        text = report(points, floors, verdicts, t1_rows, default, problems, p3_periods)
+        consistency = _fmpy_matches_c(aggregated)
+        text = report(aggregated, floors, verdicts, t1_rows, default, problems, p3_periods)
         text += f"\nThe FMU's evaluation counts through fmpy equal the C driver's: {consistency}\n"
         text += f"\nTolerance proportionality of the default on P1 (slope of log error against log tol): " \
-                f"{log_slope(curve(points, 'P1', 'c', default)):.2f}\n" if "P1" in problems else ""
+                f"{log_slope(curve(aggregated, 'P1', 'c', default)):.2f}\n" if "P1" in problems else ""
         (out / "report.md").write_text(text)
         log(text)
         failed = [r for r in runs if r.status == "failed"]
@@ -333,6 +282,3 @@ def _fmpy_matches_c(points: list[Point]) -> str:
     same = sum(a[0] == b[0] for a, b in pairs)
     return f"{same} of {len(pairs)} points"
 
-
-if __name__ == "__main__":
-    sys.exit(main())

@@ -58,7 +58,7 @@ NUMBALSODA = "numbalsoda dop853 (compiled)"
 
 
 @dataclass(frozen=True)
-class Timing:
+class MethodTimes:
     """One method's wall times over the rounds, and its error.
 
     Attributes
@@ -117,7 +117,7 @@ def _loosest(solve: Callable[[float], np.ndarray], truth: np.ndarray) -> tuple[f
     return None, error
 
 
-def measure(fmu: Path, rounds: int = 10) -> list[Timing]:
+def measure(fmu: Path, rounds: int = 10) -> list[MethodTimes]:
     """Time every method on the problem in interleaved rounds; see the module's text.
 
     Parameters
@@ -129,7 +129,7 @@ def measure(fmu: Path, rounds: int = 10) -> list[Timing]:
 
     Returns
     -------
-    list of Timing
+    list of MethodTimes
         In the order of the module's list.
     """
     pendulum = Pendulum.from_degrees(AMPLITUDE_DEG)
@@ -142,15 +142,15 @@ def measure(fmu: Path, rounds: int = 10) -> list[Timing]:
             truth, _ = exact(pendulum.amplitude_rad, 0.0, pendulum.length, pendulum.gravity, times)
             methods, rtol = _package_methods(runner, python_runner, pendulum, grid, times, truth)
             methods += _fmpy_methods(runner, fmu, pendulum, times, truth, rtol, scratch)
-            unavailable: list[Timing] = []
+            unavailable: list[MethodTimes] = []
             for name, solve in ((NUMBALSODA, _numbalsoda(pendulum)), ("scipy ode dop853 (compiled)", _ode_dop853),
                                 ("scipy solve_ivp DOP853", _solve_ivp_dop853)):
                 if isinstance(solve, str):
-                    unavailable.append(Timing(name, (), times.size, math.nan, solve))
+                    unavailable.append(MethodTimes(name, (), times.size, math.nan, solve))
                     continue
                 rtol, error = _loosest(lambda r, s=solve: s(pendulum, times, r), truth)
                 if rtol is None:
-                    unavailable.append(Timing(name, (), times.size, error,
+                    unavailable.append(MethodTimes(name, (), times.size, error,
                                               f"never <= {TARGET_ERROR:g} down to rtol {PEER_TOLERANCES[-1]:g}"))
                     continue
                 methods.append(_Method(name, lambda s=solve, r=rtol: s(pendulum, times, r), error,
@@ -174,7 +174,7 @@ def measure(fmu: Path, rounds: int = 10) -> list[Timing]:
     finally:
         for folder in scratch:
             shutil.rmtree(folder, ignore_errors=True)
-    timings = [Timing(m.name, tuple(seconds[m.name]), times.size, m.error, m.setting) for m in methods]
+    timings = [MethodTimes(m.name, tuple(seconds[m.name]), times.size, m.error, m.setting) for m in methods]
     order = [PACKAGE, PACKAGE_PYTHON, *LOOP_ROWS, "fmpy FMU2Slave wrappers",
              "fmpy simulate_fmu", "fmpy simulate_fmu, tuned", NUMBALSODA, "scipy ode dop853 (compiled)",
              "scipy solve_ivp DOP853"]

@@ -121,7 +121,6 @@ def main(argv: list[str] | None = None) -> int:
     arguments = sys.argv[1:] if argv is None else list(argv)
     try:
         check_interrupt()  # one that came during the imports and was swallowed there
-        forwarded = bench.forward(arguments)
     except KeyboardInterrupt:
         forget_interrupt()
         print(f"\npendulum-fmu {' '.join(arguments[:2])}: interrupted", file=sys.stderr)
@@ -129,8 +128,6 @@ def main(argv: list[str] | None = None) -> int:
     except Exception as error:  # noqa: BLE001 -- one line, never a traceback
         print(f"pendulum-fmu {' '.join(arguments[:2])}: error: {_unexpected(error)}", file=sys.stderr)
         return 1
-    if forwarded is not None:
-        return forwarded
     try:
         parser = build_parser()
         args = parser.parse_args(arguments)

@@ -14,7 +14,7 @@ from pendulum_fmu.cli.arguments import (add_fmu_argument, angle_degrees, describ
                                         positive, solver_list, tolerance)
 from pendulum_fmu.cli.extras import require_extra
 from pendulum_fmu.errors import UsageError
-from pendulum_fmu.spec import DEFAULT_CS_SOLVER
+from pendulum_fmu.spec import CS_SOLVERS, DEFAULT_CS_SOLVER, ME_SOLVERS
 from pendulum_fmu.sweep.grid import SweepGrid
 
 NAME = "sweep"
@@ -58,8 +58,8 @@ def configure(parser: argparse.ArgumentParser) -> None:
     axes.add_argument("-g", "--gravities", type=grid(positive("m/s^2")), default=[9.81], metavar="M_S2",
                       help="gravitational accelerations > 0, m/s^2 (default 9.81)")
     axes.add_argument("-s", "--solvers", type=solver_list, default=[DEFAULT_CS_SOLVER], metavar="NAMES",
-                      help="dopri5, rk4, rkn, symplectic (Co-Simulation) and cvode (Model Exchange) "
-                           "(default rkn)")
+                      help=f"{', '.join(CS_SOLVERS)} (Co-Simulation) and {', '.join(ME_SOLVERS)} (Model Exchange) "
+                           f"(default {DEFAULT_CS_SOLVER})")
     axes.add_argument("-t", "--tolerances", type=grid(tolerance), default=[1e-8], metavar="RTOLS",
                       help="relative tolerances in (0, 1) (default 1e-8)")
     runs = parser.add_argument_group("every run")

@@ -32,9 +32,8 @@ from fmpy.simulation import instantiate_fmu
 from scipy.integrate import ode, solve_ivp
 
 from pendulum_fmu.bench.workprecision.problems import GRAVITY, LENGTH, W0SQ, Grid, energy_errors
+from pendulum_fmu.spec import CS_SOLVERS
 
-FMU_SOLVERS: tuple[str, ...] = ("dopri5", "rk4", "rkn", "symplectic")
-"""The items of the FMU's ``solver`` enumeration, in the order of their values 1..4."""
 SOLVE_IVP_METHODS: tuple[str, ...] = ("RK45", "DOP853", "LSODA", "Radau")
 """The scipy ``solve_ivp`` peers."""
 
@@ -128,7 +127,7 @@ def run_fmu_cs(unzipped: Path, grid: Grid, solver: str, tol: float) -> Run:
     grid : Grid
         Case and output grid.
     solver : str
-        One of :data:`FMU_SOLVERS`.
+        One of :data:`CS_SOLVERS`.
     tol : float
         Relative tolerance handed to ``fmi2SetupExperiment``.
 
@@ -145,7 +144,7 @@ def run_fmu_cs(unzipped: Path, grid: Grid, solver: str, tol: float) -> Run:
                           start_time=0.0, stop_time=grid.stop_time, output_interval=grid.interval,
                           relative_tolerance=tol,
                           start_values={"L": LENGTH, "g": GRAVITY, "theta": case.theta0, "omega": 0.0,
-                                        "solver": FMU_SOLVERS.index(solver) + 1},
+                                        "solver": CS_SOLVERS.index(solver) + 1},
                           output=["theta", "omega", "stats.steps", "stats.rejected_steps",
                                   "stats.rhs_evaluations"])
     run.wall_s = time.perf_counter() - start

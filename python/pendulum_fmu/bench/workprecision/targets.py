@@ -33,7 +33,7 @@ T1_LEVELS: tuple[float, ...] = (1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11
 
 
 @dataclass(frozen=True)
-class Verdict:
+class TargetOutcome:
     """One target: what was measured and whether it is met.
 
     Attributes
@@ -52,7 +52,7 @@ class Verdict:
 
 
 def default_vs_dop853(points: list[Point], default: str,
-                      reachable_only: bool = False) -> tuple[Verdict, list[tuple[float, float, float, float]]]:
+                      reachable_only: bool = False) -> tuple[TargetOutcome, list[tuple[float, float, float, float]]]:
     """Target 1 from the P1 points.
 
     Parameters
@@ -68,7 +68,7 @@ def default_vs_dop853(points: list[Point], default: str,
 
     Returns
     -------
-    tuple of (Verdict, list)
+    tuple of (TargetOutcome, list)
         The verdict and, per level, (level, default's evaluations, solve_ivp DOP853's,
         ode dop853's); inf where a method does not reach the level.
     """
@@ -89,7 +89,7 @@ def default_vs_dop853(points: list[Point], default: str,
         figure += f"; {default} does not reach {', '.join(f'{level:.0e}' for level in unreached)}"
     if reachable_only:
         figure += "; a quick run: judged only at the errors its tolerances reach"
-    return Verdict(f"T1: fewer evaluations than DOP853 at every error {levels} on P1", met, figure), rows
+    return TargetOutcome(f"T1: fewer evaluations than DOP853 at every error {levels} on P1", met, figure), rows
 
 
 def _timed(function: Callable[[], np.ndarray]) -> tuple[float, np.ndarray]:
@@ -99,7 +99,7 @@ def _timed(function: Callable[[], np.ndarray]) -> tuple[float, np.ndarray]:
     return time.perf_counter() - start, value
 
 
-def fmpy_against_dop853(fmu: Path, unzipped: Path, repeats: int = 5) -> tuple[Verdict, dict[str, float]]:
+def fmpy_against_dop853(fmu: Path, unzipped: Path, repeats: int = 5) -> tuple[TargetOutcome, dict[str, float]]:
     """Target 2: the FMU's default solver through fmpy against scipy's DOP853.
 
     Parameters
@@ -114,7 +114,7 @@ def fmpy_against_dop853(fmu: Path, unzipped: Path, repeats: int = 5) -> tuple[Ve
 
     Returns
     -------
-    tuple of (Verdict, dict)
+    tuple of (TargetOutcome, dict)
         The verdict and the figures (errors, best wall times, their ratio).
     """
     case = Case("T2", 80.0, 100.0)
@@ -146,7 +146,7 @@ def fmpy_against_dop853(fmu: Path, unzipped: Path, repeats: int = 5) -> tuple[Ve
     figures = {"err_fmu": err_fmu, "err_dop853": err_scipy, "wall_fmu_s": fmu_best, "wall_dop853_s": scipy_best,
                "speedup": scipy_best / fmu_best}
     met = err_fmu <= err_scipy and scipy_best >= 3.0 * fmu_best
-    return Verdict("T2: fmpy, 100 periods at 80 deg, rtol 1e-10: as accurate as DOP853 and 3x faster", met,
+    return TargetOutcome("T2: fmpy, 100 periods at 80 deg, rtol 1e-10: as accurate as DOP853 and 3x faster", met,
                    f"error {err_fmu:.1e} vs DOP853 {err_scipy:.1e}; {fmu_best * 1e3:.1f} ms vs "
                    f"{scipy_best * 1e3:.1f} ms: {scipy_best / fmu_best:.1f}x faster"), figures
 
@@ -158,7 +158,7 @@ def floor_per_period(floors: list[Floor], problem: str) -> float:
 
 
 def wall_against_floor(points: list[Point], floors: list[Floor], default: str,
-                       error: float = 1e-10) -> tuple[Verdict, dict[str, float]]:
+                       error: float = 1e-10) -> tuple[TargetOutcome, dict[str, float]]:
     """Target 3: the default's wall time per period at ``error`` on P1 against the floor.
 
     Parameters
@@ -174,19 +174,19 @@ def wall_against_floor(points: list[Point], floors: list[Floor], default: str,
 
     Returns
     -------
-    tuple of (Verdict, dict)
+    tuple of (TargetOutcome, dict)
         The verdict and the figures (wall per period, floor per period, ratio).
     """
     wall = cost_at(curve(points, "P1", "c", default), error, "wall_per_period")
     floor = floor_per_period(floors, "P1")
     ratio = wall / floor
-    return Verdict("T3: C driver, wall time per period at error 1e-10 within 3x of the exact-evaluation floor",
+    return TargetOutcome("T3: C driver, wall time per period at error 1e-10 within 3x of the exact-evaluation floor",
                    ratio <= 3.0, f"{wall * 1e6:.2f} us per period vs floor {floor * 1e6:.2f} us: "
                                  f"{ratio:.2f}x"), {"wall_per_period_s": wall, "floor_per_period_s": floor,
                                                     "ratio": ratio}
 
 
-def grid_independence(unzipped: Path) -> tuple[Verdict, dict[str, float]]:
+def grid_independence(unzipped: Path) -> tuple[TargetOutcome, dict[str, float]]:
     """Target 4: 3 and 300 communication points a period agree to 1e-7 at rtol 1e-10.
 
     Parameters
@@ -196,7 +196,7 @@ def grid_independence(unzipped: Path) -> tuple[Verdict, dict[str, float]]:
 
     Returns
     -------
-    tuple of (Verdict, dict)
+    tuple of (TargetOutcome, dict)
         The verdict and the largest difference at the common points over P1's amplitudes.
     """
     md = read_model_description(str(unzipped), validate=False)
@@ -214,7 +214,7 @@ def grid_independence(unzipped: Path) -> tuple[Verdict, dict[str, float]]:
         coarse, fine = runs[0], runs[1][::100]
         worst = max(worst, float(np.max(np.abs(coarse["theta"] - fine["theta"]))),
                     float(np.max(np.abs(coarse["omega"] - fine["omega"]))) / math.sqrt(W0SQ))
-    return Verdict("T4: 3 and 300 points a period agree to 1e-7 at rtol 1e-10 (P1, default solver)",
+    return TargetOutcome("T4: 3 and 300 points a period agree to 1e-7 at rtol 1e-10 (P1, default solver)",
                    worst <= 1e-7, f"largest difference {worst:.1e} rad"), {"max_difference": worst}
 
 
@@ -231,7 +231,7 @@ tests/test_solvers_fmu.py (omega's absolute tolerance is tol w0, the same at eve
 puts rkn at 1.02 tol at tol 1e-7 on P2)."""
 
 
-def default_near_separatrix(points: list[Point], default: str) -> tuple[Verdict, list[Point]]:
+def default_near_separatrix(points: list[Point], default: str) -> tuple[TargetOutcome, list[Point]]:
     """The P2 property of the default: no flip at any tolerance, the error within
     :data:`P2_TOLS` tol and shrinking with it down to the rounding floor :data:`P2_FLOOR`
     (below which it no longer can).
@@ -245,7 +245,7 @@ def default_near_separatrix(points: list[Point], default: str) -> tuple[Verdict,
 
     Returns
     -------
-    tuple of (Verdict, list of Point)
+    tuple of (TargetOutcome, list of Point)
         The verdict and the default's P2 points (C driver), loosest tolerance first.
     """
     pts = curve(points, "P2", "c", default)
@@ -256,7 +256,7 @@ def default_near_separatrix(points: list[Point], default: str) -> tuple[Verdict,
     strict = all(b < a for a, b in zip(errors, errors[1:]))
     sequence = ", ".join(f"{e:.1e}" for e in errors)
     tols = f"{pts[0].tol:.0e}..{pts[-1].tol:.0e}" if pts else "no tol"  # the tolerances run, not a fixed range
-    return Verdict(f"P2: default keeps |theta| < pi at every tol {tols}, its error within {P2_TOLS:g} tol, "
+    return TargetOutcome(f"P2: default keeps |theta| < pi at every tol {tols}, its error within {P2_TOLS:g} tol, "
                    f"shrinking with tol (down to the rounding floor {P2_FLOOR:.0e})",
                    not flips and bool(pts) and shrinking and bounded,
                    f"flips at {flips or 'no tolerance'}; errors {sequence} "
