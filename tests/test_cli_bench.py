@@ -11,7 +11,7 @@ from pendulum_fmu.cli import bench
 from pendulum_fmu.cli.main import main
 
 
-@pytest.mark.parametrize("name", ["accuracy", "exact", "solvers", "speed", "sweep"])
+@pytest.mark.parametrize("name", ["accuracy", "cvode-jacobian", "exact", "fmi-versions", "solvers", "speed", "sweep"])
 def test_bench_help_has_defaults_and_examples_and_no_rst(name: str, capsys: pytest.CaptureFixture[str]) -> None:
     with pytest.raises(SystemExit) as stop:
         main(["bench", name, "--help"])
@@ -95,3 +95,14 @@ def test_bench_speed_prints_the_package_beside_its_peers(fmu_path: Path, capsys:
     assert expected <= set(rows), out
     for name, (best, median, error) in rows.items():
         assert 0 < best <= median and error <= 1e-9, name
+
+
+def test_bench_fmi_versions_prints_both_tables(fmu_path: Path, fmu3_path: Path,
+                                               capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["bench", "fmi-versions", "--fmi2", str(fmu_path), "--fmi3", str(fmu3_path)]) == 0
+    out = capsys.readouterr().out
+    seed = re.findall(r"^\| (75|80|85|90) \| (CS|ME) \| (\S+) \| (\S+) \| yes \|$", out, re.MULTILINE)
+    assert len(seed) == 8 and all(float(two) == float(three) < 1e-6 for _, _, two, three in seed)
+    regimes = re.findall(r"^\| (?:10 deg|90 deg|pi - 1e-6|separatrix [-+] 1e-9|rotation backward) \| (\S+) \| (\S+) \|$",
+                         out, re.MULTILINE)
+    assert len(regimes) == 6 and all(float(theta) < 1e-14 for theta, _ in regimes)

@@ -2,8 +2,7 @@
 
 The page holds the marker ``<!-- cli-reference -->``; this hook replaces it with the
 ``--help`` of ``pendulum-fmu`` and of every subcommand, as the program prints it, so the
-reference cannot drift from the code. The forwarded benchmark ``bench solvers`` parses its
-own arguments; its parser comes from :func:`pendulum_fmu.bench.solvers.build_parser`.
+reference cannot drift from the code.
 """
 
 from __future__ import annotations
@@ -29,7 +28,6 @@ def _help(parser: argparse.ArgumentParser) -> str:
 def reference() -> str:
     """The Markdown of the reference: one section per command, its ``--help`` verbatim."""
     os.environ["COLUMNS"] = "80"  # argparse wraps at the terminal width; the page shows 80 columns
-    from pendulum_fmu.bench.solvers import build_parser as solvers_parser
     from pendulum_fmu.cli.main import build_parser
 
     top = build_parser()
@@ -37,8 +35,7 @@ def reference() -> str:
     for name, sub in _subcommands(top).items():
         sections.append(f"## pendulum-fmu {name}\n\n```text\n{_help(sub)}\n```\n")
         for inner, leaf in _subcommands(sub).items():
-            text = _help(solvers_parser()) if (name, inner) == ("bench", "solvers") else _help(leaf)
-            sections.append(f"### pendulum-fmu {name} {inner}\n\n```text\n{text}\n```\n")
+            sections.append(f"### pendulum-fmu {name} {inner}\n\n```text\n{_help(leaf)}\n```\n")
     return "\n".join(sections)
 
 

@@ -8,13 +8,12 @@ twice on the same FMU instance's equations: as fmpy sets it up, and with a Jacob
 prints CVODE's counts (steps, right-hand-side evaluations, of which for difference-quotient
 Jacobians, Jacobian evaluations) and the largest deviation of theta from theta_exact.
 
-Usage: ``python -m pendulum_fmu.bench.cvode_jacobian FMU [FMU ...]``.
+``pendulum-fmu bench cvode-jacobian`` prints the table for the package's two FMUs.
 """
 
 from __future__ import annotations
 
 import math
-import sys
 from ctypes import CFUNCTYPE, POINTER, byref, c_double, c_int, c_long, c_void_p
 from dataclasses import dataclass
 from pathlib import Path
@@ -159,21 +158,14 @@ def run_cvode(fmu: Path, use_jacobian: bool, amplitude_deg: float = 85.0, tolera
     return CvodeRun(use_jacobian, *counts, max_error=error)
 
 
-def main(argv: list[str]) -> int:
-    """Prints the table of the README's CVODE figure for each FMU given."""
-    if not argv:
-        print("usage: python -m pendulum_fmu.bench.cvode_jacobian FMU [FMU ...]", file=sys.stderr)
-        return 2
-    print("FMU                         Jacobian          steps  RHS evals  of which for J  J evals  max|theta-exact|")
-    for fmu in argv:
-        version = read_model_description(fmu).fmiVersion
+def table(fmus: list[Path]) -> list[str]:
+    """The lines of the README's CVODE figure: each FMU without and with its Jacobian."""
+    lines = ["FMU                         Jacobian          steps  RHS evals  of which for J  J evals  max|theta-exact|"]
+    for fmu in fmus:
+        version = read_model_description(str(fmu)).fmiVersion
         for use_jacobian in (False, True):
-            run = run_cvode(Path(fmu), use_jacobian)
+            run = run_cvode(fmu, use_jacobian)
             label = "FMU (exact)" if use_jacobian else "difference q."
-            print(f"FMI {version:23} {label:15} {run.steps:7} {run.rhs_evaluations:10} "
-                  f"{run.difference_quotient_evaluations:15} {run.jacobian_evaluations:8} {run.max_error:17.2e}")
-    return 0
-
-
-if __name__ == "__main__":
-    sys.exit(main(sys.argv[1:]))
+            lines.append(f"FMI {version:23} {label:15} {run.steps:7} {run.rhs_evaluations:10} "
+                         f"{run.difference_quotient_evaluations:15} {run.jacobian_evaluations:8} {run.max_error:17.2e}")
+    return lines

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import argparse
-from pathlib import Path
 
 from pendulum_fmu.cli.arguments import (add_fmu_argument, add_method_arguments, add_pendulum_arguments, integer, method_from,
                         output_file, pendulum_from, positive)

@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import argparse
 import sys
-from pathlib import Path
 
 from pendulum_fmu.cli.arguments import add_fmu_argument, output_folder, positive
 from pendulum_fmu.output.paths import make_output_folder

@@ -8,7 +8,6 @@ import argparse
 import math
 import re
 import sys
-from pathlib import Path
 
 from pendulum_fmu.cli.arguments import (add_fmu_argument, angle_degrees, describe, finite, grid, integer, output_folder,
                                         positive, solver_list, tolerance)

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import argparse
-import math
 
 import pendulum_fmu.bench.speed as speed
 from pendulum_fmu.cli.arguments import add_fmu_argument, integer, plain_text
