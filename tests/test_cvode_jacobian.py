@@ -1,4 +1,4 @@
-"""fmpy's CVODE takes the FMU's Jacobian (pendulum-fmu bench cvode-jacobian): with it,
+"""fmpy's CVODE takes the FMU's Jacobian (pendulum-fmu bench fmi-versions): with it,
 CVODE evaluates no difference quotients and calls the FMU instead, and its solution is as
 accurate as with difference quotients. The figures themselves are the README's, not asserted."""
 

@@ -8,7 +8,7 @@ twice on the same FMU instance's equations: as fmpy sets it up, and with a Jacob
 prints CVODE's counts (steps, right-hand-side evaluations, of which for difference-quotient
 Jacobians, Jacobian evaluations) and the largest deviation of theta from theta_exact.
 
-``pendulum-fmu bench cvode-jacobian`` prints the table for the package's two FMUs.
+``pendulum-fmu bench fmi-versions`` prints the table for the FMI 2.0 and the FMI 3.0 FMU.
 """
 
 from __future__ import annotations

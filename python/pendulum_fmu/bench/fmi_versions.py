@@ -7,7 +7,8 @@ Part 2, the exact port in every regime: theta_exact from the FMI 3.0 FMU's Co-Si
 (3 s, 61 points) against mpmath's closed form at 50 digits.
 
 Both FMUs run through :class:`~pendulum_fmu.fmu.runner.FmuRunner`, the package's one path;
-``pendulum-fmu bench fmi-versions`` prints the tables.
+``pendulum-fmu bench fmi-versions`` prints the tables, and after them
+:mod:`pendulum_fmu.bench.cvode_jacobian`'s for both FMUs.
 """
 
 from __future__ import annotations

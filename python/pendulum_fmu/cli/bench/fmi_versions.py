@@ -1,4 +1,5 @@
-"""``pendulum-fmu bench fmi-versions``: the command line of :mod:`pendulum_fmu.bench.fmi_versions`."""
+"""``pendulum-fmu bench fmi-versions``: the tables of :mod:`pendulum_fmu.bench.fmi_versions` and
+:mod:`pendulum_fmu.bench.cvode_jacobian`, the FMI 3.0 FMU beside the FMI 2.0 one."""
 
 from __future__ import annotations
 
@@ -8,7 +9,7 @@ from pendulum_fmu.cli.arguments import fmu_file, plain_text
 from pendulum_fmu.cli.extras import module_docstring, require_extra
 
 NAME = "fmi-versions"
-HELP = "the FMI 3.0 FMU's accuracy beside the FMI 2.0 one's, and its exact port in every regime"
+HELP = "the FMI 3.0 FMU beside the FMI 2.0 one: accuracy, exact port, fmpy's CVODE with the FMU's Jacobian"
 DESCRIPTION = plain_text(module_docstring("pendulum_fmu.bench.fmi_versions") or HELP)
 EPILOG = """\
 examples:
@@ -26,8 +27,9 @@ def configure(parser: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    """Print both tables."""
+    """Print the three tables."""
     require_extra("bench fmi-versions", "bench", ("mpmath",))
+    from pendulum_fmu.bench.cvode_jacobian import table as cvode_table
     from pendulum_fmu.bench.fmi_versions import regime_table, seed_table
     from pendulum_fmu.fmu.locate import locate_fmu
     from pendulum_fmu.fmu.runner import FmuRunner
@@ -38,4 +40,6 @@ def run(args: argparse.Namespace) -> int:
         print("\n".join(seed_table(two, three)))
         print()
         print("\n".join(regime_table(three)))
+    print()
+    print("\n".join(cvode_table([fmi2, fmi3])))
     return 0
