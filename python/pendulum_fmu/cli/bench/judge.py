@@ -7,7 +7,6 @@ import sys
 
 import pendulum_fmu.bench.judge as bench_judge
 from pendulum_fmu.cli.arguments import add_fmu_argument, integer, plain_text
-from pendulum_fmu.fmu.locate import locate_fmu
 
 NAME = "judge"
 HELP = "how fast the judge reads and judges files of 1e3 to 2e6 rows (CS and ME), and its peak memory"
@@ -30,7 +29,7 @@ def configure(parser: argparse.ArgumentParser) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Write the files, judge each warm in a child process, print the table against the targets."""
-    fmu = locate_fmu(args.fmu)
+    fmu = args.fmu  # settled by resolve_fmu before any command runs
     try:
         timings = bench_judge.measure(fmu, tuple(args.rows), tuple(args.interface))
     except (RuntimeError, OSError) as error:
