@@ -312,7 +312,7 @@ def _parse(body: pa.Buffer | str, width: int, delimiter: str, wanted: dict[str, 
                                                                                                pa.string()),
                                                                     strings_can_be_null=False,
                                                                     quoted_strings_can_be_null=False))
-    except (pa.ArrowInvalid, UnicodeDecodeError):
+    except (pa.ArrowException, UnicodeDecodeError):  # any refusal: the line-by-line reader names it
         raise _Unparsed from None
     with ThreadPoolExecutor(max_workers=min(len(used), os.cpu_count() or 1)) as pool:
         done = {name: pool.submit(_column_numbers, table.column(column), delimiter == ";")
