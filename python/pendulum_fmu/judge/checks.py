@@ -34,7 +34,13 @@ linearised flow and accumulated (:mod:`pendulum_fmu.judge.sensitivity`), plus 30
 output time. Calibrated on CVODE, DOP853, LSODA, Radau and RK45 at their own tolerances
 (tests/me_bound_table.py, docs/importers.md, "The bound")."""
 SPIKE_RATIO = 100.0
-"""A value whose error stands this many times above both neighbours' errors is isolated."""
+"""A value whose error stands this many times above its neighbours' errors is isolated."""
+NEIGHBOURS = 3
+"""Rows either side whose largest error sets the scale of :func:`isolated_values`."""
+GROWTH_POINTS = 10_000
+"""At most about this many rows, evenly spread, fit the error's growth."""
+LEVEL = 1e-4
+"""The file's own error level in :func:`isolated_values`: this fraction of its largest error."""
 
 
 @dataclass(frozen=True)
@@ -79,11 +85,23 @@ def nominal_step(mean_step: float) -> float:
     return mean_step
 
 
-def time_grid(result: Result, step: float | None = None) -> tuple[Check, float | None]:
-    """Monotone times, the step h, and the drift of t_k from t_0 + k h.
+def _duplicates(result: Result, steps: np.ndarray) -> tuple[np.ndarray, bool]:
+    """Rows that repeat the time of the row before, and whether the only one is the last row
+    with the same values (an extra final row, as fmuCheck writes)."""
+    rows = np.flatnonzero(steps == 0) + 1
+    last_only = rows.size == 1 and rows[0] == result.rows - 1 and all(
+        v[-1] == v[-2] or not (np.isfinite(v[-1]) or np.isfinite(v[-2])) for v in result.values.values())
+    return rows, last_only
 
-    Allowed drift at row k: 2 k eps max(|t_k|, h) (a clock that sums its steps), half a
-    nanosecond (a clock counting whole nanoseconds), and the times' printed resolution.
+
+def time_grid(result: Result, step: float | None = None) -> tuple[Check, float | None]:
+    """Monotone times, no row twice, the step h, no rows missing, and the drift of t_k from
+    t_0 + k h.
+
+    h is the shortest decimal near the median step (or ``step``); a step of m h (m >= 2) is
+    m - 1 rows missing; a shorter last step is the stop time off the grid. Allowed drift at
+    row k: 2 k eps max(|t_k|, h) (a clock that sums its steps), half a nanosecond (a clock
+    counting whole nanoseconds), and the times' printed resolution.
 
     Returns
     -------
@@ -100,32 +118,69 @@ def time_grid(result: Result, step: float | None = None) -> tuple[Check, float |
         b = int(back[0])
         return Check("time grid", "fail", f"not monotone: time goes back from {float(t[b])!r} to {float(t[b + 1])!r} "
                      f"at row {b + 2}", {"rows": n, "first_backstep_row": b + 2}), None
-    repeated = int(np.sum(steps == 0))
     span = float(t[-1] - t[0])
     if span <= 0:
         return Check("time grid", "fail", f"all {n} rows at t = {float(t[0])!r}: no time span", {"rows": n}), None
-    unique = t[np.concatenate(([True], steps > 0))]
-    mean_step = span / (unique.size - 1)
-    h = float(step) if step else nominal_step(mean_step)
-    figures: dict[str, float | int | bool | str] = {"rows": n, "start": float(t[0]), "end": float(t[-1]),
-                                                    "step": h, "repeated_times": repeated}
+    repeated, extra_final_row = _duplicates(result, steps)
+    keep = np.concatenate(([True], steps > 0))
+    unique = t[keep]
     positive = np.diff(unique)
-    near = np.abs(positive - h) <= 1e-3 * h
-    if np.mean(near) < 0.9:
+    h = float(step) if step else nominal_step(float(np.median(positive)))
+    figures: dict[str, float | int | bool | str] = {"rows": n, "start": float(t[0]), "end": float(t[-1]),
+                                                    "step": h, "repeated_times": int(repeated.size)}
+    if repeated.size and not extra_final_row:
+        k = int(repeated[0])
+        figures["duplicate_rows"] = [int(r) + 1 for r in repeated[:20]]
+        return Check("time grid", "fail", f"{repeated.size} duplicate row(s): t = {t[k]:.10g} s is written again in "
+                     f"row {k + 1}; the pendulum has no events, so no time may repeat", figures), None
+    ratio = positive / h
+    multiple = np.rint(ratio)
+    on_grid = (multiple >= 1) & (np.abs(ratio - multiple) <= 1e-3 * multiple)
+    short_last = positive.size > 0 and 0 < ratio[-1] < 1 - 1e-3
+    if short_last:
+        on_grid[-1] = True
+        multiple[-1] = ratio[-1]
+    if np.mean(on_grid) < 0.9:
         figures.update(uniform=False, smallest_step=float(positive.min()), largest_step=float(positive.max()))
         return Check("time grid", "info", f"{n} rows, {t[0]:.6g} to {t[-1]:.6g} s, not a uniform grid "
                      f"(steps {positive.min():.3g} to {positive.max():.3g} s): no k h to drift from", figures), None
-    k = np.arange(unique.size)
-    ideal = unique[0] + k * h
-    deviation = unique - ideal
-    rows = np.flatnonzero(np.concatenate(([True], steps > 0)))
-    allowed = 2 * k * EPS * np.maximum(np.abs(unique), h) + HALF_NANOSECOND + result.resolution["time"][rows]
-    worst = int(np.argmax(np.abs(deviation)))
+    gaps = np.flatnonzero(on_grid & (multiple >= 2))
+    rows = np.flatnonzero(keep)
+    if gaps.size:
+        missing = int(np.sum(multiple[gaps] - 1))
+        g = int(gaps[0])
+        figures.update(uniform=True, missing_rows=missing, first_gap_time=float(unique[g]))
+        return Check("time grid", "fail", f"{missing} row(s) missing: the step from t = {unique[g]:.6g} s "
+                     f"(row {rows[g] + 1}) is {int(multiple[g])} h, h = {h:.6g} s; {gaps.size} such gap(s)",
+                     figures), h
+    k = np.arange(unique.size, dtype=float)
+    if short_last:
+        k[-1] = k[-2] + ratio[-1]
+
+    def drift(h: float) -> tuple[np.ndarray, np.ndarray]:
+        """t_k - (t_0 + k h), and the rounding allowed at each row."""
+        allowed = 2 * k * EPS * np.maximum(np.abs(unique), h) + HALF_NANOSECOND + result.resolution["time"][rows]
+        if short_last:
+            allowed[-1] = np.inf  # the stop time: off the grid by design
+        return unique - (unique[0] + k * h), allowed
+
+    deviation, allowed = drift(h)
     over = np.flatnonzero(np.abs(deviation) > allowed)
+    last_full = unique.size - 2 if short_last else unique.size - 1
+    if over.size and not step and last_full > 0:
+        # a step that is no short decimal (a computed one, such as a period over 50): the
+        # times' own step, when the grid holds to rounding with it
+        own = float((unique[last_full] - unique[0]) / k[last_full])
+        own_deviation, own_allowed = drift(own)
+        if not np.any(np.abs(own_deviation) > own_allowed):
+            h, deviation, allowed, over = own, own_deviation, own_allowed, own_deviation[:0].astype(int)
+            figures["step"] = h
+    worst = int(np.argmax(np.where(np.isfinite(allowed), np.abs(deviation), 0.0)))
     figures.update(uniform=True, largest_deviation=float(deviation[worst]), at_time=float(unique[worst]),
                    allowed_there=float(allowed[worst]), rows_over=int(over.size))
-    extra = f", {repeated} repeated" if repeated else ""
-    head = f"{n} rows{extra}, {t[0]:.6g} to {t[-1]:.6g} s, step h = {h:.6g} s"
+    extra = ", the last row written twice (an extra final row)" if extra_final_row else ""
+    last = ", the last step shorter (the stop time)" if short_last else ""
+    head = f"{n} rows{extra}{last}, {t[0]:.6g} to {t[-1]:.6g} s, step h = {h:.{6 if h == nominal_step(h) else 17}g} s"
     if over.size:
         first = int(over[0])
         figures["first_over_time"] = float(unique[first])
@@ -166,7 +221,9 @@ def growth(t: np.ndarray, error: np.ndarray) -> tuple[float, float] | None:
     mask = (t >= 0.1 * t[-1]) & (envelope > 0) & (t > 0)
     if np.sum(mask) < 5:
         return None
-    p, log_c = np.polyfit(np.log(t[mask]), np.log(envelope[mask]), 1)
+    rows = np.flatnonzero(mask)
+    rows = rows[:: max(1, rows.size // GROWTH_POINTS)]  # the envelope is monotone: a sample fits it alike
+    p, log_c = np.polyfit(np.log(t[rows]), np.log(envelope[rows]), 1)
     return float(p), float(math.exp(log_c))
 
 
@@ -206,33 +263,46 @@ def error_check(result: Result, ref: Reference, name: str, error: np.ndarray) ->
                  f"{describe_growth(fit)}", figures)
 
 
+def _neighbourhood(e: np.ndarray, width: int) -> np.ndarray:
+    """The largest of e over the ``width`` rows either side of each row, the row itself left out."""
+    out = np.zeros_like(e)
+    for d in range(1, width + 1):
+        np.maximum(out[d:], e[:-d], out=out[d:])
+        np.maximum(out[:-d], e[d:], out=out[:-d])
+    return out
+
+
 def isolated_values(result: Result, ref: Reference, errors: dict[str, np.ndarray]) -> Check:
-    """Values whose error stands alone: SPIKE_RATIO times above both neighbours' errors (and
-    above rounding), which no integrator makes and a mangled file does."""
+    """Values whose error stands alone: off the mean of their two neighbours (the one
+    neighbour at either end) by SPIKE_RATIO times the largest error of the NEIGHBOURS rows
+    either side, which no integrator makes and a mangled file does.
+
+    The scale is never below rounding (1e-14 max(1, |value|) and the print's resolution) nor
+    below LEVEL times the file's largest error, so that an error crossing zero next to a value
+    cannot make that value look alone.
+    """
     found: list[tuple[str, int, float, float]] = []
     for name, error in errors.items():
         if error.size < 3 or not np.all(np.isfinite(error)):
             continue
         scale = np.maximum(1.0, np.abs(getattr(ref, name)))
-        floor = 1e-14 * scale + result.resolution[name]
         e = np.abs(error)
-        left = np.concatenate(([e[1]], e[:-1]))
-        right = np.concatenate((e[1:], [e[-2]]))
-        neighbours = np.maximum(np.maximum(left, right), floor)
-        middle = error.copy()
-        middle[1:-1] = error[1:-1] - 0.5 * (error[:-2] + error[2:])
-        middle[0] = error[0] - (2 * error[1] - error[2])
-        middle[-1] = error[-1] - (2 * error[-2] - error[-3])
-        spikes = np.flatnonzero(np.abs(middle) > SPIKE_RATIO * neighbours)
-        found += [(name, int(k), float(middle[k]), float(neighbours[k])) for k in spikes]
+        floor = np.maximum(1e-14 * scale + result.resolution[name], LEVEL * float(e.max()))
+        around = np.maximum(_neighbourhood(e, NEIGHBOURS), floor)
+        off = error.copy()
+        off[1:-1] = error[1:-1] - 0.5 * (error[:-2] + error[2:])
+        off[0] = error[0] - error[1]
+        off[-1] = error[-1] - error[-2]
+        spikes = np.flatnonzero(np.abs(off) > SPIKE_RATIO * around)
+        found += [(name, int(k), float(off[k]), float(around[k])) for k in spikes]
     if not errors:
         return Check("isolated values", "info", "no theta or omega column to look at")
     if not found:
         return Check("isolated values", "pass", f"no value stands out of its neighbours' error by {SPIKE_RATIO:g}x",
                      {"count": 0})
-    name, k, jump, around = max(found, key=lambda f: abs(f[2]) / f[3])
+    name, k, jump, around_k = max(found, key=lambda f: abs(f[2]) / f[3])
     return Check("isolated values", "fail", f"{len(found)} value(s) out of line: {name} at {_at(result, k)} is "
-                 f"{jump:+.2e} off its neighbours (their error {around:.1e}): a mangled value, no solver's error",
+                 f"{jump:+.2e} off its neighbours (their error {around_k:.1e}): a mangled value, no solver's error",
                  {"count": len(found), "variable": name, "at_time": float(result.time[k]), "jump": jump,
                   "rows": [f[1] + 1 for f in found[:20]]})
 

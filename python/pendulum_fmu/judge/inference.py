@@ -20,6 +20,8 @@ from pendulum_fmu.judge.reading import Result
 from pendulum_fmu.judge.verdict import Experiment
 
 State = tuple[float, float]
+SCAN_ROWS = 2000
+"""The scan of L uses at most about this many rows, evenly spread (the fit itself uses all)."""
 
 
 @dataclass(frozen=True)
@@ -65,14 +67,15 @@ def fit_parameters(t: np.ndarray, columns: dict[str, np.ndarray], experiment: Ex
     omega0 = float(omegas[0][0]) if omegas and t[0] == 0 else experiment.omega0
     g = experiment.g
 
-    def residuals(theta_start: float, omega_start: float, length: np.ndarray | float) -> np.ndarray:
-        theta, omega = exact(theta_start, omega_start, np.atleast_1d(length)[:, None], g, t)
-        parts = [theta - v for v in thetas] + [(omega - v) / experiment.w0 for v in omegas]
+    def residuals(theta_start: float, omega_start: float, length: np.ndarray | float, every: int = 1) -> np.ndarray:
+        theta, omega = exact(theta_start, omega_start, np.atleast_1d(length)[:, None], g, t[::every])
+        parts = [theta - v[::every] for v in thetas] + [(omega - v[::every]) / experiment.w0 for v in omegas]
         return np.concatenate(parts, axis=-1)
 
-    lengths = experiment.L * np.geomspace(0.25, 4.0, 241)
+    lengths = experiment.L * np.geomspace(1e-2, 1e2, 481)
+    every = max(1, t.size // SCAN_ROWS)
     with np.errstate(all="ignore"):
-        scan = np.nanmax(np.abs(residuals(theta0, omega0, lengths)), axis=-1)
+        scan = np.nanmax(np.abs(residuals(theta0, omega0, lengths, every)), axis=-1)
     if not np.any(np.isfinite(scan)):
         return None
     start = np.array([theta0, omega0, math.log(float(lengths[int(np.nanargmin(scan))]))])
@@ -117,6 +120,34 @@ def cvode_errors(fmu: Path, result: Result, experiment: Experiment, tolerances: 
         theta, _ = exact(experiment.theta0, experiment.omega0, experiment.L, experiment.g, run["time"] - start)
         out.append(float(np.max(np.abs(run["theta"] - theta))))
     return out
+
+
+def solver_name(solver: str | None) -> str:
+    """The FMU's Co-Simulation solver by name: ``solver`` as given (a name or the enumeration's
+    number, 1 = dopri5 ...), or the FMU's default."""
+    from pendulum_fmu.spec import CS_SOLVERS, DEFAULT_CS_SOLVER  # noqa: PLC0415
+
+    if solver is None:
+        return DEFAULT_CS_SOLVER
+    text = str(solver).strip()
+    if text.isdigit() and 1 <= int(text) <= len(CS_SOLVERS):
+        return CS_SOLVERS[int(text) - 1]
+    return text if text in CS_SOLVERS else DEFAULT_CS_SOLVER
+
+
+def fmu_errors(fmu: Path, result: Result, experiment: Experiment, tolerances: list[float]) -> list[float]:
+    """Largest |theta - exact| of the FMU's own Co-Simulation solver at each tolerance, on the
+    file's output step and span (from the start)."""
+    from pendulum_fmu.fmu.runner import FmuRunner  # noqa: PLC0415
+    from pendulum_fmu.spec import Method, Pendulum, TimeGrid  # noqa: PLC0415
+
+    span = float(result.time[-1]) - experiment.start_time
+    interval = (float(result.time[-1]) - float(result.time[0])) / max(1, result.rows - 1)
+    problem = Pendulum(experiment.theta0, experiment.omega0, experiment.L, experiment.g)
+    grid = TimeGrid(stop=span, unit="s", output_interval=interval)
+    solver = solver_name(experiment.solver)
+    with FmuRunner(fmu) as runner:
+        return [runner.run(problem, Method(solver, tol), grid).max_error for tol in tolerances]
 
 
 def effective_tolerance(error: float, tolerances: list[float], errors: list[float]) -> float | None:

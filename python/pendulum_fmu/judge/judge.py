@@ -8,7 +8,7 @@ from typing import Any, Literal
 import numpy as np
 
 from pendulum_fmu.fmu.library import exact
-from pendulum_fmu.judge import band, checks, inference
+from pendulum_fmu.judge import alternatives, band, checks, inference
 from pendulum_fmu.judge.experiment import make_experiment
 from pendulum_fmu.judge.reading import ReadError, Result, describe_digits, read_result
 from pendulum_fmu.judge.verdict import Check, Experiment, Verdict
@@ -18,7 +18,8 @@ MANGLED_ROWS = 3
 different problem (which moves every row)."""
 FIT_AGREEMENT = 1e-10
 """A parameter fit explains the exact columns when it reproduces them to this."""
-CVODE_TOLERANCES = [10.0 ** -k for k in range(3, 13)]
+TOLERANCES = [10.0 ** -k for k in range(3, 13)]
+"""The decades at which the FMU's solver or CVODE is rerun to find the tolerance of a file."""
 
 
 def _reading_check(result: Result) -> Check:
@@ -40,12 +41,34 @@ def _experiment_check(experiment: Experiment, where: str) -> Check:
                  {"defaults_from": where})
 
 
+def _exact_fits(result: Result, ref: checks.Reference, experiment: Experiment) -> alternatives.Fits:
+    """Exact columns fit an alternative when they equal it to FIT_AGREEMENT beyond the print."""
+    rates = checks.slopes(ref, experiment)
+
+    def fits(residuals: alternatives.Columns) -> bool:
+        for name, r in residuals.items():
+            key = name.removesuffix("_exact")
+            allowed = (FIT_AGREEMENT * np.maximum(1.0, np.abs(result.values[name])) + 2 * result.resolution[name]
+                       + np.abs(rates[key]) * result.resolution["time"])
+            if not np.all(np.abs(r) <= allowed):
+                return False
+        return True
+    return fits
+
+
 def _exact_columns(result: Result, ref: checks.Reference, experiment: Experiment,
-                   h: float | None) -> tuple[Check, inference.Fit | None]:
+                   h: float | None, grid_failed: bool) -> tuple[Check, alternatives.Explanation | None]:
     mismatch = checks.exact_mismatch(result, ref, experiment)
     if not mismatch:
         return Check("exact columns", "info", "no theta_exact or omega_exact column"), None
     names = ", ".join(mismatch)
+    for name in mismatch:
+        bad = np.flatnonzero(~np.isfinite(result.values[name]))
+        if bad.size:
+            k = int(bad[0])
+            return Check("exact columns", "fail", f"{name} is {result.values[name][k]} at t = {result.time[k]:.6g} s "
+                         f"(row {k + 1}; {bad.size} such rows): the exact solution is finite everywhere",
+                         {"nonfinite_rows": int(bad.size), "first_nonfinite_time": float(result.time[k])}), None
     largest = {k: float(np.max(d)) for k, (d, _) in mismatch.items()}
     off = np.zeros(result.rows, dtype=bool)
     for d, allowed in mismatch.values():
@@ -65,28 +88,27 @@ def _exact_columns(result: Result, ref: checks.Reference, experiment: Experiment
     frozen = _frozen(result, list(mismatch))
     if frozen:
         return Check("exact columns", "fail", f"{names} differ from pendulum_fmu.exact: {frozen}", figures), None
-    if h is not None:  # values computed at k h but written at other times (a drifting clock)
+    if grid_failed and h is not None:  # values computed at k h but written at other times (a drifting clock)
         on_grid = Result(np.arange(result.rows) * h + result.time[0], result.values, result.resolution,
                          result.columns, result.instance, result.source, result.formats)
         on_grid_ref = checks.reference(on_grid, experiment)
         if all(np.all(d <= a) for d, a in checks.exact_mismatch(on_grid, on_grid_ref, experiment).values()):
             return Check("exact columns", "fail", f"{names} differ from pendulum_fmu.exact at the written times "
                          f"(largest {max(largest.values()):.2e}) but equal it at t = k h: the values are right, "
-                         "the times are written wrong", figures), None
-    fit = inference.fit_parameters(ref.t, {k: result.values[k] for k in mismatch}, experiment)
+                         "the times are written wrong (the clock drifts)", figures), None
     head = (f"{names} differ from pendulum_fmu.exact from t = {result.time[first]:.6g} s on (largest "
             f"{max(largest.values()):.2e}, {rows.size} rows)")
     print_allowance = 2 * max(float(np.max(a)) for _, a in mismatch.values())
-    changed = fit.differences(experiment, print_allowance) if fit is not None else []
-    if fit is not None and fit.residual <= FIT_AGREEMENT + print_allowance and changed:
-        figures["fit"] = {"theta0": fit.theta0, "omega0": fit.omega0, "L": fit.L, "g": fit.g, "residual": fit.residual,
-                          "changed": changed}
-        return Check("exact columns", "fail", f"{head}: they are the exact solution for {', '.join(changed)} "
-                     f"(g = {fit.g:g} held; fits to {fit.residual:.1e}): the importer set different parameters "
-                     "or start values", figures), fit
-    residual = f"best fit off by {fit.residual:.1e}" if fit else "no fit"
-    return Check("exact columns", "fail", f"{head}: no start values and L reproduce them ({residual}): "
-                 "mangled values", figures), None
+    found = alternatives.explain({k: result.values[k] for k in mismatch}, experiment, result.time, h,
+                                 _exact_fits(result, ref, experiment), print_allowance)
+    if found is not None:
+        explanation, _ = found
+        figures[explanation.cause] = explanation.figures
+        if explanation.cause == "parameters":
+            figures["fit"] = explanation.figures
+        return Check("exact columns", "fail", f"{head}: {explanation.line}", figures), explanation
+    return Check("exact columns", "fail", f"{head}: no other start values, g/L, start time, time shift or clock "
+                 "reproduces them: mangled values", figures), None
 
 
 def _frozen(result: Result, names: list[str]) -> str:
@@ -99,69 +121,94 @@ def _frozen(result: Result, names: list[str]) -> str:
             "refused a value?)")
 
 
+def _state_fits(ref: checks.Reference, experiment: Experiment, errors: dict[str, np.ndarray]) -> alternatives.Fits:
+    """theta and omega fit an alternative when, against it, they are within the bound, and
+    their largest error in units of the bound is at most half of what it is against the
+    experiment."""
+    limits = {name: checks.bound(name, ref, experiment) for name in errors}
+    before = max(float(np.max(np.abs(e) / limits[n])) for n, e in errors.items())
+
+    def fits(residuals: alternatives.Columns) -> bool:
+        after = max(float(np.max(np.abs(r) / limits[n])) for n, r in residuals.items())
+        return after <= min(1.0, 0.5 * before)  # a NaN compares False: no fit
+    return fits
+
+
 def _diagnosis(result: Result, ref: checks.Reference, experiment: Experiment, errors: dict[str, np.ndarray],
-               bound_failed: bool, fitted: inference.Fit | None, h: float | None, fmu: Path | None) -> Check | None:
-    """Why the numbers are off (or, in ME, what the importer's solver did)."""
-    if not errors:
+               explained: alternatives.Explanation | None, h: float | None, fmu: Path | None) -> Check | None:
+    """Why theta and omega are beyond the bound: what reproduces them."""
+    if not errors or not all(np.all(np.isfinite(e)) for e in errors.values()):
         return None
     worst = max(float(np.max(np.abs(e))) for e in errors.values())
     theta_growth = checks.describe_growth(checks.growth(ref.t, next(iter(errors.values()))))
-    if fitted is not None:
-        refit = checks.Reference(ref.t, *exact(fitted.theta0, fitted.omega0, fitted.L, fitted.g, ref.t), ref.accumulation)
+    if explained is not None and explained.cause == "parameters":
+        f = explained.figures
+        refit = checks.Reference(ref.t, *exact(f["theta0"], f["omega0"], f["L"], f["g"], ref.t), ref.accumulation)
         against = max(float(np.max(np.abs(e))) for e in checks.state_errors(result, refit).values())
-        changed = ", ".join(fitted.differences(experiment, _largest_resolution(result)))
         return Check("diagnosis", "info", f"a different problem, solved to {against:.1e} against its own exact "
-                     f"solution: {changed}", {"cause": "parameters", "error_against_fit": against})
-    if not bound_failed and experiment.interface == "CS":
-        return None
-    frozen = _frozen(result, list(errors)) if bound_failed else ""
+                     f"solution: {', '.join(f['changed'])}", {"cause": "parameters", "error_against_fit": against})
+    if explained is not None:
+        return None  # the exact columns' check names the cause
+    frozen = _frozen(result, list(errors))
     if frozen:
         return Check("diagnosis", "info", frozen, {"cause": "frozen"})
-    if bound_failed and result.formats is not None:
+    if result.formats is not None:
         rates = checks.slopes(ref, experiment)
         rounding = {n: result.resolution[n] + np.abs(rates[n]) * result.resolution["time"] for n in errors}
         if all(np.all(np.abs(e) <= 1.01 * rounding[n] + 1e-12) for n, e in errors.items()):
-            coarse = max(float(np.max(r)) for r in rounding.values())
+            name = max(errors, key=lambda n: float(np.max(np.abs(errors[n]))))
+            k = int(np.argmax(np.abs(errors[name])))
+            coarse = float(rounding[name][k])
             formats = ", ".join(sorted({result.formats[n].describe() for n in errors}))
             return Check("diagnosis", "info", f"every error is within the print's rounding (values printed with "
-                         f"{formats}, up to {coarse:.1e} here), coarser than the bound: the file cannot show the "
-                         "accuracy; write 17 significant digits", {"cause": "print precision", "rounding": coarse})
-    if bound_failed and experiment.interface == "ME" and h is not None:
+                         f"{formats}: {coarse:.1e} at the largest error, {name} at t = {result.time[k]:.6g} s), "
+                         "coarser than the bound: the file cannot show the accuracy; write 17 significant digits",
+                         {"cause": "print precision", "rounding": coarse})
+    if experiment.interface == "ME" and h is not None:
         found = inference.identify_fixed_step(result, experiment, h, worst)
         if found is not None:
             return Check("diagnosis", "info", f"{found.method} at h = {found.step:g} reproduces the file to "
                          f"{found.agreement:.1e}: the importer's solver is {found.method} with a fixed step "
                          f"(error {theta_growth})", {"cause": "fixed step", "method": found.method, "step": found.step})
-    if bound_failed:
-        fit = inference.fit_parameters(ref.t, {k: result.values[k] for k in errors}, experiment)
-        allowed = checks.CS_FACTOR * experiment.tolerance
-        if fit is not None and fit.differences(experiment) and fit.residual <= min(allowed, 1e-3 * worst):
-            return Check("diagnosis", "info", f"theta and omega fit the exact solution for "
-                         f"{', '.join(fit.differences(experiment))} to {fit.residual:.1e}: the importer set different "
-                         "parameters or start values", {"cause": "parameters", "theta0": fit.theta0,
-                                                         "omega0": fit.omega0, "L": fit.L})
-    if experiment.interface == "ME" and fmu is not None and "theta" in errors:
-        theta_error = float(np.max(np.abs(errors["theta"])))
-        errs = inference.cvode_errors(fmu, result, experiment, CVODE_TOLERANCES)
-        tol = inference.effective_tolerance(theta_error, CVODE_TOLERANCES, errs)
-        figures = {"cause": "tolerance", "cvode_tolerances": CVODE_TOLERANCES, "cvode_errors": errs,
-                   "effective_tolerance": tol}
-        if tol is None:
-            side = "smaller" if theta_error < min(errs) else "larger"
-            return Check("diagnosis", "info", f"theta error {theta_error:.1e} ({theta_growth}) is {side} than "
-                         f"CVODE's at every tolerance from 1e-3 to 1e-12", figures)
-        stated = experiment.tolerance
-        decade = f"~{10 ** round(np.log10(tol)):.0e}".replace("e-0", "e-")
-        if tol > 10 * stated:
-            because = ("not the experiment's" if not experiment.tolerance_stated else "not the stated")
-            return Check("diagnosis", "info", f"theta error {theta_error:.1e} fits CVODE at rtol {decade}, {because} "
-                         f"{stated:g}: the importer did not pass the experiment's tolerance to its solver", figures)
-        return Check("diagnosis", "info", f"theta error {theta_error:.1e} ({theta_growth}) fits CVODE at rtol "
-                     f"{decade} (tolerance {stated:g})", figures)
-    if bound_failed:
-        return Check("diagnosis", "info", f"no known cause reproduces the error (largest {worst:.1e}, {theta_growth})",
-                     {"cause": None})
-    return None
+    found_alternative = alternatives.explain({k: result.values[k] for k in errors}, experiment, result.time, h,
+                                             _state_fits(ref, experiment, errors), max(1e-6, _largest_resolution(result)))
+    if found_alternative is not None:
+        explanation, _ = found_alternative
+        return Check("diagnosis", "info", f"theta and omega: {explanation.line}",
+                     {"cause": explanation.cause, **explanation.figures})
+    if fmu is not None and "theta" in errors:
+        return _tolerance(result, experiment, errors, fmu, theta_growth)
+    return Check("diagnosis", "info", f"no known cause reproduces the error (largest {worst:.1e}, {theta_growth})",
+                 {"cause": None})
+
+
+def _tolerance(result: Result, experiment: Experiment, errors: dict[str, np.ndarray], fmu: Path,
+               theta_growth: str) -> Check:
+    """The tolerance at which the FMU's own solver (CS) or fmpy's CVODE (ME) makes the file's error."""
+    theta_error = float(np.max(np.abs(errors["theta"])))
+    if experiment.interface == "ME":
+        solver = "CVODE"
+        errs = inference.cvode_errors(fmu, result, experiment, TOLERANCES)
+    else:
+        solver = f"the FMU's {inference.solver_name(experiment.solver)}"
+        errs = inference.fmu_errors(fmu, result, experiment, TOLERANCES)
+    tol = inference.effective_tolerance(theta_error, TOLERANCES, errs)
+    figures = {"cause": "tolerance" if tol is not None else None, "tolerances": TOLERANCES, "errors": errs,
+               "effective_tolerance": tol, "solver": solver}
+    if tol is None:
+        side = "smaller" if theta_error < min(errs) else "larger"
+        return Check("diagnosis", "info", f"theta error {theta_error:.1e} ({theta_growth}) is {side} than "
+                     f"{solver}'s at every tolerance from 1e-3 to 1e-12: no known cause reproduces it", figures)
+    stated = experiment.tolerance
+    decade = f"~{10 ** round(np.log10(tol)):.0e}".replace("e-0", "e-")
+    if tol > 10 * stated:
+        because = "not the stated" if experiment.tolerance_stated else "not the experiment's"
+        return Check("diagnosis", "info", f"theta error {theta_error:.1e} fits {solver} at tolerance {decade}, "
+                     f"{because} {stated:g}: the importer did not pass the experiment's tolerance to its solver",
+                     figures)
+    figures["cause"] = None  # at the stated tolerance: the tolerance explains nothing
+    return Check("diagnosis", "info", f"theta error {theta_error:.1e} ({theta_growth}) fits {solver} at tolerance "
+                 f"{decade}, which is the stated {stated:g}: no known cause reproduces the error", figures)
 
 
 def _largest_resolution(result: Result) -> float:
@@ -211,23 +258,28 @@ def judge(data: Any, *, start: list[str] | dict[str, float | str] | None = None,
     grid, h = checks.time_grid(result, step)
     found.append(grid)
     ref = checks.reference(result, experiment)
-    exact_check, fitted = _exact_columns(result, ref, experiment,
-                                         h if grid.status == "fail" else None)
+    exact_check, explained = _exact_columns(result, ref, experiment, h, grid.status == "fail")
     found.append(exact_check)
     errors = checks.state_errors(result, ref)
+    if not errors:
+        found.append(Check("importer's values", "fail", "no theta or omega column: the file holds nothing of the "
+                           "importer's to judge (theta_exact and omega_exact are the FMU's own outputs)"))
     found += [checks.error_check(result, ref, name, e) for name, e in errors.items()]
     found.append(checks.isolated_values(result, ref, errors))
     bound = checks.bound_check(result, ref, experiment, errors)
     found.append(bound)
-    runner = fmu if fmu is not None else (Path(where) if where.endswith(".fmu") else None)
-    diagnosis = _diagnosis(result, ref, experiment, errors, bound.status == "fail", fitted, h, runner)
+    diagnosis = None
+    if bound.status == "fail":
+        runner = fmu if fmu is not None else (Path(where) if where.endswith(".fmu") else None)
+        diagnosis = _diagnosis(result, ref, experiment, errors, explained, h, runner)
     if diagnosis is not None:
         found.append(diagnosis)
     found.append(band.band_check(result, ref))
     failed = [c for c in found if c.status == "fail"]
     if failed:
+        first = failed[0]
         known = diagnosis is not None and diagnosis.figures.get("cause") is not None
-        reason = diagnosis.line if known and diagnosis is not None else failed[0].line
+        reason = diagnosis.line if known and first.name == "bound" and diagnosis is not None else first.line
         line = f"FAIL ({', '.join(c.name for c in failed)}): {reason}"
     else:
         line = f"PASS: {bound.line}" if bound.status == "pass" else f"PASS: {exact_check.line}"
