@@ -45,6 +45,14 @@ def fmu_path() -> Path:
     return locate_fmu()
 
 
+def split_path(fmi_version: int = 2) -> Path:
+    """The split pendulum's ``PendulumSplit.ssp`` (FMI 2.0 FMUs inside, or 3.0: ``fmi_version=3``);
+    see :func:`pendulum_fmu.split.locate.split_path`."""
+    from pendulum_fmu.split.locate import split_path as locate_split
+
+    return locate_split(fmi_version)
+
+
 def __getattr__(name: str) -> Any:
     if name in _EXPORTS:
         module = importlib.import_module(f".{_EXPORTS[name]}", __name__)
@@ -53,4 +61,5 @@ def __getattr__(name: str) -> Any:
 
 
 __all__ = ["SOLVERS", "BuildError", "exact", "FmuRunner", "Method", "Pendulum", "SimulationError", "SweepGrid", "SweepPoint",
-           "TimeGrid", "Trajectory", "UsageError", "__version__", "fmu_path", "locate_fmu", "run_sweep"]
+           "TimeGrid", "Trajectory", "UsageError", "__version__", "fmu_path", "locate_fmu", "run_sweep",
+           "split_path"]
