@@ -37,7 +37,7 @@ from collections import Counter, defaultdict
 from collections.abc import Callable, Iterable
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import Any, ClassVar
 
 import numpy as np
 
@@ -120,7 +120,7 @@ class Case:
 class Outcome:
     """The judge's verdict on one case and how it compares with the case's truth."""
 
-    MISSES = ("false alarm", "false pass", "wrong reason")
+    MISSES: ClassVar[tuple[str, ...]] = ("false alarm", "false pass", "wrong reason")
 
     case: Case
     passed: bool
@@ -148,6 +148,11 @@ class Outcome:
 def log_uniform(rng: np.random.Generator, low: float, high: float) -> float:
     """A number between ``low`` and ``high``, uniform in its logarithm."""
     return float(10 ** rng.uniform(math.log10(low), math.log10(high)))
+
+
+def log_between(u: float, low: float, high: float) -> float:
+    """The number between ``low`` and ``high`` at the share ``u`` (0..1) of the way in logarithm."""
+    return float(10 ** (math.log10(low) + u * (math.log10(high) - math.log10(low))))
 
 
 def regime(theta0: float, omega0: float, L: float, g: float) -> str:  # noqa: N803
@@ -554,7 +559,7 @@ def make_wrong(job: tuple[dict[str, Any], str]) -> Case | str:
             method = kind.split(": ")[1]
             parts = (1, 2, 4, 10)[int(u[0] * 4)]
             low, high = FIXED_STEP_SIZES[method]
-            interval = min(0.5, max(1e-3, float(f"{log_uniform(np.random.default_rng(spec['index']), low, high) * parts / w0:.3g}")))
+            interval = min(0.5, max(1e-3, float(f"{log_between(u[5], low, high) * parts / w0:.3g}")))
             h = interval / parts
             rows = int(min(1500, max(50, round((3 + 12 * u[1]) * 2 * math.pi / w0 / interval))))
             t = interval * np.arange(rows)
@@ -637,7 +642,7 @@ def make_wrong(job: tuple[dict[str, Any], str]) -> Case | str:
                 columns["time"] = summed.astype(float)
                 truth = {"clock": "float32 sum"}
             else:
-                drift = log_uniform(np.random.default_rng(spec["index"]), 1e-7, 1e-5)
+                drift = log_between(u[5], 1e-7, 1e-5)
                 columns["time"] = t + drift * (t / t[-1]) ** 2
                 truth = {"clock": "quadratic", "drift at the end": drift}
             truth["largest drift"] = float(np.max(np.abs(columns["time"] - t)))
@@ -667,8 +672,7 @@ def make_wrong(job: tuple[dict[str, Any], str]) -> Case | str:
             else:
                 columns = cs()
                 truth = {"theta run": spec["theta"]}
-                spec["theta"] = spec["theta"] + math.copysign(log_uniform(np.random.default_rng(spec["index"]),
-                                                                          1e-4, 0.1), u[2] - 0.5)
+                spec["theta"] = spec["theta"] + math.copysign(log_between(u[5], 1e-4, 0.1), u[2] - 0.5)
             start = told(spec, "CS")
         elif kind == "wrong omega":
             if u[0] < 0.4:
@@ -680,8 +684,7 @@ def make_wrong(job: tuple[dict[str, Any], str]) -> Case | str:
             else:
                 columns = cs()
                 truth = {"omega run": spec["omega"]}
-                spec["omega"] = spec["omega"] + math.copysign(
-                    log_uniform(np.random.default_rng(spec["index"]), 1e-4, 0.1) * w0, u[2] - 0.5)
+                spec["omega"] = spec["omega"] + math.copysign(log_between(u[5], 1e-4, 0.1) * w0, u[2] - 0.5)
             start = told(spec, "CS")
         elif kind == "startTime 5 not told":
             columns = cs(startTime=5.0)

@@ -121,6 +121,38 @@ def test_honest_runs_are_honest(corpus_root: Path) -> None:
             assert np.max(np.abs(result.values["omega_exact"] - omega)) <= scale * max(w0, float(np.max(np.abs(omega))))
 
 
+VISIBLE_IN_THE_VALUES = ("fixed step: explicit Euler", "fixed step: symplectic Euler", "fixed step: Heun",
+                         "fixed step: RK4", "tolerance not passed on", "time lag", "values one step early",
+                         "scaled clock", "g = 9.80665 not told", "L = 2 not told", "g = 1.62 not told", "wrong theta",
+                         "wrong omega", "startTime 5 not told", "degrees for radians")
+"""The wrong kinds whose theta or omega is off the exact solution of what the judge is told
+by more than 10 times the bound (CS 100 tol; ME 1000 tol); the others are wrong in their
+times, their rows or one value."""
+
+
+def test_wrong_runs_are_wrong(corpus_root: Path) -> None:
+    """Each wrong file of those kinds is far from the exact solution of what the judge is told,
+    by pendulum_fmu.exact at the file's own times: the fault is in the file, not in the test."""
+    import pandas as pd
+
+    from pendulum_fmu import exact
+
+    for part in corpus.PARTS:
+        for case in corpus.load(corpus_root / part):
+            if case.kind not in VISIBLE_IN_THE_VALUES:
+                continue
+            table = pd.read_csv(corpus_root / part / case.name)
+            start = {**{"theta": corpus.DEFAULT_THETA, "omega": 0.0, "L": 1.0, "g": 9.81, "startTime": 0.0,
+                        "tolerance": corpus.DEFAULT_TOLERANCE}, **case.start}
+            t = table["time"].to_numpy() - float(start["startTime"])
+            theta, omega = exact(start["theta"], start["omega"], start["L"], start["g"], t)
+            w0 = math.sqrt(float(start["g"]) / float(start["L"]))
+            off = max(float(np.max(np.abs(table["theta"].to_numpy() - theta) / np.maximum(1.0, np.abs(theta)))),
+                      float(np.max(np.abs(table["omega"].to_numpy() - omega) / np.maximum(w0, np.abs(omega)))))
+            bound = (100 if case.interface == "CS" else 1000) * float(start["tolerance"])
+            assert off > 10 * bound, (part, case.name, case.kind, off, bound)
+
+
 def _digest(folder: Path) -> str:
     digest = hashlib.sha256()
     for path in sorted(folder.rglob("*.csv")):
