@@ -219,3 +219,19 @@ def test_ssp_package(split_dirs: dict[str, Path], version: str) -> None:
         for model in MODELS:
             inner = zf.read(f"resources/{model}.fmu")
             assert inner == split_fmu(split_dirs, version, model).read_bytes(), f"{model}.fmu in the SSP is not the built one"
+
+
+@pytest.mark.parametrize("model", MODELS)
+def test_fmi2_and_fmi3_descriptions_agree(split_dirs: dict[str, Path], model: str) -> None:
+    """Name, value reference, causality, variability, initial, start and unit of every variable
+    (FMI 3.0's `time` aside), and the token: the FMI 3.0 template takes the FMI 2.0 guid."""
+    two = read_model_description(str(split_fmu(split_dirs, "2.0", model)))
+    three = read_model_description(str(split_fmu(split_dirs, "3.0", model)))
+
+    def table(md: Any) -> dict[str, tuple[Any, ...]]:
+        return {v.name: (v.valueReference, v.causality, v.variability, v.initial,
+                         None if v.start is None else float(v.start), v.unit)
+                for v in md.modelVariables if v.name != "time"}
+
+    assert table(two) == table(three)
+    assert two.guid == three.guid
