@@ -34,6 +34,7 @@ examples:
   pendulum-fmu judge result.csv --interface ME --start tolerance=1e-6
   pendulum-fmu judge ecos.csv --start theta=80deg --start L=2 --json verdict.json --plot errors.png
   pendulum-fmu judge container.csv --instance pend2
+  pendulum-fmu judge coupled.csv --system split --master gauss-seidel-zoh
   pendulum-fmu judge results/2.0/me/linux64/MyTool/1.0/PendulumFMU/0.1.0/Pendulum/Pendulum_out.csv \
       --cross-check-verdict results/2.0/me/linux64/MyTool/1.0/PendulumFMU/0.1.0/Pendulum
 """
@@ -56,6 +57,13 @@ def configure(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--fmu", type=fmu_file, metavar="PATH",
                         help="the FMU whose model description and FMI-LS-REF experiment give the defaults "
                              "(default: as for simulate)")
+    parser.add_argument("--system", choices=("pendulum", "split"), default="pendulum",
+                        help="pendulum: a run of Pendulum.fmu (default); split: a coupled run of PendulumBody and "
+                             "PendulumGravity (PendulumSplit.ssp), judged against the reference masters "
+                             "(docs/masters.md)")
+    parser.add_argument("--master", metavar="NAME",
+                        help="with --system split: the reference master the run implements, e.g. gauss-seidel-zoh "
+                             "(jacobi|gauss-seidel)-(zoh|extrapolation|interpolation); the bound is 4 times its error")
     parser.add_argument("--cross-check-verdict", type=output_folder, metavar="DIR",
                         help="also write DIR/passed, DIR/failed or DIR/rejected (empty, the cross-check "
                              "rules' verdict file; the other two are removed)")
@@ -63,6 +71,17 @@ def configure(parser: argparse.ArgumentParser) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Run ``judge`` with parsed arguments: print the checks and the verdict, return 0/1/2."""
+    if args.system == "split" or args.master:
+        from pendulum_fmu.judge import ReadError
+        from pendulum_fmu.split.judge import judge_split
+
+        try:
+            split = judge_split(args.result, start=args.start, master=args.master, instance=args.instance)
+        except (ReadError, ValueError) as error:
+            print(f"pendulum-fmu judge: {'unreadable: ' if isinstance(error, ReadError) else ''}{error}", file=sys.stderr)
+            return 2
+        print("\n".join(split.lines))
+        return split.exit_code
     from pendulum_fmu.judge import ReadError
     from pendulum_fmu.judge.report import lines, write_json, write_plot
     from pendulum_fmu.judge.standard_files import judge_with_experiment, outcome, write_verdict_file

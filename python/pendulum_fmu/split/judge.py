@@ -9,7 +9,8 @@ reference master reproduces it on its own grid, what is wrong when none does, an
 
 The verdict passes when the file is a reference master's run (to 1 % of that master's error)
 with no defect found and its error is within :data:`FACTOR` times the best reference master's
-of the same coupling at that H (or of ``master`` when the caller names what it implements).
+of the same coupling at that H (or of ``master`` when the caller names what it implements, and
+the file then behaves as that master).
 """
 
 from __future__ import annotations
@@ -222,5 +223,5 @@ def _bound(named: Master | None, behaves: str | None, references: dict[str, tupl
     text = (f"error {error:.3g} is {ratio:.3g} times {bound_master.describe()}'s {best:.3g} at H = {H:.6g}: "
             f"{'within' if within else 'above'} the bound of {factor:g} times")
     if named is not None and behaves is not None and behaves != named.name:
-        text += f" (it behaves as {master_named(behaves).describe()}, not as {named.describe()})"
+        return False, f"it behaves as {master_named(behaves).describe()}, not as the {named.describe()} it names; {text}"
     return within, text
