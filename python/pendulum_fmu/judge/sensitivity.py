@@ -23,9 +23,16 @@ rotation, periodic plus 2 pi j times a periodic one in revolution j, from the an
 each integral is a closed sum over whole periods plus a cumulative integral over one period,
 tabulated once on :data:`GRID` points: O(rows) for any file.
 
+The a and kappa terms shift the state along the orbit by a time within Delta(t) =
+int_0^t |a| + |kappa| int_0^t (t - s) |e|; their effect on component i is bounded by Delta times
+the largest |f_i| within Delta of t (mean value theorem), which also holds where f_i(t) = 0,
+and |p_i| likewise by its largest value there.
+
 The local error per unit time is eps = factor tol scale w0 / (2 pi) with the scales
 max(1, |theta|) and max(w0, |omega|): ``factor`` tol per natural period 2 pi / w0. One more
-factor tol scale at the output time itself covers the solver's interpolation there.
+factor tol scale at the output time itself covers the solver's interpolation there. Once the
+allowed energy error reaches :data:`LINEAR_LIMIT` of the distance to the separatrix the run
+may be on its other side, and nothing is refused from then on.
 """
 
 from __future__ import annotations
@@ -150,8 +157,8 @@ def period_and_kappa(d: float, m: float, w0: float) -> tuple[float, float]:
 
 
 def flow_and_normal(theta: np.ndarray, omega: np.ndarray, c: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """f = (omega, -c sin theta) and n = (c sin theta, omega): returns (omega, c sin theta) and
-    the same |components| the bound needs, as (f_theta, f_omega, n_theta); n_omega = f_theta."""
+    """(f_theta, f_omega, n_theta) of the flow f = (omega, -c sin theta) and the energy gradient
+    n = (c sin theta, omega); n_omega = f_theta."""
     c_sin = c * np.sin(theta)
     return omega, -c_sin, c_sin
 
@@ -278,22 +285,22 @@ def allowance(t: np.ndarray, theta: np.ndarray, omega: np.ndarray, experiment: E
     elapsed = np.maximum(t, 0.0)
     d, m = energy_gaps(e.theta0, e.omega0, w0)
 
-    def made(theta_bound: np.ndarray, omega_bound: np.ndarray, **figures: float | str) -> Allowance:
+    def made(theta_bound: np.ndarray, omega_bound: np.ndarray, regime: str, period: float, kappa: float,
+             cause: str, linear_until: float) -> Allowance:
         growth = np.maximum(theta_bound / local_theta, omega_bound / local_omega)
         finite = np.where(np.isfinite(growth), growth, -1.0)
         k = int(np.argmax(finite))
-        return Allowance(theta_bound, omega_bound, growth, largest_growth=float(max(finite[k], 1.0)),
-                         at_time=float(t[k]), **figures)  # type: ignore[arg-type]
+        return Allowance(theta_bound, omega_bound, growth, regime, period, kappa, float(max(finite[k], 1.0)),
+                         float(t[k]), cause, linear_until)
 
     if abs(d) < SEPARATRIX_GAP:
         endless = np.where(elapsed > 0, np.inf, 1.0)
-        return made(local_theta * endless, local_omega * endless, regime="separatrix", period=math.inf,
-                    kappa=math.inf, cause="separatrix", linear_until=0.0)
+        return made(local_theta * endless, local_omega * endless, "separatrix", math.inf, math.inf, "separatrix", 0.0)
     if m < HARMONIC_GAP:
         # Phi(t, s) is a rotation of (theta, omega / w0): each error keeps its size; 2 = 1 + w0 / w0.
         added = 2.0 * rate * elapsed
-        return made(local_theta + added, local_omega + w0 * added, regime="harmonic", period=2 * math.pi / w0,
-                    kappa=0.0, cause="harmonic" if np.any(added > unit) else "local", linear_until=math.inf)
+        return made(local_theta + added, local_omega + w0 * added, "harmonic", 2 * math.pi / w0, 0.0,
+                    "harmonic" if np.any(added > unit) else "local", math.inf)
 
     period, kappa = period_and_kappa(d, m, w0)
     grid = np.linspace(0.0, period, GRID + 1)
