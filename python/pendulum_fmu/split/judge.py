@@ -182,12 +182,12 @@ def judge_split(data: Any, start: Sequence[str] = (), master: str | None = None,
     resolution = 2 * float(np.max(result.resolution["theta"]))
     matches = [(diff / max(own, 1e-300), name) for name, (diff, own) in references.items()
                if diff <= MATCH * own + resolution]
-    behaves = min(matches)[1] if matches and not findings else None
+    behaves = min(matches)[1] if matches and not drifting else None
     if behaves is not None:
         diff, own = references[behaves]
         lines.append(_row("master", "INFO", f"behaves as {master_named(behaves).describe()} at H = {H:.6g}: "
                                             f"error {error:.3g}, as that scheme gives ({own:.3g}; the two differ by "
-                                            f"{diff:.2g})"))
+                                            f"{diff:.2g}){' once its rows are relabelled' if labels else ''}"))
     else:
         nearest = min(references, key=lambda name: references[name][0])
         lines.append(_row("master", "INFO", f"no reference master reproduces it at H = {H:.6g} (nearest: "
@@ -201,6 +201,7 @@ def judge_split(data: Any, start: Sequence[str] = (), master: str | None = None,
         findings.append(Finding("unexplained", "no reference master and no known defect reproduces the file"))
         lines.append(_row("unexplained", "FAIL", findings[-1].line))
     passed, verdict = _bound(named, behaves, references, error, factor, H)
+    behaves = behaves if not findings else None
     passed = passed and not findings
     lines.append(_row("verdict", "PASS" if passed else "FAIL", verdict if passed or not findings else
                       f"{findings[0].line.split(':')[0]}; {verdict}"))
