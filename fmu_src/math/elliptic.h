@@ -40,16 +40,6 @@
 #include "dd.h"
 #include "trig.h"
 
-/* The double-double names fmu_src/solvers/integrator_core.c still uses: the same functions
- * under dd.h's names, until that file takes those names itself. */
-#define EllipticDD DoubleDouble
-#define elliptic_dd dd_of
-#define elliptic_dd_add dd_add
-#define elliptic_dd_mul dd_mul
-#define elliptic_dd_neg dd_neg
-#define elliptic_dd_sincos dd_sincos
-#define elliptic_two_prod dd_two_prod
-
 /* ---------------------------------------------------------------------------------------
  * Carlson's R_F (the complete integral K is part of EllipticParam).
  * --------------------------------------------------------------------------------------- */

@@ -6,10 +6,10 @@
 
 #include "integrator.h"
 #include "integrator_core.h"
+#include "methods.h"
 
 /* Below this, g - w0sq L may be subnormal and inexact: no low part then. */
 #define DBL_MIN_NORMAL_GUARD 0x1p-900
-#include "methods.h"
 
 /* The adaptive methods never go below this tolerance (about 45 ulp of 1): tighter
  * requests only make the step-size controller chase rounding noise. */
@@ -19,11 +19,6 @@
  * equilibria, where the error estimate vanishes and the step would otherwise grow without
  * limit. */
 #define INTEG_HMAX_W0 1.0
-
-/* Closeness to the separatrix below which no step rule tightens further: tol closeness =
- * INTEGRATOR_REACH, where the accuracy the bound needs falls below rounding and no
- * double-precision solver can hold it (integrator.h); without a floor the steps would vanish
- * on the separatrix. */
 
 /* Closeness below which the fixed-step methods project onto the energy as well. */
 #define INTEG_PROJECT_CLOSENESS 1e-2
@@ -48,16 +43,21 @@ static int init_common(Integrator *it, SolverKind kind, double w0sq, double w0sq
     /* Local error test rtol = atol = tol (states have nominal value 1). The fixed-step
      * methods turn tol into their step (rk4.c, symplectic.c). The adaptive methods also
      * project onto the initial energy: without it, the energy error of the local steps
-     * drifts and turns into a secular phase error (DOPRI5 at tol 1e-8 was 4e-6 off after
-     * 10 periods at 75..90 deg, as scipy's RK45 is), and near the separatrix it can carry
-     * a libration over the top; with it, 3e-8 (see tests/c/test_integrators.c). */
+     * drifts and turns into a secular phase error (measured without the projection: DOPRI5
+     * at tol 1e-8 ends 4e-6 off after 10 periods at 75..90 deg, as scipy's RK45 does), and
+     * near the separatrix it can carry a libration over the top; with it, 3e-8 (see
+     * tests/c/test_integrators.c). */
     /* The motion's scales (documentation/math.html): m = s^2 + q^2, m1 = (|c| - |q|)(|c| + |q|) with
      * s, c = sin, cos(theta0/2), q = omega0 / (2 w0). The time scale is 1/rate, and near the
      * separatrix an energy error dH shifts the period by ~dH / (w0^2 closeness) (dK/dm ~
      * 1/(2 m1)), so the global error over a period grows like 1/closeness: the step rules of
-     * the fixed-step methods and DOPRI5's local tolerance take both into account (without,
-     * symplectic at tol 1e-8 was 1.7e-3 off over three revolutions at omega0 = 30 w0, and
-     * 0.056 at tol 1e-6 next to the separatrix; tests/c/test_solver_tolerance.c). */
+     * the fixed-step methods and DOPRI5's local tolerance take both into account (measured
+     * with rules that ignore them: symplectic at tol 1e-8 ends 1.7e-3 off over three
+     * revolutions at omega0 = 30 w0, and 0.056 off at tol 1e-6 next to the separatrix;
+     * tests/c/test_solver_tolerance.c). The closeness has a floor, INTEGRATOR_REACH / tol:
+     * below tol closeness = INTEGRATOR_REACH the accuracy the bound needs falls below rounding
+     * and no double-precision solver can hold it (integrator.h), so no step rule tightens
+     * further there; without the floor the steps would shrink to nothing on the separatrix. */
     {
         const double w0 = sqrt(w0sq), s = sin(0.5 * theta0), c = fabs(cos(0.5 * theta0));
         const double q = fabs(omega0) / (2.0 * w0);
@@ -80,8 +80,8 @@ static int init_common(Integrator *it, SolverKind kind, double w0sq, double w0sq
     it->hmax = INTEG_HMAX_W0 / it->rate;
     it->err_prev = 1e-4;
     /* the fixed-step methods project too near the separatrix: there the energy error of their
-     * steps, not their phase error, is what the period amplifies (rk4 and symplectic were 1e3
-     * to 1e4 times their bound at 1 - m = 2e-12 without; docs/certificate.md) */
+     * steps, not their phase error, is what the period amplifies (without the projection, rk4
+     * and symplectic end 1e3 to 1e4 times their bound at 1 - m = 2e-12; docs/certificate.md) */
     it->project_energy = (kind == SOLVER_DOPRI5 || kind == SOLVER_RKN || it->closeness < INTEG_PROJECT_CLOSENESS);
     it->t_prev = t0;
     it->y_prev[0] = theta0;

@@ -17,7 +17,7 @@ typedef enum {
     SOLVER_DOPRI5 = 1,      /* adaptive Dormand-Prince 5(4) with dense output */
     SOLVER_RK4 = 2,         /* classic RK4, fixed step derived from the tolerance */
     SOLVER_RKN = 3,         /* adaptive Runge-Kutta-Nystrom 12(10) pair for theta'' = f(theta):
-                               the FMU's default (README, the speed-against-error study) */
+                               the FMU's default (docs/solvers.md, the speed-against-error study) */
     SOLVER_SYMPLECTIC = 4   /* structure-preserving method for long horizons */
 } SolverKind;
 
@@ -52,7 +52,7 @@ typedef struct {
                                     for every L and g) */
     double t;                    /* time of the internal solution point: t + t_lo, kept as a
                                     compensated sum of the steps (without it, the rounding of
-                                    t += h, ulp(t)/2 a step, was a phase error of 2.5e-9 after
+                                    t += h, ulp(t)/2 a step, is a phase error of 2.5e-9 after
                                     10,000 periods at 90 deg) */
     double t_lo;                 /* low part of that time, |t_lo| <= ulp(t)/2 */
     double y[2];                 /* internal solution (theta, omega) at t */
@@ -78,7 +78,7 @@ typedef struct {
                                     from the separatrix, G = H - 2 w0sq, which keeps its
                                     relative accuracy near the top, where H loses it */
     double energy0_lo;           /* low part of energy0 (double-double): rounded to a double, G
-                                    near the separatrix was off by ~1e-16 of 2 w0sq, a bias of
+                                    near the separatrix is off by ~1e-16 of 2 w0sq, a bias of
                                     1 - m that the period turns into a phase error growing like
                                     1 / (1 - m) (docs/certificate.md) */
     int project_energy;          /* 1: every accepted point is projected back onto G = energy0
@@ -100,8 +100,8 @@ typedef struct {
 
 /* The smallest tolerance a Co-Simulation experiment may ask for (instance/calls.c refuses a
  * smaller one, model.c a state that carries one). Below it the step certificate's bound,
- * 100 tol less the exact port's own error 5e-14 (instance.h), is no longer the tolerance's
- * (at 1e-15 it would be half of it, at 5e-16 zero), and the solvers no longer follow the
+ * 100 tol less the exact port's own error 5e-14 (instance.h), is not the tolerance's
+ * (at 1e-15 it would be half of it, at 5e-16 zero), and the solvers do not follow the
  * tolerance: the adaptive methods' local tolerance stops at 1e-14 (INTEG_MIN_TOL,
  * integrator.c). Measured with mpmath (docs/certificate.md) by a build that sets it lower on
  * the compiler's command line. */

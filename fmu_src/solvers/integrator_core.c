@@ -6,7 +6,7 @@
 #include <float.h>
 #include <math.h>
 
-#include "elliptic.h"
+#include "dd.h"
 #include "integrator_core.h"
 
 double integ_hmin(const Integrator *it)
@@ -21,22 +21,22 @@ double integ_hmin(const Integrator *it)
 
 double integ_energy0(double w0sq, double w0sq_lo, double theta0, double omega0, double *lo)
 {
-    /* G = omega0^2/2 - 2 w0sq cos^2(theta0/2): the cosine in double-double (elliptic.c; a
-     * correctly rounded cos alone is 1e-16 off, a bias of 1 - m that near the separatrix became
-     * the error), the products split exactly (two-product), the sum in double-double. Beyond
-     * |theta0| <= 4 pi (where elliptic_dd_sincos applies), the double cosine. */
-    EllipticDD c;
+    /* G = omega0^2/2 - 2 w0sq cos^2(theta0/2): the cosine in double-double (dd_sincos, dd.c;
+     * a correctly rounded double cosine is up to 1e-16 off, a bias of 1 - m that near the
+     * separatrix becomes the error), the products split exactly (two-product), the sum in
+     * double-double. dd_sincos takes |theta0/2| <= 2 pi; beyond, the double cosine. */
+    DoubleDouble c;
     if (fabs(theta0) <= 4.0 * 3.141592653589793) {
-        EllipticDD s;
-        elliptic_dd_sincos(elliptic_dd(0.5 * theta0), &s, &c);
+        DoubleDouble s;
+        dd_sincos(dd_of(0.5 * theta0), &s, &c);
     } else {
-        c = elliptic_dd(cos(0.5 * theta0));
+        c = dd_of(cos(0.5 * theta0));
     }
-    const EllipticDD kin = elliptic_two_prod(0.5 * omega0, omega0);   /* 0.5 omega0 exact scaling */
-    const EllipticDD cc = elliptic_dd_mul(c, c);
-    const EllipticDD w2 = {2.0 * w0sq, 2.0 * w0sq_lo};
-    const EllipticDD pot = elliptic_dd_mul(w2, cc);
-    const EllipticDD g = elliptic_dd_add(kin, elliptic_dd_neg(pot));
+    const DoubleDouble kin = dd_two_prod(0.5 * omega0, omega0);   /* 0.5 omega0 exact scaling */
+    const DoubleDouble cc = dd_mul(c, c);
+    const DoubleDouble w2 = {2.0 * w0sq, 2.0 * w0sq_lo};
+    const DoubleDouble pot = dd_mul(w2, cc);
+    const DoubleDouble g = dd_add(kin, dd_neg(pot));
     if (!(isfinite(g.hi) && isfinite(g.lo))) {
         /* the exact products split their factors (Dekker), which overflows for factors near
          * DBL_MAX / 2^27 (g/L or omega0^2 beyond about 1e300): G in double there, finite or
@@ -49,8 +49,9 @@ double integ_energy0(double w0sq, double w0sq_lo, double theta0, double omega0, 
 }
 
 /* sqrt(mean (v_i scale / sc_i)^2): the weighted RMS of v in the time unit `scale`, each term
- * scaled before it is squared. integ_initial_step squares first (the bits it always gave) and
- * takes this only when that overflowed: beyond w0 / tol ~ 1e154 the slope's square does. */
+ * scaled before it is squared. integ_initial_step squares first (HNW's norm as written; scaling
+ * first rounds differently and would move the first step of every run) and takes this only
+ * where that overflows: beyond w0 / tol ~ 1e154 the slope's square does. */
 static double scaled_rms(const double v[2], const double sc[2], double scale)
 {
     const double r0 = v[0] / sc[0] * scale, r1 = v[1] / sc[1] * scale;
@@ -204,10 +205,11 @@ int integ_project(Integrator *it, const double y0[2], double ynew[2], double fne
      * s = sin(theta/2), c = cos(theta/2). Orthogonal in the coordinates (theta, u = omega/w0),
      * where G = w0sq (u^2/2 - 2 c^2) has the gradient w0sq (sin theta, u): in (theta, omega)
      * the move is lambda (sin theta, omega), lambda = (G0 - G) / (w0sq sin^2 theta + omega^2),
-     * the same at every L and g (orthogonal in (theta, omega) it was not: the scale ladder's
-     * results differed at 3e-11 between w0 = 1 and 2^20). One sin/cos pair at the new point is counted in rhs_evals (it costs what a
-     * stage costs, and gives f there); the Newton corrections rotate (s, c) without new
-     * trigonometric calls where they are small (rotate_half_angle). */
+     * the same at every L and g (a projection orthogonal in (theta, omega) depends on w0: the
+     * scale ladder's results then differ at 3e-11 between w0 = 1 and 2^20). One sin/cos pair
+     * at the new point is counted in rhs_evals (it costs what a stage costs, and gives f
+     * there); the Newton corrections rotate (s, c) without new trigonometric calls where they
+     * are small (rotate_half_angle). */
     const double w0sq = it->w0sq;
     const double th_in = ynew[0], om_in = ynew[1];
     const double s_in = sin(0.5 * th_in), c_in = cos(0.5 * th_in);

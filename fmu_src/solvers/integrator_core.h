@@ -29,8 +29,8 @@ static inline double integ_accel(Integrator *it, double theta)
 
 /* x + d with the rounding error carried in *carry (compensated summation, Kahan 1965, with
  * Knuth's TwoSum so that |d| > |x| is fine): the fixed-step methods accumulate no rounding
- * drift over millions of steps (near the separatrix an energy drift of a few ulps per step
- * was the error at tol 1e-10). */
+ * drift over millions of steps (near the separatrix, summed plainly, an energy drift of a
+ * few ulps per step is the error at tol 1e-10). */
 static inline double integ_add_compensated(double x, double d, double *carry)
 {
     const double b = d + *carry;

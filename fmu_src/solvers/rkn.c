@@ -13,10 +13,10 @@
  * q <= 9, and sum_j a_ij = c_i^2 / 2 (exactly, except for the last four stages: to 1e-53);
  * tests/c/test_integrators.c observes global order 12 at a constant step.
  *
- * Why this pair: measured on the pendulum (README, "Solvers and the speed-against-error
- * study"), it reaches every error from 1e-4 to 1e-12 over 10 periods at 75..90 deg with
- * 2.4 to 4.8 times fewer evaluations of sin than scipy's Dormand-Prince 8(5,3) (DOP853),
- * and 2 to 4 times fewer than the RKN6(4) pair this file held before (80 deg, 10 periods:
+ * Why this pair: measured on the pendulum (docs/solvers.md, "Solvers and the
+ * speed-against-error study"), it reaches every error from 1e-4 to 1e-12 over 10 periods at
+ * 75..90 deg with 2.4 to 4.8 times fewer evaluations of sin than scipy's Dormand-Prince
+ * 8(5,3) (DOP853), and 2 to 4 times fewer than an RKN6(4) pair (80 deg, 10 periods:
  * 786, 1211, 1670 evaluations for errors 1e-6, 1e-8, 1e-10, against 1612, 3552, 7102).
  *
  * With x = theta, v = omega, k_i = f(x0 + c_i h v0 + h^2 sum_j a_ij k_j):
@@ -27,7 +27,7 @@
  * the projection, f for the next step, and sin/cos for the dense output.
  *
  * Each accepted point is projected back onto the initial energy (integ_project in
- * integrator.c), which keeps a libration from turning into a rotation near the separatrix
+ * integrator_core.c), which keeps a libration from turning into a rotation near the separatrix
  * and removes the secular energy drift, so the global error grows linearly, not
  * quadratically, with time.
  *
@@ -51,14 +51,14 @@
 /* Largest step, in units of 1/w0 (a period of small oscillations is 2 pi). Binds near the
  * equilibria and near the top of a libration close to the separatrix, where the error
  * estimate is tiny; 2 is 3.6 steps a period at 80 deg. At 3, the steps that cross the fast
- * swing after a slow passage of the top left the pair's asymptotic range: at tol 1e-3,
- * 5 periods at 179.99 deg were 3.4e-3 off instead of 4.0e-5. */
+ * swing after a slow passage of the top leave the pair's asymptotic range: at tol 1e-3,
+ * 5 periods at 179.99 deg end 3.4e-3 off instead of 4.0e-5. */
 #define RKN_HMAX_W0 2.0
 /* Safety factor of the step-size controller. With the PI controller's exponents for
  * q = 11, a smooth stretch settles at err = 0.8^36.7 = 2.8e-4 of the tolerance (0.9 would
  * settle at 0.02): steps stay a factor ~2 below the size the error test would reject. At
- * 0.9 the steps into the fast swing after a slow passage of the top were rejected 30 to
- * 110 times over P2 (20 periods at 179.99 deg), and the error there stopped shrinking
+ * 0.9 the steps into the fast swing after a slow passage of the top are rejected 30 to
+ * 110 times over P2 (20 periods at 179.99 deg), and the error there stops shrinking
  * with the tolerance (6.3e-7 at tol 1e-6, 7.2e-7 at 1e-7); at 0.8 there is no rejection
  * and the error falls at every decade of tol from 1e-3 down to its rounding floor (1e-11
  * to 4e-11, reached near tol 1e-10). At equal error the cost is the same (the tolerance
@@ -137,9 +137,9 @@ static const double EBP[RKN_STAGES] = {
 /* Rows RIGHT_ROW .. RIGHT_ROW + 3 keep the last step's right-end Taylor coefficients (in its
  * time unit h_last), which are the next step's left end: A_n h^n = (A_n h_last^n) (h / h_last)^n,
  * so a step expands only its new end. Row RIGHT_H_ROW [0] is 1 while they are valid, 0 after
- * integ_rkn_start (the first step expands both ends). A flag of its own, not h_last > 0: an FMU
- * state saved by a build before these rows (the same state format) holds zeros here, flag
- * included, and so expands both ends after it is restored. */
+ * integ_rkn_start (the first step expands both ends). A flag of its own, not h_last > 0: the
+ * FMU state format does not version these rows, and a state that holds zeros here (as one
+ * serialized without them does, flag included) must expand both ends after it is restored. */
 #define RIGHT_ROW (TRIG_ROW + 1)
 #define RIGHT_H_ROW (RIGHT_ROW + INTEG_TAYLOR_TERMS / 2)
 _Static_assert(RIGHT_H_ROW < INTEGRATOR_MAX_STAGES, "dense[] holds the Hermite coefficients, sin/cos and the right end");

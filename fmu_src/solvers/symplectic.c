@@ -30,7 +30,7 @@
  * Output: Hermite interpolation of degree 7 for theta from theta, theta' = omega,
  * theta'' = -w0^2 sin(theta) and theta''' = -w0^2 cos(theta) omega at both ends of the
  * step; omega is its derivative. Its error, O(h^8) in theta and O(h^7) in omega, matches
- * the method's order (a quintic Hermite, O(h^5) in omega, was 300x less accurate than the
+ * the method's order (a quintic Hermite, O(h^5) in omega, is 300x less accurate than the
  * step points at tol 1e-9). theta''' costs one cos per step, counted in rhs_evals with the
  * sines (a step counts 16). The internal steps never land on the output times, so the
  * symplectic map is applied with the same h throughout and the energy error stays
