@@ -24,8 +24,18 @@ def _simulate(container: Path, H: float, stop: float, out: Path, names: dict[str
     """Run ``container`` with fmpy at output interval H; write its outputs under our names."""
     from fmpy import simulate_fmu
 
-    rows = simulate_fmu(str(container), start_time=0.0, stop_time=stop, step_size=H, output_interval=H,
-                        output=list(names.values()))
+    messages: list[str] = []
+
+    def collect(*arguments: object) -> None:
+        text = arguments[-1]
+        messages.append(text.decode(errors="replace") if isinstance(text, bytes) else str(text))
+
+    try:
+        rows = simulate_fmu(str(container), start_time=0.0, stop_time=stop, step_size=H, output_interval=H,
+                            output=list(names.values()), logger=collect)
+    except Exception as error:  # noqa: BLE001 (the engine's own words: its last logged message)
+        told = f" ({messages[-1].strip()})" if messages else ""
+        raise EngineError(f"{container.name} in fmpy: {error}{told}") from error
     _write(out, list(rows["time"]), {ours: list(rows[theirs]) for ours, theirs in names.items()})
     return out
 
@@ -81,8 +91,8 @@ def run_fmpy_container(H: float, stop: float, out: Path, fmi_version: int = 2) -
     try:
         build_fmpy_container(H, fmi_version, container)
         return _simulate(container, H, stop, out, {c: c for c in COLUMNS})
-    except EngineError:
-        raise
+    except EngineError as error:
+        raise EngineError(f"fmpy container_fmu: {error}") from error
     except Exception as error:  # noqa: BLE001 (the engine's own error, told as it is)
         raise EngineError(f"fmpy container_fmu: {type(error).__name__}: {error}") from error
 
@@ -119,10 +129,7 @@ def run_fmucontainer(H: float, stop: float, out: Path, fmi_version: int = 2) -> 
         if done.returncode != 0 or not built.exists():
             lines = [line for line in (done.stdout + done.stderr).splitlines() if "ERROR" in line.upper()]
             raise EngineError(f"fmucontainer: {(lines or (done.stdout + done.stderr).splitlines() or ['no output'])[-1]}")
-        try:
-            return _simulate(built, H, stop, out, {c: c.replace(".", "_") for c in COLUMNS})
-        except Exception as error:  # noqa: BLE001
-            raise EngineError(f"fmucontainer's FMU in fmpy: {type(error).__name__}: {error}") from error
+        return _simulate(built, H, stop, out, {c: c.replace(".", "_") for c in COLUMNS})
     finally:
         shutil.rmtree(folder, ignore_errors=True)
 
