@@ -104,21 +104,27 @@ def test_engine_runs_are_in_the_corpus(corpus_root: Path) -> None:
 def test_honest_runs_are_honest(corpus_root: Path) -> None:
     """Each honest file's exact columns are the exact solution of what the judge is told, so a
     false alarm is the judge's and not the corpus's (checked where the file has them)."""
-    from pendulum_fmu import exact
-    from pendulum_fmu.judge.reading import read_result
+    import pandas as pd
 
+    from pendulum_fmu import exact
+
+    checked = 0
     for part in corpus.PARTS:
         for case in corpus.load(corpus_root / part)[::7]:
             if case.corpus != "honest":
                 continue
-            result = read_result(corpus_root / part / case.name, None)
+            table = pd.read_csv(corpus_root / part / case.name, skipinitialspace=True)
+            column = {name: next(c for c in table.columns if name in c) for name in ("theta_exact", "omega_exact")}
+            times = table[next(c for c in table.columns if c.lower() == "time")].to_numpy()
             start = float(case.start.get("startTime", 0.0))
             theta, omega = exact(case.start["theta"], case.start["omega"], case.start["L"], case.start["g"],
-                                 result.time - start)
-            scale = 1e-6 if case.engine.startswith("Ecos") else 1e-12
-            assert np.max(np.abs(result.values["theta_exact"] - theta)) <= scale * max(1.0, float(np.max(np.abs(theta))))
+                                 times - start)
+            scale = 1e-6 if case.engine.startswith("Ecos") else 1e-12  # Ecos prints %.6f
             w0 = math.sqrt(float(case.start["g"]) / float(case.start["L"]))
-            assert np.max(np.abs(result.values["omega_exact"] - omega)) <= scale * max(w0, float(np.max(np.abs(omega))))
+            assert np.max(np.abs(table[column["theta_exact"]] - theta)) <= scale * max(1.0, float(np.max(np.abs(theta))))
+            assert np.max(np.abs(table[column["omega_exact"]] - omega)) <= scale * max(w0, float(np.max(np.abs(omega))))
+            checked += 1
+    assert checked > 250
 
 
 VISIBLE_IN_THE_VALUES = ("fixed step: explicit Euler", "fixed step: symplectic Euler", "fixed step: Heun",
