@@ -10,7 +10,7 @@ from __future__ import annotations
 import argparse
 from types import ModuleType
 
-from pendulum_fmu.cli.bench import accuracy, exact, fmi_versions, judge, solvers, speed, sweep
+from pendulum_fmu.cli.bench import accuracy, exact, fmi_versions, judge, masters, solvers, speed, sweep
 
 NAME = "bench"
 HELP = "benchmarks: exact evaluation, work-precision of the solvers, sweep throughput"
@@ -23,7 +23,7 @@ examples:
   pendulum-fmu bench sweep --runs 1000 --workers 1 2
 """
 
-PARSED: tuple[ModuleType, ...] = (solvers, accuracy, exact, fmi_versions, judge, speed, sweep)
+PARSED: tuple[ModuleType, ...] = (solvers, accuracy, exact, fmi_versions, judge, masters, speed, sweep)
 """Benchmarks with ``NAME``, ``HELP``, ``DESCRIPTION``, ``EPILOG``, ``configure`` and ``run``."""
 
 

@@ -1,0 +1,48 @@
+"""``pendulum-fmu bench masters``: the command line of :mod:`pendulum_fmu.bench.masters`."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+
+from pendulum_fmu.cli.arguments import output_file, plain_text, positive
+from pendulum_fmu.cli.extras import module_docstring
+
+NAME = "masters"
+HELP = "co-simulation masters on the split pendulum: error and wall time against H, orders, work-precision figure"
+DESCRIPTION = plain_text(module_docstring("pendulum_fmu.bench.masters") or HELP)
+EPILOG = """\
+examples:
+  pendulum-fmu bench masters --plot masters.png
+  pendulum-fmu bench masters --steps 0.01 0.005 --stop 2 --no-engines
+"""
+
+
+def configure(parser: argparse.ArgumentParser) -> None:
+    """Add the options of ``bench masters``."""
+    parser.add_argument("--steps", type=positive("s", 1.0), nargs="+", default=[1e-1, 1e-2, 1e-3, 1e-4],
+                        metavar="H", help="macro steps in s, each in (0, 1] (default: 0.1 0.01 0.001 0.0001)")
+    parser.add_argument("--stop", type=positive("s", 1000.0), default=10.0, metavar="T",
+                        help="end time in s (default 10)")
+    parser.add_argument("--no-engines", action="store_true", help="the reference masters only")
+    parser.add_argument("--plot", type=output_file(".png"), metavar="FILE.png",
+                        help="also draw the work-precision figure (error against wall time)")
+
+
+def run(args: argparse.Namespace) -> int:
+    """Measure, print the table and the engines' versions, draw the figure."""
+    from pendulum_fmu.bench import masters as bench
+
+    steps = tuple(sorted(set(args.steps), reverse=True))
+    if args.stop / steps[-1] > 2e6:
+        print(f"pendulum-fmu bench masters: --stop {args.stop:g} with H = {steps[-1]:g} is over 2e6 steps",
+              file=sys.stderr)
+        return 2
+    points = bench.measure(steps, args.stop, engines=not args.no_engines)
+    print(f"split pendulum from 75 deg, L = 1 m, g = 9.81 m/s2, 0..{args.stop:g} s; reference masters through "
+          f"fmpy (FMI 2.0); engines: {bench.versions()}")
+    print("\n".join(bench.table(points)))
+    if args.plot:
+        bench.figure(points, args.plot)
+        print(f"figure: {args.plot}")
+    return 0
