@@ -69,3 +69,43 @@ def test_engine_that_cannot_says_why(engine: str, version: int, tmp_path: Path) 
     _skip_unless_installed(engine)
     with pytest.raises((EngineError, Exception), match=CANNOT[(engine, version)]):
         run_engine(engine, 0.01, 0.1, tmp_path / "cannot.csv", version)
+
+
+LIBCOSIM_OBSERVER = """
+import sys
+from libcosimpy.CosimExecution import CosimExecution
+from libcosimpy.CosimLogging import CosimLogLevel, log_output_level
+from libcosimpy.CosimObserver import CosimObserver
+log_output_level(CosimLogLevel.ERROR)
+execution = CosimExecution.from_ssp_file(sys.argv[1], step_size=10_000_000)
+execution.add_observer(CosimObserver.create_to_dir(sys.argv[2]))
+sys.exit(0 if execution.simulate_until(2_000_000_000) else 3)
+"""
+ECOS_WRITER = """
+import sys
+from ecospy import EcosSimulation
+simulation = EcosSimulation(ssp_path=sys.argv[1], step_size=0.01)
+simulation.add_csv_writer(sys.argv[2] + "/ecos.csv")
+sys.exit(0 if simulation.init() and simulation.step(200) else 3)
+"""
+
+
+@pytest.mark.parametrize("engine", ["libcosim", "ecos"])
+def test_engines_own_csv_writers_are_judged(engine: str, tmp_path: Path) -> None:
+    """The recipe of docs/masters.md: the engine's own CSV (libcosim: one file per instance, 6
+    significant digits, bare names; Ecos: Body::theta ...) judged as it is."""
+    import subprocess
+    import sys
+
+    from pendulum_fmu import split_path
+    from pendulum_fmu.split.engines import ecos_environment
+
+    _skip_unless_installed(engine)
+    script, env = (LIBCOSIM_OBSERVER, None) if engine == "libcosim" else (ECOS_WRITER, ecos_environment())
+    done = subprocess.run([sys.executable, "-c", script, str(split_path()), str(tmp_path)], capture_output=True,
+                          text=True, timeout=300, env=env)
+    assert done.returncode == 0, done.stderr[-2000:]
+    written = sorted(tmp_path.glob("Body_*.csv")) if engine == "libcosim" else [tmp_path / "ecos.csv"]
+    verdict = judge_split(written[0])
+    assert verdict.master == "jacobi-zoh" and verdict.passed, verdict.lines
+    assert "theta0 = 1.308996939 rad (75 deg)" in verdict.lines[1]

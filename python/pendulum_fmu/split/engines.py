@@ -164,13 +164,19 @@ def run_libcosim(H: float, stop: float, out: Path, fmi_version: int = 2) -> Path
     return out
 
 
-def run_ecos(H: float, stop: float, out: Path, fmi_version: int = 2) -> Path:  # noqa: N803
-    """Ecos on ``PendulumSplit.ssp`` (``EcosSimulation(ssp_path=...)``), sampled after every step."""
+def ecos_environment() -> dict[str, str]:
+    """The environment of an ecospy process: tbb's library folder first on ``LD_LIBRARY_PATH``."""
     env = dict(os.environ)
     folder = _tbb_folder()
     if folder is not None:
         env["LD_LIBRARY_PATH"] = os.pathsep.join(p for p in (str(folder), env.get("LD_LIBRARY_PATH", "")) if p)
-    _child(_ECOS, [str(split_path(fmi_version)), str(out), repr(H), str(round(stop / H))], "ecos", env)
+    return env
+
+
+def run_ecos(H: float, stop: float, out: Path, fmi_version: int = 2) -> Path:  # noqa: N803
+    """Ecos on ``PendulumSplit.ssp`` (``EcosSimulation(ssp_path=...)``), sampled after every step."""
+    _child(_ECOS, [str(split_path(fmi_version)), str(out), repr(H), str(round(stop / H))], "ecos",
+           ecos_environment())
     return out
 
 

@@ -91,14 +91,16 @@ def _row(label: str, status: str, text: str) -> str:
     return f"{label:<16s}{status:<6s}{text}"
 
 
-def _problem(time: np.ndarray, values: dict[str, np.ndarray], given: dict[str, float]) -> Problem:
-    """Parameters from ``given`` or the SSP's; start values from ``given``, else the row at t = 0."""
+def _problem(time: np.ndarray, values: dict[str, np.ndarray], resolution: dict[str, np.ndarray],
+             given: dict[str, float]) -> Problem:
+    """Parameters from ``given`` or the SSP's; start values from ``given``, else the row at t = 0
+    (the SSP's own value when the row is that value rounded in print)."""
     base = Problem()
     start = dict(L=base.L, g=base.g, theta0=base.theta0, omega0=base.omega0)
     if abs(time[0]) < 1e-12:
-        start["theta0"] = float(values["theta"][0])
-        if "omega" in values:
-            start["omega0"] = float(values["omega"][0])
+        for name, key in (("theta", "theta0"), ("omega", "omega0")):
+            if name in values and abs(values[name][0] - start[key]) > resolution[name][0]:
+                start[key] = float(values[name][0])
     start.update(given)
     return Problem(**start)
 
@@ -153,12 +155,12 @@ def judge_split(data: Any, start: Sequence[str] = (), master: str | None = None,
     lines = [_row("file", "INFO", f"{time.size} points from t = {time[0]:.6g} to {time[-1]:.6g} s, "
                                   f"macro step H = {H:.6g} s, Body's columns {result.instance or '(bare)'}")]
     findings = grid_findings(time, H, float(np.max(result.resolution["time"])))
-    problem = _problem(time, result.values, parse_start(start))
+    problem = _problem(time, result.values, result.resolution, parse_start(start))
     labels = label_finding(time, result.values["theta_exact"], problem, H) if "theta_exact" in result.values else None
     if labels is not None:
         findings.append(labels)
         time = time + H
-        problem = _problem(time, result.values, parse_start(start))
+        problem = _problem(time, result.values, result.resolution, parse_start(start))
     lines.append(_row("problem", "INFO", f"L = {problem.L:g} m, g = {problem.g:g} m/s2, theta0 = "
                                          f"{problem.theta0:.10g} rad ({math.degrees(problem.theta0):.6g} deg), "
                                          f"omega0 = {problem.omega0:.6g} rad/s"))
