@@ -126,3 +126,18 @@ def test_another_model_is_refused_in_one_line_by_every_command(installed: Path, 
         assert done.returncode == 2 and len(lines) == 1, (argv, done.stderr)
         assert f"'{other}' is not the Pendulum FMU of pendulum-fmu: its model is 'Bouncer'" in lines[0], lines[0]
     assert list(work.iterdir()) == []
+
+
+def test_pip_show_describes_the_package(installed: Path, tmp_path: Path) -> None:
+    """The wheel's metadata: summary, licence, authors, its core requirements, the docs paths."""
+    done = _run([str(installed.parent / "python"), "-m", "pip", "show", "--verbose", "pendulum-fmu"], tmp_path)
+    assert done.returncode == 0, done.stderr
+    fields = dict(line.partition(": ")[::2] for line in done.stdout.splitlines() if ": " in line and line[0] != " ")
+    assert fields["Summary"].startswith("Build, simulate and check the Pendulum FMU")
+    # pip shows License-Expression from pip 25 on (the venv's pip may be older): read it directly
+    licence = _run([str(installed.parent / "python"), "-c", "import importlib.metadata as m; "
+                    "d = m.metadata('pendulum-fmu'); print(d['License-Expression'], d['License-File'])"], tmp_path)
+    assert licence.stdout.split() == ["MIT", "LICENSE"], licence.stdout + licence.stderr
+    assert fields["Author"] == "The Pendulum FMU contributors"
+    assert fields["Requires"].split(", ") == ["fmpy", "matplotlib", "numpy", "pyarrow", "scipy"]
+    assert "Documentation, docs/index.md" in done.stdout and "Typing :: Typed" in done.stdout
