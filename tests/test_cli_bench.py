@@ -2,12 +2,14 @@
 
 from __future__ import annotations
 
+import math
 import re
 from pathlib import Path
 
 import pytest
 
 from pendulum_fmu.cli import bench
+from pendulum_fmu.cli.bench.exact import GSL_ABSENT, both
 from pendulum_fmu.cli.main import main
 
 
@@ -42,11 +44,22 @@ def test_bench_exact_prints_batch_gsl_and_new_states_side_by_side(capsys: pytest
     line = re.search(r"^bench_exact_all amplitude_deg=90 n=20000 (.*)$", out, re.MULTILINE)
     assert line is not None
     values = dict(field.split("=") for field in line.group(1).split())
-    for kind in ("eval", "batch", "gsl", "init_eval", "python", "scipy", "python_states", "scipy_states"):
+    assert "a new state per point" in out and "> 1: the denominator is faster" in out
+    for kind in ("eval", "batch", "init_eval", "python", "scipy", "python_states", "scipy_states"):
         best, median = float(values[f"{kind}_best"]), float(values[f"{kind}_median"])
         assert 0 < best <= median < 1e5, kind
     # the lock-step batch is the faster path, and a new state costs more than an evaluation
     assert float(values["batch_best"]) < float(values["eval_best"]) < float(values["init_eval_best"])
+    if math.isnan(float(values["gsl_best"])):  # bench_exact configured without GSL: the command says so
+        assert GSL_ABSENT in out and "nan" not in out.split("bench_exact ")[0]
+        pytest.skip("GSL column not timed: apt-get install libgsl-dev, then cmake -S . -B build and rebuild")
+    assert 0 < float(values["gsl_best"]) <= float(values["gsl_median"]) < 1e5
+    assert GSL_ABSENT not in out
+
+
+def test_an_untimed_column_is_a_dash_not_nan() -> None:
+    assert both(float("nan"), float("nan"), 1.0, 1.0) == "-"
+    assert both(3.0, 4.0, 1.5, 2.0) == "  2.00 | 2.00  "
 
 
 def test_bench_lists_the_benchmarks_available(capsys: pytest.CaptureFixture[str]) -> None:

@@ -61,8 +61,15 @@ def configure(parser: argparse.ArgumentParser) -> None:
                         help="interleaved rounds of the Python-side timings, 1-100 (default 5)")
 
 
+GSL_ABSENT = ("GSL: not timed, tests/c/bench_exact was built without GSL "
+              "(apt-get install libgsl-dev, then cmake -S . -B build and rebuild)")
+
+
 def both(x_best: float, x_median: float, y_best: float, y_median: float) -> str:
-    """The ratios x/y of the best and of the median figures, as ``best | median``."""
+    """The ratios x/y of the best and of the median figures, as ``best | median``
+    (``-`` where a figure is NaN: a column that was not timed)."""
+    if any(math.isnan(v) for v in (x_best, x_median, y_best, y_median)):
+        return "-"
     return f"{x_best / y_best:6.2f} | {x_median / y_median:<6.2f}"
 
 
@@ -86,7 +93,10 @@ def run(args: argparse.Namespace) -> int:
         ratios = (f" {r.python_ns / r.c_ns:>9.2f} {r.ratio:>8.3f}" if with_c
                   else f" {r.python_ns / r.scipy_ns:>13.3f}")
         print(f"{r.amplitude_deg:>10.10g} deg{c_value} {r.python_ns:>13.1f} {r.scipy_ns:>12.1f}{ratios}")
-    print("ratios side by side (best | median over the rounds; > 1: the project is faster):")
+    print("time ratios side by side (best | median over the rounds; > 1: the denominator is faster):")
+    groups = (f" {'one state, many times':-^47} {'a new state per point':-^35}" if with_c
+              else f" {'new state/point':-^15}")
+    print(f"{'':>14}{groups}")
     c_heads = f" {'GSL/eval':>15} {'GSL/batch':>15} {'eval/batch':>15} {'scipy/(init+eval)':>19}" if with_c else ""
     print(f"{'amplitude':>14}{c_heads} {'scipy/exact()':>15}")
     for r in results:
@@ -98,6 +108,8 @@ def run(args: argparse.Namespace) -> int:
                     if with_c else "")
         print(f"{r.amplitude_deg:>10.10g} deg{c_ratios} "
               f"{both(r.scipy_states.best, r.scipy_states.median, r.python_states.best, r.python_states.median):>15}")
+    if with_c and any(math.isnan(r.c.gsl.best) for r in results):
+        print(GSL_ABSENT)
     for r in results:
         c_field = f" c_ns_per_point={r.c_ns:.3f}" if with_c else ""
         print(f"bench_exact amplitude_deg={r.amplitude_deg:.10g} n={r.n}{c_field} "
