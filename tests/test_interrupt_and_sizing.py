@@ -98,7 +98,8 @@ def test_a_run_is_refused_past_half_the_memory() -> None:
     fits = int(memory * 0.5 / BYTES_PER_POINT)
     assert check_run(fits, memory=memory) == pytest.approx(fits * 3e-6)
     with pytest.raises(UsageError, match=r"this run would record 15\.6 million output points, about 4 GB of "
-                                         r"memory, and 8 GB is available"):
+                                         r"memory, over the limit of half the 8 GB available: lower -T/--stop-time or "
+                                         r"-n/--points-per-period \(at most about 15\.6 million points fit\)$"):
         check_run(fits + 1, memory=memory)
 
 

@@ -107,15 +107,25 @@ def check_run(points: int, argument: str = "-T/--stop-time", memory: int | None 
     fits = int(memory * MEMORY_SHARE / BYTES_PER_POINT)
     if need > memory * MEMORY_SHARE:
         raise UsageError(argument, f"this run would record {quantity(points)} output points, about "
-                                   f"{size_text(need)} of memory, and {size_text(memory)} is available: "
-                                   f"shorten the run or lower -n/--points-per-period (at most about "
+                                   f"{size_text(need)} of memory, over the limit of half the "
+                                   f"{size_text(memory)} available: {_advice(argument)} (at most about "
                                    f"{quantity(fits)} points fit)")
     seconds = points * SECONDS_PER_POINT
     if seconds > MAX_SECONDS:
         raise UsageError(argument, f"this run would record {quantity(points)} output points, about "
-                                   f"{duration_text(seconds)} of computing: shorten the run or lower "
-                                   "-n/--points-per-period")
+                                   f"{duration_text(seconds)} of computing: {_advice(argument)}")
     return seconds
+
+
+def _advice(argument: str) -> str:
+    """What to lower when a run is too big: the option named, and the output density if not that one."""
+    density = "-n/--points-per-period"
+    return f"lower {argument}" if argument == density else f"lower {argument} or {density}"
+
+
+def length_option(grid: TimeGrid) -> str:
+    """The option that set the run's length: ``-T/--stop-time`` for seconds, ``-p/--periods`` for periods."""
+    return "-T/--stop-time" if grid.unit == "s" else "-p/--periods"
 
 
 def check_sweep(runs: int, points_per_run: int, workers: int, memory: int | None = None,
@@ -162,7 +172,7 @@ def check_sweep(runs: int, points_per_run: int, workers: int, memory: int | None
 
 
 def planned_run(runner: FmuRunner, pendulum: Pendulum, method: Method, grid: TimeGrid,
-                argument: str = "-T/--stop-time", what: str = "simulating") -> Trajectory:
+                argument: str | None = None, what: str = "simulating") -> Trajectory:
     """Run one problem, its size checked before the first output point, saying so when it will take a while.
 
     The check comes between the FMU's initialization (which gives the period the grid counts
@@ -174,8 +184,9 @@ def planned_run(runner: FmuRunner, pendulum: Pendulum, method: Method, grid: Tim
         The loaded FMU.
     pendulum, method, grid
         What to run.
-    argument : str
-        The option to name in a refusal.
+    argument : str, optional
+        The option to name in a refusal (default: the one that set the run's length,
+        :func:`length_option`).
     what : str
         The verb of the progress line (``simulating``, ``drawing``).
 
@@ -191,7 +202,7 @@ def planned_run(runner: FmuRunner, pendulum: Pendulum, method: Method, grid: Tim
     """
     def plan(period: float) -> None:
         points = grid.point_count(period)
-        seconds = check_run(points, argument)
+        seconds = check_run(points, length_option(grid) if argument is None else argument)
         if seconds > SLOW_SECONDS:
             print(f"{what} {quantity(points)} output points: about {duration_text(seconds)} ...", file=sys.stderr,
                   flush=True)

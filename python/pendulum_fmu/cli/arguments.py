@@ -297,6 +297,16 @@ def grid_from(args: argparse.Namespace) -> TimeGrid:
     return TimeGrid(periods, "periods", args.points_per_period)
 
 
+def size_option(args: argparse.Namespace) -> str:
+    """The time option the user gave, for a refusal of a run too big: ``-T/--stop-time``, else
+    ``-p/--periods``, else ``-n/--points-per-period`` (the default length alone always fits)."""
+    if args.stop_time is not None:
+        return "-T/--stop-time"
+    if args.periods is not None:
+        return "-p/--periods"
+    return "-n/--points-per-period"
+
+
 _ROLE = re.compile(r":[a-z]+:`(~?)([^`<]*?)(?:\s*<([^>]*)>)?`")
 """A Sphinx cross-reference: ``:class:`~pkg.mod.Name```, ``:func:`text <target>```."""
 

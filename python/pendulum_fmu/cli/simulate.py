@@ -8,7 +8,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from pendulum_fmu.cli.arguments import (add_fmu_argument, add_method_arguments, add_pendulum_arguments, add_time_arguments,
-                        grid_from, method_from, output_file, pendulum_from)
+                        grid_from, method_from, output_file, pendulum_from, size_option)
 
 if TYPE_CHECKING:
     from pendulum_fmu.fmu.runner import Trajectory
@@ -76,7 +76,10 @@ def run(args: argparse.Namespace) -> int:
     from pendulum_fmu.sizing import planned_run
 
     with FmuRunner(args.fmu) as runner:
-        trajectory = planned_run(runner, pendulum, method, grid)  # refused at once when it cannot fit
+        # refused at once when it cannot fit, naming the time option given
+        trajectory = planned_run(runner, pendulum, method, grid, size_option(args))
+        version = runner.fmi_version
+    print(f"fmu       FMI {version}.0, {args.fmu}")
     print("\n".join(summary_lines(trajectory)))
     if args.out is not None:
         write_table(trajectory_columns(trajectory), args.out, trajectory_metadata(trajectory))

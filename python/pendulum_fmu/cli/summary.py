@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+import re
 
 from pendulum_fmu.fmu.runner import Trajectory, reference_period
 
@@ -49,6 +50,25 @@ def summary_lines(trajectory: Trajectory) -> list[str]:
     ] + warning_lines(t.warnings)
 
 
+CERTIFICATE = re.compile(r"^certificate: at t = (\S+) the step is (\S+) times beyond its bound \(.*?\)\. (.*)$")
+"""A certificate message of the FMU: the time, the ratio to the bound, the detail and the remedy."""
+
+
+def certificate_line(messages: list[re.Match[str]]) -> str:
+    """The FMU's certificate messages of one run (logged at the first miss and at each tenfold
+    growth) said once: where it began, how far it grew, the remedy without its numbers."""
+    first, last = messages[0], messages[-1]
+    remedy = re.sub(r" \([^()]*\)", "", last[3]).rstrip(".")
+    growth = f", growing to {last[2]} times" if len(messages) > 1 else ""
+    return (f"warning   the step certificate failed from t = {float(first[1]):.6g} s on ({first[2]} times "
+            f"its bound{growth}): {remedy[:1].lower()}{remedy[1:]}")
+
+
 def warning_lines(warnings: tuple[str, ...]) -> list[str]:
-    """One line for what the FMU warned about during a run (nothing when it did not)."""
-    return [f"warning   the FMU: {'; '.join(warnings)}"] if warnings else []
+    """What the FMU warned about during a run: the certificate's messages in one short line,
+    any other warning in one line as the FMU logged it (nothing when it warned of nothing)."""
+    matches = [CERTIFICATE.match(w) for w in warnings]
+    certificates = [m for m in matches if m is not None]
+    others = [w for w, m in zip(warnings, matches) if m is None]
+    lines = [f"warning   the FMU: {'; '.join(others)}"] if others else []
+    return lines + ([certificate_line(certificates)] if certificates else [])
