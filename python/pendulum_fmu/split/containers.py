@@ -3,7 +3,7 @@ Toolbox's ``fmucontainer``; each container is then run by fmpy's ``simulate_fmu`
 
 A container is a master compiled into an FMU: it steps the inner FMUs at its own fixed step
 and moves the connected values between them. The container exposes Body's outputs and
-Gravity's alpha, named as :data:`pendulum_fmu.split.engines.COLUMNS` say.
+Gravity's alpha, named as :data:`pendulum_fmu.split.columns.COLUMNS` say.
 """
 
 from __future__ import annotations
@@ -16,7 +16,7 @@ import uuid
 from pathlib import Path
 from typing import Callable
 
-from pendulum_fmu.split.engines import COLUMNS, EngineError, _write
+from pendulum_fmu.split.columns import COLUMNS, EngineError, write_columns
 from pendulum_fmu.split.locate import split_fmus
 
 
@@ -36,7 +36,7 @@ def _simulate(container: Path, H: float, stop: float, out: Path, names: dict[str
     except Exception as error:  # noqa: BLE001 (the engine's own words: its last logged message)
         told = f" ({messages[-1].strip()})" if messages else ""
         raise EngineError(f"{container.name} in fmpy: {error}{told}") from error
-    _write(out, list(rows["time"]), {ours: list(rows[theirs]) for ours, theirs in names.items()})
+    write_columns(out, list(rows["time"]), {ours: list(rows[theirs]) for ours, theirs in names.items()})
     return out
 
 

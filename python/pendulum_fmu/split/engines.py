@@ -14,10 +14,8 @@ Engines: ``fmpy-ssp`` (``fmpy.ssp.simulation.simulate_ssp``), ``libcosim``
 
 from __future__ import annotations
 
-import csv
 import importlib.metadata
 import importlib.util
-import json
 import os
 import subprocess
 import sys
@@ -27,20 +25,16 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Callable
 
+from pendulum_fmu.split.columns import COLUMNS, EngineError, write_columns
+from pendulum_fmu.split.containers import CONTAINERS
 from pendulum_fmu.split.locate import split_path
 
 INSTALL = "pip install -r python/requirements.lock (fmpy, libcosimpy==0.0.6, ecospy==0.7.2, tbb==2023.2.0, " \
           "fmu-manipulation-toolbox)"
-COLUMNS: tuple[str, ...] = ("Body.theta", "Body.omega", "Body.theta_exact", "Body.omega_exact", "Gravity.alpha")
-"""The outputs every engine run records, named instance.variable."""
 PACKAGES = {"fmpy-ssp": "fmpy", "libcosim": "libcosimpy", "ecos": "ecospy", "fmpy-container": "fmpy",
             "fmucontainer": "fmu_manipulation_toolbox"}
 DISTRIBUTIONS = {"fmpy": "fmpy", "libcosimpy": "libcosimpy", "ecospy": "ecospy",
                  "fmu_manipulation_toolbox": "fmu-manipulation-toolbox"}
-
-
-class EngineError(RuntimeError):
-    """An engine could not run the system: the engine's own message."""
 
 
 @dataclass(frozen=True)
@@ -70,20 +64,12 @@ def missing(engine: str) -> str | None:
     return None
 
 
-def _write(path: Path, times: list[float], columns: dict[str, list[float]]) -> None:
-    with open(path, "w", newline="") as stream:
-        writer = csv.writer(stream)
-        writer.writerow(["time", *COLUMNS])
-        for k, t in enumerate(times):
-            writer.writerow([repr(float(t)), *(repr(float(columns[name][k])) for name in COLUMNS)])
-
-
 def run_fmpy_ssp(H: float, stop: float, out: Path, fmi_version: int = 2) -> Path:  # noqa: N803
     """fmpy's own SSP master (``simulate_ssp``) on ``PendulumSplit.ssp``; its rows as it returns them."""
     from fmpy.ssp.simulation import simulate_ssp
 
     rows = simulate_ssp(str(split_path(fmi_version)), start_time=0.0, stop_time=stop, step_size=H)
-    _write(out, list(rows["time"]), {name: list(rows[name]) for name in COLUMNS})
+    write_columns(out, list(rows["time"]), {name: list(rows[name]) for name in COLUMNS})
     return out
 
 
@@ -182,13 +168,11 @@ def run_ecos(H: float, stop: float, out: Path, fmi_version: int = 2) -> Path:  #
 
 ENGINES: dict[str, Callable[[float, float, Path, int], Path]] = {
     "fmpy-ssp": run_fmpy_ssp, "libcosim": run_libcosim, "ecos": run_ecos}
-"""The engines by name; the containers join them from :mod:`pendulum_fmu.split.containers`."""
+"""The engines that run the SSP by name; the containers are in :mod:`pendulum_fmu.split.containers`."""
 
 
 def run_engine(engine: str, H: float, stop: float, out: Path, fmi_version: int = 2) -> EngineRun:  # noqa: N803
     """Run ``engine`` at macro step ``H`` to ``stop``, writing ``out`` (CSV); EngineError if it cannot."""
-    from pendulum_fmu.split.containers import CONTAINERS
-
     runner = {**ENGINES, **CONTAINERS}[engine]
     began = time.perf_counter()
     runner(H, stop, out, fmi_version)
@@ -198,10 +182,3 @@ def run_engine(engine: str, H: float, stop: float, out: Path, fmi_version: int =
 def engine_names() -> tuple[str, ...]:
     """Every engine this module knows, installed or not."""
     return tuple(PACKAGES)
-
-
-def describe_engines() -> str:
-    """The engines and their versions as one JSON line (for the docs' table)."""
-    return json.dumps({e: engine_version(e) for e in PACKAGES})
-
-
