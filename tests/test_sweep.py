@@ -110,7 +110,7 @@ def test_a_journal_of_another_fmu_is_not_reused(local_sweep: Path, fmu_path: Pat
                  "--fmu", str(fmu_path)]) == 0
     captured = capsys.readouterr()
     assert "was written by another FMU: starting afresh" in captured.err
-    assert "computed 4 runs" in captured.out
+    assert "computed 4 runs" in captured.out and "on 1 worker process (" in captured.out  # as -j's help says
     assert len(read_sweep_table(tmp_path / JOURNAL)) == 4
 
 

@@ -117,7 +117,7 @@ def run(args: argparse.Namespace) -> int:
           f"omega0 {describe(sweep.omega0s, ' rad/s')}, L {describe(sweep.lengths, ' m')}, "
           f"g {describe(sweep.gravities, ' m/s^2')}, solvers {', '.join(sweep.solvers)}, "
           f"tolerance {describe(sweep.tolerances)}; {sweep.periods:g} {periods_text(sweep.periods)} each"
-          + (f"; about {duration_text(seconds)} on {workers} workers" if seconds > SLOW_SECONDS
+          + (f"; about {duration_text(seconds)} on {workers} worker processes" if seconds > SLOW_SECONDS
              and args.scheduler is None else ""), flush=True)
     from pendulum_fmu.output.paths import make_output_folder
     from pendulum_fmu.sweep.run import run_sweep
@@ -127,7 +127,10 @@ def run(args: argparse.Namespace) -> int:
                         progress=not args.quiet, plots=not args.no_plots)
     failed = sum(1 for row in outcome.rows if row["status"] != "ok")
     if outcome.computed:
-        print(f"computed {runs_text(outcome.computed)} in {outcome.seconds:.2f} s on {outcome.workers} worker threads "
+        n = outcome.workers
+        where = (f"{n} worker thread{'s' * (n != 1)} of the scheduler" if args.scheduler is not None
+                 else f"{n} worker process{'es' * (n != 1)}")  # the local cluster: one thread a process
+        print(f"computed {runs_text(outcome.computed)} in {outcome.seconds:.2f} s on {where} "
               f"({outcome.computed / outcome.seconds:.1f} runs/s); {outcome.skipped} already done")
     else:
         print(f"all {runs_text(outcome.skipped)} already done")
