@@ -28,7 +28,7 @@ TOL = 5e-14
 
 
 def half_angle_switch_overs() -> list[float]:
-    """|th/2| where the number of double-double terms J of elliptic_dd_sincos changes.
+    """|th/2| where the number of double-double terms J of dd_sincos changes (dd.c, sincos_reduced).
 
     J is the least j with y^(2j) / (2j + 1)! <= 1e-16 and y^(2j) / (2j)! <= 1e-16; it steps
     where y^(2j) = 1e-16 (2j)!, for the j it takes within |y| <= pi/4.

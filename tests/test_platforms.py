@@ -172,7 +172,7 @@ def test_win64_results_agree_with_linux64(unpacked: Path, tmp_path: Path, linux6
 
 def test_win64_fma_is_correctly_rounded(fmu_path: Path, tmp_path: Path) -> None:
     """fma() as the win64 binary gets it (zig's toolchain) against the exactly rounded a*b + c.
-    elliptic.c and exact.c need it; mingw-w64's is not (README, "Platforms")."""
+    integrator.c needs it for the low part of g/L; mingw-w64's is not (docs/platforms.md)."""
     target = zig_win64(fmu_path.parent / "zig-cache")
     require(target)
     assert fma_errors(target, tmp_path) == 0

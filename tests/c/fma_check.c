@@ -1,9 +1,10 @@
 /* fma_check.c: prints a, b, c and the C library's fma(a, b, c) for pseudo-random cases, as
  * IEEE 754 bit patterns, so tests/platform_runs.py can check each result against the exactly
  * rounded a*b + c (Python fractions). The FMU relies on a correctly rounded fma (C11 7.12.13.1:
- * "computes (x*y)+z, rounded as one ternary operation"): elliptic.c reduces arguments by pi
- * with it, exact.c forms exact products with it. Half the cases nearly cancel (c close to
- * -a*b), where a wrong fma shows most. Usage: fma_check [cases] (default 20000). */
+ * "computes (x*y)+z, rounded as one ternary operation"): integrator.c forms the exact residual
+ * g - (g/L) L with it, and dd.h and exact.c form exact products with it where the platform has
+ * a fast fma (FP_FAST_FMA). Half the cases nearly cancel (c close to -a*b), where a wrong fma
+ * shows most. Usage: fma_check [cases] (default 20000). */
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
