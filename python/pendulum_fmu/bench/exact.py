@@ -7,8 +7,9 @@ shared machine does not count:
 
 - one state, many times: an evaluation per point (C scalar loop, C batch, GSL, Python,
   scipy);
-- a new state per point (a phase portrait, an ensemble): ``pendulum_exact_init`` and one
-  evaluation in C, :func:`pendulum_fmu.exact` over arrays of release angles, and scipy's
+- a new state per point (a phase portrait, an ensemble): ``pendulum_exact_init`` (from w0)
+  and one evaluation in C, :func:`pendulum_fmu.exact` over arrays of release angles (a
+  ``pendulum_exact_init_gl`` set-up from g and L per angle, as the FMU's), and scipy's
   ``ellipkm1`` + ``ellipj`` over the same arrays.
 
 - C: the executable ``tests/c/bench_exact`` of a CMake build (``pendulum_exact_eval`` in a
@@ -68,7 +69,7 @@ class CTimings:
     gsl : BestMedian
         GSL's ``gsl_sf_elljac_e`` plus atan2 (NaN when the benchmark was built without GSL).
     init : BestMedian
-        ``pendulum_exact_init`` for a new release angle and one evaluation.
+        ``pendulum_exact_init`` (from w0 = 1) for a new release angle and one evaluation.
     """
 
     eval: BestMedian
