@@ -38,11 +38,13 @@ if TYPE_CHECKING:
     from pendulum_fmu.sweep.grid import SweepGrid, SweepPoint
 
 
-def fmu_path() -> Path:
-    """The ``Pendulum.fmu`` matching this package (see :func:`pendulum_fmu.fmu.locate.locate_fmu`)."""
+def fmu_path(fmi_version: int | None = None) -> Path:
+    """The ``Pendulum.fmu`` matching this package: FMI 2.0, or 3.0 with ``fmi_version=3``
+    (None: ``$PENDULUM_FMU``'s version if set, else 2.0; see
+    :func:`pendulum_fmu.fmu.locate.locate_fmu`)."""
     from pendulum_fmu.fmu.locate import locate_fmu
 
-    return locate_fmu()
+    return locate_fmu(fmi_version=fmi_version)
 
 
 def split_path(fmi_version: int = 2) -> Path:

@@ -16,14 +16,14 @@ from types import ModuleType
 from typing import Any, NoReturn
 
 from pendulum_fmu import __version__
-from pendulum_fmu.cli import animate, bench, compare, cross_check, judge, simulate, study, sweep
+from pendulum_fmu.cli import animate, bench, compare, completion, cross_check, judge, simulate, study, sweep
 from pendulum_fmu.cli.arguments import resolve_fmu
 from pendulum_fmu.errors import BuildError, SimulationError, UsageError
 from pendulum_fmu.interrupt import check as check_interrupt
 from pendulum_fmu.interrupt import default_dispositions
 from pendulum_fmu.interrupt import forget as forget_interrupt
 
-COMMANDS: tuple[ModuleType, ...] = (simulate, compare, study, animate, sweep, bench, judge, cross_check)
+COMMANDS: tuple[ModuleType, ...] = (simulate, compare, study, animate, sweep, bench, judge, cross_check, completion)
 
 DESCRIPTION = """\
 Build, run and check Pendulum.fmu: the nonlinear pendulum theta'' + (g/L) sin(theta) = 0,
@@ -43,6 +43,7 @@ examples:
   pendulum-fmu bench sweep
   pendulum-fmu judge result.csv --interface ME --start tolerance=1e-6
   pendulum-fmu cross-check out/cross-check
+  eval "$(pendulum-fmu completion bash)"          # complete commands and options in bash
 """
 
 
@@ -84,6 +85,7 @@ def build_parser() -> argparse.ArgumentParser:
     """The full parser, every subcommand configured."""
     parser = OneLineParser(prog="pendulum-fmu", description=DESCRIPTION, epilog=EPILOG, formatter_class=_Formatter)
     parser.add_argument("--version", action="version", version=f"%(prog)s {__version__}")
+    parser.set_defaults(root_parser=parser)  # for 'completion', which walks the whole tree
     commands = parser.add_subparsers(dest="command", metavar="COMMAND", title="commands", required=True)
     for module in COMMANDS:
         sub = commands.add_parser(module.NAME, help=module.HELP, description=module.DESCRIPTION,
