@@ -147,11 +147,11 @@ def judge_split(data: Any, start: Sequence[str] = (), master: str | None = None,
     named = master_named(master) if master else None
     result = read_coupled(data, instance)
     time, theta = result.time, result.values["theta"]
-    if time.size < 3:
+    H = float(np.median(np.diff(time))) if time.size >= 3 else math.nan  # noqa: N806
+    if not (H > 0 and np.all(np.isfinite(time)) and np.all(np.diff(time) > 0)):
         from pendulum_fmu.judge.reading import ReadError
 
-        raise ReadError(f"{result.source}: {time.size} rows: a coupled run needs at least 3")
-    H = float(np.median(np.diff(time)))  # noqa: N806
+        raise ReadError(f"{result.source}: {time.size} rows: a coupled run needs at least 3 at increasing times")
     lines = [_row("file", "INFO", f"{time.size} points from t = {time[0]:.6g} to {time[-1]:.6g} s, "
                                   f"macro step H = {H:.6g} s, Body's columns {result.instance or '(bare)'}")]
     findings = grid_findings(time, H, float(np.max(result.resolution["time"])))
