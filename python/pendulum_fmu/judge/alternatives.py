@@ -95,7 +95,7 @@ def _newton(columns: Columns, experiment: Experiment, times: Callable[[float], n
 
 def degrees(columns: Columns, experiment: Experiment, tau: np.ndarray, fits: Fits) -> Explanation | None:
     """theta (and perhaps omega) written in degrees (deg/s) where the FMU gives radians."""
-    if "theta" not in columns:
+    if not any(name.startswith("theta") for name in columns):
         return None
     exact_values = solution(experiment, tau, list(columns))
     for omega_too in (True, False):
@@ -210,11 +210,9 @@ def explain(columns: Columns, experiment: Experiment, time: np.ndarray, step: fl
         lambda: degrees(columns, experiment, tau, fits),
         lambda: shift(columns, experiment, tau, step, fits),
         lambda: clock(columns, experiment, tau, fits)]
-    # a first time some steps after the start time is a start time not given; a fraction of a
-    # step, a lag
+    # a first time two steps or more after the start time is a start time not given; less, a lag
     offset = float(time[0]) - experiment.start_time
-    on_grid = step is None or (abs(offset) >= 2 * step and abs(offset / step - round(offset / step)) <= 1e-6)
-    trials.insert(1 if on_grid else 3, lambda: start_time(columns, experiment, time, fits))
+    trials.insert(1 if step is None or abs(offset) >= 2 * step else 3, lambda: start_time(columns, experiment, time, fits))
     for trial in trials:
         found = trial()
         if found is not None:

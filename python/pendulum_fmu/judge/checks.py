@@ -273,9 +273,9 @@ def _neighbourhood(e: np.ndarray, width: int) -> np.ndarray:
 
 
 def isolated_values(result: Result, ref: Reference, errors: dict[str, np.ndarray]) -> Check:
-    """Values whose error stands alone: off the mean of their two neighbours (the one
-    neighbour at either end) by SPIKE_RATIO times the largest error of the NEIGHBOURS rows
-    either side, which no integrator makes and a mangled file does.
+    """Values whose error stands alone: off the mean of their two neighbours by SPIKE_RATIO
+    times the largest error of the NEIGHBOURS rows either side, which no integrator makes and a
+    mangled file does; rows with fewer than NEIGHBOURS rows on a side are not judged.
 
     The scale is never below rounding (1e-14 max(1, |value|) and the print's resolution) nor
     below LEVEL times the file's largest error, so that an error crossing zero next to a value
@@ -289,11 +289,12 @@ def isolated_values(result: Result, ref: Reference, errors: dict[str, np.ndarray
         e = np.abs(error)
         floor = np.maximum(1e-14 * scale + result.resolution[name], LEVEL * float(e.max()))
         around = np.maximum(_neighbourhood(e, NEIGHBOURS), floor)
-        off = error.copy()
+        off = np.zeros_like(error)
         off[1:-1] = error[1:-1] - 0.5 * (error[:-2] + error[2:])
-        off[0] = error[0] - error[1]
-        off[-1] = error[-1] - error[-2]
         spikes = np.flatnonzero(np.abs(off) > SPIKE_RATIO * around)
+        # a full neighbourhood either side: the first rows, where the error is born from the exact
+        # start value, and the last ones have too few neighbours to stand out from
+        spikes = spikes[(spikes >= NEIGHBOURS) & (spikes < error.size - NEIGHBOURS)]
         found += [(name, int(k), float(off[k]), float(around[k])) for k in spikes]
     if not errors:
         return Check("isolated values", "info", "no theta or omega column to look at")

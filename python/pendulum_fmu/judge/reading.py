@@ -128,7 +128,8 @@ def _pick(names: list[str], instance: str | None, source: str) -> tuple[int, dic
         raise ReadError(f"{source}: no time column (looked for time, Time, t among {', '.join(names[:8])})")
     instances = sorted({inst for inst, v in split if v in VARIABLES})
     if not instances:
-        raise ReadError(f"{source}: none of {', '.join(VARIABLES)} among the columns ({', '.join(names[:8])})")
+        raise ReadError(f"{source}: no theta or omega column: none of {', '.join(VARIABLES)} among the columns "
+                        f"({', '.join(names[:8])})")
     if instance is None:
         if len(instances) > 1:
             raise ReadError(f"{source}: several instances ({', '.join(repr(i) for i in instances)}): "
