@@ -82,3 +82,28 @@ def test_html_table_matches_the_fmu_outputs(study_dir: Path, fmu_path: Path) -> 
         run = simulate(fmu_path, Scenario(amplitude_deg=float(amplitude), periods=PERIODS), kind, tolerance)
         assert float(max_error) == pytest.approx(run.max_error, rel=6e-3)
         assert run.max_error < 1e-6
+
+
+def test_an_interrupted_study_leaves_the_folder_as_it_was(fmu_path: Path, tmp_path: Path,
+                                                          monkeypatch: pytest.MonkeyPatch,
+                                                          capsys: pytest.CaptureFixture[str]) -> None:
+    """Ctrl-C after Figures 3-5 are drawn: no new file in a folder that had a study, no folder where
+    there was none; the stages were said on the way."""
+    import pendulum_fmu.study.job as job
+
+    def interrupted(*args: object) -> None:
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(job, "plot_period_ratio", interrupted)
+    fresh = tmp_path / "fresh" / "study"
+    assert main(["study", "--out", str(fresh), "--fmu", str(fmu_path), "--periods", "1"]) == 130
+    err = capsys.readouterr().err
+    assert "study: run 8 of 8" in err and "study: Figure 5 (fig5_overlay.png) ..." in err
+    assert "study: the period ratio" in err and err.rstrip().endswith("interrupted")
+    assert not fresh.exists() and (tmp_path / "fresh").exists()
+    kept = tmp_path / "kept"
+    kept.mkdir()
+    (kept / "fig3_numeric.png").write_bytes(b"the previous study's")
+    assert main(["study", "--out", str(kept), "--fmu", str(fmu_path), "--periods", "1"]) == 130
+    assert [p.name for p in kept.iterdir()] == ["fig3_numeric.png"]
+    assert (kept / "fig3_numeric.png").read_bytes() == b"the previous study's"

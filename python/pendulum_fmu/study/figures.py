@@ -18,6 +18,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+from matplotlib.ticker import MaxNLocator  # noqa: E402
 
 from pendulum_fmu.fmu.period import exact_period_ratio  # noqa: E402
 from pendulum_fmu.fmu.runner import Trajectory  # noqa: E402
@@ -30,11 +31,22 @@ EXACT_COLOR = "black"
 ME_COLOR = "tab:orange"
 CS_ERROR_COLOR = "tab:purple"
 EXACT_BAND = "0.72"
-W0T_LABEL = r"$\omega_0 t$ (rad)"
+ZERO_ROW = 6.0
+"""Figure 5: ME's exact-zero ticks sit this factor above CS's on the log axis, so neither hides the other."""
+T_LABEL = r"$t / T_0$"
 
 
-def _w0t(run: Trajectory) -> np.ndarray:
-    return run.pendulum.w0 * run.result["time"]
+def _cycles(run: Trajectory) -> np.ndarray:
+    """The run's output times in small-angle periods T0 = 2 pi sqrt(L/g), as in Figures 3 and 4."""
+    return run.result["time"] / run.pendulum.small_angle_period
+
+
+def constants_text(runs: list[Trajectory]) -> str:
+    """``L = 1 m, g = 9.81 m/s^2, T0 = 2 pi sqrt(L/g) = 2.006 s`` for the runs' pendulum (mathtext);
+    each distinct pendulum once, should the runs differ."""
+    seen = dict.fromkeys((r.pendulum.length, r.pendulum.gravity, r.pendulum.small_angle_period) for r in runs)
+    return "; ".join(rf"L = {length:g} m, g = {gravity:g} m/s$^2$, $T_0 = 2\pi\sqrt{{L/g}}$ = {t0:.4g} s"
+                     for length, gravity, t0 in seen)
 
 
 def _positive(values: np.ndarray) -> np.ndarray:
@@ -89,7 +101,7 @@ def plot_solutions(runs: list[Trajectory], field: str, title: str, path: Path) -
             ax.text(1.008, 0.5, f"T =\n{ratio:.4f} $T_0$", transform=ax.transAxes, va="center", fontsize=10.5)
         last = axes[-1, 0]
         last.set_xlim(0, max(run.result["time"][-1] / run.pendulum.small_angle_period for run in runs))
-        last.set_xlabel(r"$t / T_0$,  $T_0 = 2\pi\sqrt{L/g}$ (grid lines every $T_0$)")
+        last.set_xlabel(rf"$t / T_0$ (grid lines every $T_0$);  {constants_text(runs)}")
         fig.suptitle(title + "\n" + r"$\blacktriangledown$ end of each period T: the larger $\theta_0$, the further "
                      r"behind the $T_0$ grid lines", fontsize=13)
         fig.tight_layout(rect=(0, 0, 0.965, 1))
@@ -116,43 +128,48 @@ def plot_comparison_grid(cs_runs: list[Trajectory], me_runs: list[Trajectory], p
     count = len(cs_runs)
     floor = 1e-17
     with plt.rc_context(STYLE):
-        fig, axes = plt.subplots(2, count, figsize=(2.9 * count + 0.8, 7.4), sharey="row", squeeze=False)
+        fig, axes = plt.subplots(2, count, figsize=(2.9 * count + 0.8, 8.0), sharey="row", squeeze=False)
         zeros_seen = False
         for column, (cs, me) in enumerate(zip(cs_runs, me_runs)):
             top, bottom = axes[0, column], axes[1, column]
-            w0t = _w0t(cs)
-            last = w0t >= w0t[-1] - 2.0 * cs.period * cs.pendulum.w0 - 1e-9
-            top.plot(w0t[last], np.degrees(cs.result["theta_exact"][last]), color=EXACT_BAND, lw=7,
+            cycles = _cycles(cs)
+            last = cycles >= cycles[-1] - 2.0 * cs.period / cs.pendulum.small_angle_period - 1e-9
+            top.plot(cycles[last], np.degrees(cs.result["theta_exact"][last]), color=EXACT_BAND, lw=7,
                      solid_capstyle="butt", label="exact (wide band)")
-            top.plot(w0t[last], np.degrees(cs.result["theta"][last]), color=NUMERIC_COLOR, lw=1.3,
+            top.plot(cycles[last], np.degrees(cs.result["theta"][last]), color=NUMERIC_COLOR, lw=1.3,
                      label="numerical, CS rkn (thin line)")
             top.set_title(rf"$\theta_0$ = {cs.pendulum.amplitude_deg:g}$^\circ$, last 2 periods")
-            top.set_xlabel(W0T_LABEL)
+            top.set_xlabel(T_LABEL)
             top.grid(alpha=0.3)
-            for run, color, label in ((cs, CS_ERROR_COLOR, "error, CS (rkn, tol 1e-8)"),
-                                      (me, ME_COLOR, f"error, ME (CVODE, rtol {me.method.effective_tolerance:g})")):
+            for run, color, label, row in ((cs, CS_ERROR_COLOR, "error, CS (rkn, tol 1e-8)", 1.0),
+                                           (me, ME_COLOR, f"error, ME (CVODE, rtol {me.method.effective_tolerance:g})",
+                                            ZERO_ROW)):
                 error = np.abs(run.theta_error)
-                bottom.semilogy(_w0t(run), _positive(error), color=color, lw=1.1, label=label)
+                bottom.semilogy(_cycles(run), _positive(error), color=color, lw=1.1, label=label)
                 zero = error == 0.0
-                if zero.any():
+                if zero.any():  # CS's ticks on the bottom edge, ME's a row above: both seen at t = 0
                     zeros_seen = True
-                    bottom.plot(_w0t(run)[zero], np.full(int(zero.sum()), floor), "|", color=color, ms=12, mew=1.5,
-                                clip_on=False)
-            bottom.set_xlabel(W0T_LABEL)
+                    bottom.plot(_cycles(run)[zero], np.full(int(zero.sum()), floor * row), "|", color=color, ms=9,
+                                mew=1.5, clip_on=False)
+            bottom.set_xlabel(T_LABEL)
             bottom.grid(alpha=0.3, which="major")
             bottom.set_ylim(floor, 1e-4)
         axes[0, 0].set_ylabel(r"$\theta$ (deg)")
         axes[1, 0].set_ylabel(r"$|\theta - \theta_{exact}|$ (rad)")
         top_handles, top_labels = axes[0, 0].get_legend_handles_labels()
-        fig.legend(top_handles, top_labels, loc="upper center", bbox_to_anchor=(0.5, 0.955), ncol=2, frameon=False,
+        fig.legend(top_handles, top_labels, loc="upper center", bbox_to_anchor=(0.5, 0.915), ncol=2, frameon=False,
                    fontsize=10)
         handles, labels = axes[1, 0].get_legend_handles_labels()
         if zeros_seen:
-            handles.append(plt.Line2D([], [], ls="none", marker="|", ms=12, mew=1.5, color="0.3"))
-            labels.append("error exactly 0 (ticks on the bottom edge: no place on a log axis)")
-        fig.legend(handles, labels, loc="lower center", ncol=3, frameon=False, fontsize=10)
-        fig.suptitle("Figure 5: numerical against exact (top), and the error over the whole run (bottom)")
-        fig.tight_layout(rect=(0, 0.05, 1, 0.93))
+            for color, where in ((CS_ERROR_COLOR, "CS, bottom edge"), (ME_COLOR, "ME, a row above")):
+                handles.append(plt.Line2D([], [], ls="none", marker="|", ms=9, mew=1.5, color=color))
+                labels.append(f"error exactly 0 ({where}: a log axis has no 0)")
+        fig.legend(handles, labels, loc="lower center", ncol=2, frameon=False, fontsize=10)
+        fig.suptitle("Figure 5: numerical against exact (top), and the error over the whole run (bottom)\n"
+                     + constants_text(cs_runs), fontsize=13)
+        for ax in axes.flat:  # whole T0 on every panel, as in Figures 3 and 4
+            ax.xaxis.set_major_locator(MaxNLocator(nbins=5, integer=True))
+        fig.tight_layout(rect=(0, 0.08, 1, 0.885))
         fig.savefig(path, dpi=110)
         plt.close(fig)
 
@@ -189,14 +206,16 @@ def plot_period_ratio(curve: PeriodCurve, seed_amplitudes_deg: tuple[float, ...]
         left.plot(a[inside], ratio[inside], color=NUMERIC_COLOR, lw=2.4, label=r"FMU period output, $4K(m)/\omega_0$")
         small = a <= 120.0
         left.plot(a[small], 1.0 + theta0[small] ** 2 / 16.0, "--", color="0.3", lw=1.4,
-                  label=r"small angle: $1 + \theta_0^2/16$")
+                  label=r"small angle: $1 + \theta_0^2/16$, $\theta_0$ in rad")
         shown = measured <= top_ratio
         left.plot(marker_a[shown], measured[shown], **markers)
         hidden = marker_a[~shown]
         if hidden.size:
-            left.annotate(f"measured at {', '.join(f'{v:g}' for v in hidden)}$^\\circ$:\nT/$T_0$ > {top_ratio:g},\n"
-                          "see the right panel", xy=(178.5, top_ratio), xytext=(108, 3.0), fontsize=10,
-                          ha="left", va="top", arrowprops={"arrowstyle": "->", "color": "0.3"})
+            # in the empty space below the legend and above the curve, pointing to the top right
+            left.annotate(f"measured at {', '.join(f'{v:g}' for v in hidden)}$^\\circ$:\nT/$T_0$ > {top_ratio:g}, "
+                          "see the right panel", xy=(179.0, top_ratio), xytext=(8, 2.55), fontsize=10,
+                          ha="left", va="top", arrowprops={"arrowstyle": "->", "color": "0.3",
+                                                           "connectionstyle": "arc3,rad=-0.15"})
         left.set_xlim(0, 181)
         left.set_xticks(range(0, 181, 30))
         left.set_ylim(0.95, top_ratio)
@@ -222,7 +241,7 @@ def plot_period_ratio(curve: PeriodCurve, seed_amplitudes_deg: tuple[float, ...]
         right.set_xlabel(r"$180^\circ - \theta_0$ (deg), log scale: $\theta_0$ grows to the right $\rightarrow$")
         right.set_ylabel(r"$T / T_0$")
         right.set_title(r"the approach to 180$^\circ$: T grows like a logarithm")
-        right.grid(alpha=0.3, which="both")
+        right.grid(alpha=0.3, which="major")  # a line a decade; the minor ticks stay as ticks
         right.legend(loc="upper left", fontsize=10)
         fig.tight_layout()
         fig.savefig(path, dpi=110)

@@ -45,16 +45,19 @@ def write_study(fmu: Path, out: Path, periods: float = 10.0,
         if progress is not None:
             progress("the period curve: the FMU's period at 477 amplitudes, and 15 runs that measure it")
         curve = period_curve(runner)
-    if progress is not None:
-        progress("the figures and the reports")
+    say = progress if progress is not None else (lambda line: None)
+    say("Figures 3 and 4 (fig3_numeric.png, fig4_exact.png)")
     cs_runs = [r for r in runs if r.method.interface == "CS"]
     me_runs = [r for r in runs if r.method.interface == "ME"]
     plot_solutions(cs_runs, "theta", "Figure 3: the numerical solution (FMU, Co-Simulation, rkn)",
                    out / "fig3_numeric.png")
     plot_solutions(cs_runs, "theta_exact", "Figure 4: the exact solution (Jacobi elliptic functions, in the FMU)",
                    out / "fig4_exact.png")
+    say("Figure 5 (fig5_overlay.png)")
     plot_comparison_grid(cs_runs, me_runs, out / "fig5_overlay.png")
+    say("the period ratio (period_ratio.png)")
     plot_period_ratio(curve, SEED_AMPLITUDES_DEG, out / "period_ratio.png")
+    say("runs.csv, report.md and report.html")
     write_csv(runs, out / "runs.csv")
     rows = table_rows(runs)
     table = format_table(rows)
