@@ -80,8 +80,9 @@ fmi2Status fmi2SetDebugLogging(fmi2Component c, fmi2Boolean loggingOn, size_t nC
 
 fmi2Status fmi2SetupExperiment(fmi2Component c, fmi2Boolean toleranceDefined, fmi2Real tolerance,
                                fmi2Real startTime, fmi2Boolean stopTimeDefined, fmi2Real stopTime) {
-    return (fmi2Status)instance_setup_experiment(c, "fmi2SetupExperiment", toleranceDefined, tolerance, startTime,
-                                                 stopTimeDefined, stopTime);
+    return (fmi2Status)instance_setup_experiment(c, "fmi2SetupExperiment",
+                                                 split_tolerance_defined(toleranceDefined, tolerance), tolerance,
+                                                 startTime, stopTimeDefined, stopTime);
 }
 
 fmi2Status fmi2EnterInitializationMode(fmi2Component c) {

@@ -128,7 +128,8 @@ fmi3Status fmi3SetDebugLogging(fmi3Instance instance, fmi3Boolean loggingOn, siz
 
 fmi3Status fmi3EnterInitializationMode(fmi3Instance instance, fmi3Boolean toleranceDefined, fmi3Float64 tolerance,
                                        fmi3Float64 startTime, fmi3Boolean stopTimeDefined, fmi3Float64 stopTime) {
-    return (fmi3Status)instance_enter_initialization_with(instance, "fmi3EnterInitializationMode", toleranceDefined,
+    return (fmi3Status)instance_enter_initialization_with(instance, "fmi3EnterInitializationMode",
+                                                          split_tolerance_defined(toleranceDefined, tolerance),
                                                           tolerance, startTime, stopTimeDefined, stopTime);
 }
 

@@ -224,3 +224,7 @@ Status split_not_provided(SplitInstance *inst, const char *function, const char 
     }
     return instance_fail(CORE(inst), function, "%s", reason);
 }
+
+int split_tolerance_defined(int tolerance_defined, double tolerance) {
+    return tolerance_defined && !(tolerance > 0.0 && tolerance < INTEGRATOR_TOLERANCE_FLOOR);
+}

@@ -77,6 +77,12 @@ const char *split_refusal(const char *name, const char *token);
 /* instance_setup, then the input at its start value. 0, or -1 when out of memory. */
 int split_setup(SplitInstance *inst, const char *name, int fmi_version, int logging_on);
 Status split_exit_initialization(SplitInstance *inst, const char *function);
+
+/* Whether the experiment's tolerance is passed on to the core: the split FMUs run no solver
+ * (Body integrates its input in closed form), so a valid tolerance below the core's
+ * certificate floor (INTEGRATOR_TOLERANCE_FLOOR) means nothing to them and is not passed on;
+ * one outside (0, 1) is, to be refused with the core's reason. */
+int split_tolerance_defined(int tolerance_defined, double tolerance);
 Status split_reset(SplitInstance *inst, const char *function);
 Status split_get_reals(SplitInstance *inst, const char *function, const ValueReference vr[], size_t nvr,
                        double value[]);

@@ -260,7 +260,14 @@ static void test_misuse2(const Api2 *body, const Api2 *gravity) {
     check(body->instantiate("", fmi2CoSimulation, PENDULUM_BODY_TOKEN, NULL, &CALLBACKS, 0, 0) == NULL,
           "an empty instance name is refused");
 
+    /* no solver runs in the split FMUs: a tolerance below the core's certificate floor is taken,
+       one outside (0, 1) refused */
     c = instance2(body, PENDULUM_BODY_TOKEN);
+    check(body->setup(c, fmi2True, 1e-16, 0.0, fmi2False, 0.0) == fmi2OK && body->enter_init(c) == fmi2OK &&
+          body->exit_init(c) == fmi2OK, "Body takes tolerance 1e-16: %s", last_message);
+    c = (body->free_instance(c), instance2(body, PENDULUM_BODY_TOKEN));
+    refused(body->setup(c, fmi2True, 2.0, 0.0, fmi2False, 0.0), "(0, 1)", "tolerance 2");
+    c = (body->free_instance(c), instance2(body, PENDULUM_BODY_TOKEN));
     refused(body->do_step(c, 0.0, 0.1, fmi2True), "not allowed in state Instantiated", "DoStep before initialization");
     c = (body->free_instance(c), instance2(body, PENDULUM_BODY_TOKEN));
     refused(body->set_real(c, &alpha_vr, 1, &nan_value), "finite", "alpha = NaN");
