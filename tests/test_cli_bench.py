@@ -23,8 +23,16 @@ def test_bench_help_has_defaults_and_examples_and_no_rst(name: str, capsys: pyte
     assert "(default" in out and "examples:" in out and "``" not in out
 
 
-def test_bench_exact_times_the_library_against_scipy(capsys: pytest.CaptureFixture[str]) -> None:
-    assert main(["bench", "exact", "-n", "20000", "--amplitudes", "80"]) == 0
+@pytest.fixture(scope="module")
+def bench_exact(fmu_path: Path) -> Path:
+    """The test program ``tests/c/bench_exact`` of the FMU's CMake build (the command never looks for it)."""
+    program = fmu_path.parent / "tests" / "c" / "bench_exact"
+    assert program.is_file(), f"{program} is not built"
+    return program
+
+
+def test_bench_exact_times_the_library_against_scipy(bench_exact: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["bench", "exact", "-n", "20000", "--amplitudes", "80", "--exe", str(bench_exact)]) == 0
     line = re.search(r"^bench_exact amplitude_deg=80 n=20000 c_ns_per_point=(\S+) python_ns_per_point=(\S+) "
                      r"scipy_ns_per_point=(\S+)$", capsys.readouterr().out, re.MULTILINE)
     assert line is not None
@@ -32,13 +40,12 @@ def test_bench_exact_times_the_library_against_scipy(capsys: pytest.CaptureFixtu
     assert 0 < python_ns < 1e4 and 0 < scipy_ns < 1e4
 
 
-def test_bench_exact_prints_batch_gsl_and_new_states_side_by_side(capsys: pytest.CaptureFixture[str]) -> None:
+def test_bench_exact_prints_batch_gsl_and_new_states_side_by_side(bench_exact: Path,
+                                                                  capsys: pytest.CaptureFixture[str]) -> None:
     """With the C benchmark of the build: eval, batch, GSL and new state + eval, each as best and median,
     beside the Python and scipy figures for one state and for a state per point."""
-    from pendulum_fmu.bench.exact import find_bench_executable
-
-    assert find_bench_executable() is not None, "tests/c/bench_exact is not built"
-    assert main(["bench", "exact", "-n", "20000", "--amplitudes", "90", "--rounds", "2"]) == 0
+    argv = ["bench", "exact", "-n", "20000", "--amplitudes", "90", "--rounds", "2", "--exe", str(bench_exact)]
+    assert main(argv) == 0
     out = capsys.readouterr().out
     assert "GSL/eval" in out and "eval/batch" in out and "scipy/(init+eval)" in out
     line = re.search(r"^bench_exact_all amplitude_deg=90 n=20000 (.*)$", out, re.MULTILINE)
@@ -55,6 +62,27 @@ def test_bench_exact_prints_batch_gsl_and_new_states_side_by_side(capsys: pytest
         pytest.skip("GSL column not timed: apt-get install libgsl-dev, then cmake -S . -B build and rebuild")
     assert 0 < float(values["gsl_best"]) <= float(values["gsl_median"]) < 1e5
     assert GSL_ABSENT not in out
+
+
+def test_bench_exact_without_exe_looks_for_no_program(capsys: pytest.CaptureFixture[str]) -> None:
+    """Not even in a checkout whose build/ holds tests/c/bench_exact: the C columns are left out, in one line."""
+    assert main(["bench", "exact", "-n", "1000", "--amplitudes", "80", "--rounds", "1"]) == 0
+    out = capsys.readouterr().out
+    assert out.splitlines()[0] == ("bench exact: the C benchmark (tests/c/bench_exact) is not installed with the "
+                                   "package: timing Python and scipy only (the C columns: bash scripts/bench.sh exact "
+                                   "in a source checkout)")
+    assert "C ns/pt" not in out and "c_ns_per_point" not in out and "eval_best" not in out
+
+
+def test_bench_solvers_without_driver_looks_for_no_program(fmu_path: Path, tmp_path: Path,
+                                                           capsys: pytest.CaptureFixture[str]) -> None:
+    """Not even in a checkout whose build/ holds tests/c/bench_solvers: one line naming the script, exit 2."""
+    from pendulum_fmu.cli.bench.solvers import NO_DRIVER
+
+    assert main(["bench", "solvers", "--quick", "--fmu", str(fmu_path), "--out", str(tmp_path / "bench")]) == 2
+    err = capsys.readouterr().err
+    assert err.splitlines() == [f"pendulum-fmu bench solvers: error: {NO_DRIVER}"]
+    assert "bash scripts/bench.sh solvers" in err and not (tmp_path / "bench" / "report.md").exists()
 
 
 def test_an_untimed_column_is_a_dash_not_nan() -> None:

@@ -12,8 +12,10 @@ shared machine does not count:
   ``pendulum_exact_init_gl`` set-up from g and L per angle, as the FMU's), and scipy's
   ``ellipkm1`` + ``ellipj`` over the same arrays.
 
-- C: the executable ``tests/c/bench_exact`` of a CMake build (``pendulum_exact_eval`` in a
-  loop); a pip-installed package has none, and this column is then left out;
+- C: the test program ``tests/c/bench_exact`` of a CMake build (``pendulum_exact_eval`` in a
+  loop), run only when the caller hands it in (``bash scripts/bench.sh exact`` builds it and
+  passes it as ``--exe``); an installed package carries none and looks for none, and these
+  columns are then left out;
 - Python: :func:`pendulum_fmu.exact` over a numpy array of times (one call into the C library
   ``pendulum_exact``, the same code);
 - scipy: from the same number of times, u = w0 t + K(m) (release from rest),
@@ -32,7 +34,6 @@ import numpy as np
 from scipy.special import ellipj, ellipkm1
 
 from pendulum_fmu.errors import SimulationError
-from pendulum_fmu.fmu.build import DEFAULT_BUILD_DIR
 
 DEFAULT_AMPLITUDES_DEG: tuple[float, ...] = (10.0, 90.0, 170.0, 179.9999)
 """Release angles (degrees, from rest, w0 = 1) benchmarked by default."""
@@ -125,27 +126,6 @@ class BenchResult:
     def ratio(self) -> float:
         """C time over scipy time per point."""
         return self.c_ns / self.scipy_ns
-
-
-def find_bench_executable(build_dir: Path = DEFAULT_BUILD_DIR) -> Path | None:
-    """Locate the ``bench_exact`` executable of a CMake build.
-
-    Parameters
-    ----------
-    build_dir : Path
-        The CMake build folder (default: ``build`` at the repository root).
-
-    Returns
-    -------
-    Path
-        The executable.
-
-    Returns None when there is none (a pip-installed package has no C benchmark).
-    """
-    for candidate in (build_dir / "tests" / "c" / "bench_exact", build_dir / "bench_exact"):
-        if candidate.is_file():
-            return candidate
-    return None
 
 
 def run_c_benchmark(executable: Path, n: int, amplitudes_deg: tuple[float, ...]) -> dict[float, CTimings]:

@@ -1,9 +1,12 @@
-"""The C half of the speed-against-error study: ``tests/c/bench_solvers``.
+"""The C half of the speed-against-error study: the repository's ``tests/c/bench_solvers``.
 
 The driver loads the FMU's ``Pendulum.so`` and calls the FMI functions directly (no
 Python in the loop), for the FMU's four solvers and, as the floor, for the exact solution
-at the same points through Model Exchange. This module finds it, runs it and turns its
-``key=value`` lines into :class:`~pendulum_fmu.bench.workprecision.runs.Run` and :class:`Floor` records.
+at the same points through Model Exchange. It is a test program of a CMake build, which an
+installed package neither carries nor looks for: the caller hands it in (``bash
+scripts/bench.sh solvers`` builds it and passes it as ``--driver``). This module runs it and
+turns its ``key=value`` lines into :class:`~pendulum_fmu.bench.workprecision.runs.Run` and
+:class:`Floor` records.
 """
 
 from __future__ import annotations
@@ -13,7 +16,6 @@ import subprocess
 from dataclasses import dataclass
 from pathlib import Path
 
-from pendulum_fmu.fmu.build import DEFAULT_BUILD_DIR
 from pendulum_fmu.bench.workprecision.runs import Run
 
 
@@ -40,26 +42,6 @@ class Floor:
     periods: float
     points: int
     wall_s: float
-
-
-def find_driver(fmu: Path) -> Path | None:
-    """The ``bench_solvers`` executable built with the FMU, if there is one.
-
-    Parameters
-    ----------
-    fmu : Path
-        The FMU; a CMake build folder holds it and ``tests/c/bench_solvers`` side by side.
-
-    Returns
-    -------
-    Path or None
-        The executable next to the FMU's build, else the repository's ``build/``, else None.
-    """
-    for build in (fmu.resolve().parent, DEFAULT_BUILD_DIR):
-        exe = build / "tests" / "c" / "bench_solvers"
-        if exe.is_file():
-            return exe
-    return None
 
 
 def shared_library(unzipped: Path) -> Path:

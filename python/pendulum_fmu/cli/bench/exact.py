@@ -13,9 +13,10 @@ NAME = "exact"
 HELP = "the exact solution per point: C, batch, GSL, from Python (pendulum_fmu.exact) and scipy"
 DESCRIPTION = """\
 Time the exact solution per point over the same number of random times, in interleaved rounds
-(best and median): one state over many times in C (the benchmark program tests/c/bench_exact
-of a CMake build: the scalar loop, the lock-step batch and GSL's gsl_sf_elljac_e when it was
-built with GSL; a pip-installed package has no C benchmark and leaves those out), from Python
+(best and median): one state over many times in C (the test program tests/c/bench_exact of a
+CMake build, given with --exe: the scalar loop, the lock-step batch and GSL's gsl_sf_elljac_e
+when it was built with GSL; bash scripts/bench.sh exact builds it and gives it; without --exe
+those columns are left out), from Python
 through pendulum_fmu.exact (one call into the C library pendulum_exact, the FMU's own code)
 and with scipy.special.ellipj plus arctan2, vectorised; and a new state per point (set-up and
 one evaluation) in C, through pendulum_fmu.exact and with scipy's ellipkm1 + ellipj. Prints
@@ -25,6 +26,7 @@ EPILOG = """\
 examples:
   pendulum-fmu bench exact                          # 10^6 points at 10, 90, 170, 179.9999 deg
   pendulum-fmu bench exact -n 100000 --amplitudes 80 170
+  bash scripts/bench.sh exact -n 200000             # in the repository: with the C columns
   pendulum-fmu bench exact --exe build/tests/c/bench_exact
 """
 
@@ -51,8 +53,8 @@ def amplitude(text: str) -> float:
 def configure(parser: argparse.ArgumentParser) -> None:
     """Add the options of ``bench exact``."""
     parser.add_argument("--exe", type=executable, default=None, metavar="PATH",
-                        help="the C benchmark program (default: tests/c/bench_exact of the repository's build/, "
-                             "if there is one)")
+                        help="the C benchmark program tests/c/bench_exact of a CMake build (default: none, "
+                             "the C columns left out; bash scripts/bench.sh exact builds it and gives it)")
     parser.add_argument("-n", "--points", type=integer(1, 100_000_000), default=1_000_000, metavar="N",
                         help="points per amplitude, 1-10^8 (default 1000000)")
     parser.add_argument("--amplitudes", type=amplitude, nargs="+", default=[10.0, 90.0, 170.0, 179.9999],
@@ -75,13 +77,12 @@ def both(x_best: float, x_median: float, y_best: float, y_median: float) -> str:
 
 def run(args: argparse.Namespace) -> int:
     """Run the benchmark and print the table."""
-    from pendulum_fmu.bench.exact import find_bench_executable
     from pendulum_fmu.bench.exact import run as run_benchmark
 
-    program = args.exe if args.exe is not None else find_bench_executable()
+    program = args.exe
     if program is None:
         print("bench exact: the C benchmark (tests/c/bench_exact) is not installed with the package: "
-              "timing Python and scipy only")
+              "timing Python and scipy only (the C columns: bash scripts/bench.sh exact in a source checkout)")
     results = run_benchmark(program, args.points, tuple(args.amplitudes), args.rounds)
     with_c = program is not None  # without the C benchmark its columns are left out, not printed as nan
     print("one state, many times (ns per point, best over the rounds):")

@@ -15,10 +15,14 @@ HELP = "work-precision of the solvers: error against cost"
 DESCRIPTION = plain_text((module_docstring("pendulum_fmu.bench.solvers") or HELP).split("\n``pendulum-fmu bench solvers`` runs")[0])
 EPILOG = """\
 examples:
-  pendulum-fmu bench solvers --quick                # about 30 s
-  pendulum-fmu bench solvers --out out/bench       # the full study, about 6 min on 2 cores
-  pendulum-fmu bench solvers --problems P1 --no-peers
+  bash scripts/bench.sh solvers --quick             # in the repository: builds the C driver, about 30 s
+  bash scripts/bench.sh solvers --out out/bench    # the full study, about 6 min on 2 cores
+  pendulum-fmu bench solvers --driver build/tests/c/bench_solvers --problems P1 --no-peers
 """
+NO_DRIVER = ("the study times the FMU's solvers with the C driver tests/c/bench_solvers, a test program of the "
+             "repository that the package does not carry: run bash scripts/bench.sh solvers in a source checkout, "
+             "or give --driver")
+"""The one line without ``--driver``: the package carries no test program and looks for none."""
 PROBLEMS = ("P1", "P2", "P3")
 
 
@@ -27,7 +31,8 @@ def configure(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--fmu", type=Path, default=None, metavar="PATH",
                         help="the FMU (default: $PENDULUM_FMU, the installed one, or the repository's build/)")
     parser.add_argument("--driver", type=Path, default=None, metavar="PATH",
-                        help="the C driver tests/c/bench_solvers (default: in the FMU's CMake build)")
+                        help="the C driver tests/c/bench_solvers of a CMake build, built for this FMU (required; "
+                             "bash scripts/bench.sh solvers builds it and gives it)")
     parser.add_argument("--out", type=Path, default=Path("out") / "bench", metavar="DIR",
                         help="output folder, created with its missing parents (default: out/bench)")
     parser.add_argument("--problems", default="P1,P2,P3",
@@ -45,7 +50,6 @@ def configure(parser: argparse.ArgumentParser) -> None:
 def run(args: argparse.Namespace) -> int:
     """Check the options, then run the study: 0 when every target is met, 1 when not, 2 on bad usage."""
     from pendulum_fmu.bench.solvers import study
-    from pendulum_fmu.bench.workprecision.cdriver import find_driver
     from pendulum_fmu.errors import BuildError, UsageError
     from pendulum_fmu.fmu.identity import fmi_version_of
     from pendulum_fmu.fmu.locate import locate_fmu
@@ -64,12 +68,11 @@ def run(args: argparse.Namespace) -> int:
     except (UsageError, BuildError, OutputError) as error:
         print(f"pendulum-fmu bench solvers: error: {error}", file=sys.stderr)
         return 2
-    driver = args.driver or find_driver(fmu)
-    if driver is None or not driver.is_file():
-        print("pendulum-fmu bench solvers: error: the C driver tests/c/bench_solvers is not installed with the "
-              "package: run it from a source checkout after cmake --build build, or give --driver", file=sys.stderr)
+    driver = args.driver
+    if driver is None:
+        print(f"pendulum-fmu bench solvers: error: {NO_DRIVER}", file=sys.stderr)
         return 2
-    if not os.access(driver, os.X_OK):
+    if not driver.is_file() or not os.access(driver, os.X_OK):
         print(f"pendulum-fmu bench solvers: error: argument --driver: {str(driver)!r} is not an executable file: "
               "give the C driver tests/c/bench_solvers of a CMake build", file=sys.stderr)
         return 2
