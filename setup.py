@@ -31,6 +31,7 @@ from __future__ import annotations
 
 import os
 import platform
+import re
 import shutil
 import subprocess
 import sys
@@ -105,13 +106,38 @@ def build_fmu(platforms: bool = False) -> Path | None:
     targets = ["fmu", "fmu3", "pendulum_exact", "pendulum_driver"] + (["pendulum_exact_platforms"] if options else [])
     commands = [[cmake, "-S", str(ROOT), "-B", str(build_dir), "-DCMAKE_BUILD_TYPE=Release", *options],
                 [cmake, "--build", str(build_dir), "--target", *targets, "--parallel", str(os.cpu_count() or 1)]]
+    what = "every platform with zig" if options else "the host's binaries"
+    say(f"building the FMUs into {build_dir} ({what}; minutes the first time, seconds after)")
     for command in commands:
-        done = subprocess.run(command, capture_output=True, text=True, check=False)
-        if done.returncode != 0:
+        returncode, tail = run_saying_stages(command)
+        if returncode != 0:
             print(f"warning: pendulum-fmu: {' '.join(command)} failed; Pendulum.fmu is looked for at run time\n"
-                  f"{done.stdout[-2000:]}{done.stderr[-2000:]}", file=sys.stderr)
+                  f"{tail}", file=sys.stderr)
             return None
     return build_dir if (build_dir / "Pendulum.fmu").is_file() else None
+
+
+STAGE = re.compile(r"^\[\s*\d+(?:%|/\d+)\] (?!Building C object|Linking C )")
+"""A line of CMake's build output worth a line of progress: a step with a comment (each zig
+cross-build per platform, packing an FMU, the reference result) or a target done; not each
+object file."""
+
+
+def say(line: str) -> None:
+    """One line of progress on stderr (``pip install -v`` shows it)."""
+    print(f"pendulum-fmu build: {line}", file=sys.stderr, flush=True)
+
+
+def run_saying_stages(command: list[str]) -> tuple[int, str]:
+    """Run ``command``, saying each stage of its output as it comes; its exit code and last 4000 characters."""
+    process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    tail = ""
+    assert process.stdout is not None
+    for line in process.stdout:
+        tail = (tail + line)[-4000:]
+        if STAGE.match(line):
+            say(line.rstrip())
+    return process.wait(), tail
 
 
 def host_library_folder() -> str:

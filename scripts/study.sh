@@ -1,18 +1,12 @@
 #!/usr/bin/env bash
 # The main job: build both FMUs (build/Pendulum.fmu, FMI 2.0; build/fmi3/Pendulum.fmu, FMI 3.0) and run
-# the seed's study; everything lands in out/study/.
+# the seed's study; everything lands in out/study/. Each step says what it does on stderr: the
+# first run creates .venv and builds the FMUs for every platform (minutes), a later one takes seconds.
 ROOT_DIR="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-[ -x "$ROOT_DIR/.venv/bin/python" ] || echo "study.sh: creating the Python environment .venv (about a minute, once) ..." >&2
-source "$(dirname "${BASH_SOURCE[0]}")/setup-env.sh"
-# The FMU the study runs is the one tested and shipped. The first build compiles the FMUs for
-# every platform with zig and takes a few minutes: say so, and show CMake's output when it fails.
-[ -f build/Pendulum.fmu ] || echo "study.sh: building the FMUs (FMI 2.0 and 3.0, every platform; a few minutes the first time) ..." >&2
-build_log="$(mktemp -t pendulum-build-XXXXXX.log)"
-if ! bash scripts/build-fmu.sh > "$build_log" 2>&1; then
-    tail -n 30 "$build_log" >&2
-    echo "study.sh: building the FMUs failed (the last lines of its output are above)" >&2
-    rm -f "$build_log"
-    exit 1
-fi
-rm -f "$build_log"
+source "$ROOT_DIR/scripts/setup-env.sh"
+# The FMU the study runs is the one tested and shipped (seconds when build/ is up to date; after a
+# change, every platform is compiled again with zig): CMake's stages as they come, its output on failure.
+say "building the FMUs (scripts/build-fmu.sh: FMI 2.0 and 3.0, every platform; seconds when up to date) ..."
+run_step "$CMAKE_STAGES" bash scripts/build-fmu.sh
+say "running the study (pendulum-fmu study $*) ..."
 exec pendulum-fmu study "$@"

@@ -1,18 +1,23 @@
 #!/usr/bin/env bash
-# All tests from scratch: C unit tests (ctest) in a normal and a sanitizer build, then pytest.
+# All tests from scratch: C unit tests (ctest) in a normal and a sanitizer build, then pytest. Each
+# step says what it does; the builds show CMake's stages, ctest and pytest their own progress.
 source "$(dirname "${BASH_SOURCE[0]}")/setup-env.sh"
 jobs="$(nproc)"
 echo "== C tests (Release; the build also makes the linux64/win64/darwin64 FMU, scripts/build-fmu.sh)"
-bash scripts/build-fmu.sh > /dev/null
+say "building build/ (seconds when up to date, minutes the first time) ..."
+run_step "$CMAKE_STAGES" bash scripts/build-fmu.sh
 ctest --test-dir build --output-on-failure
 echo "== C tests (AddressSanitizer + UndefinedBehaviorSanitizer)"
-cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Debug -DPENDULUM_SANITIZE=ON > /dev/null
-cmake --build build-sanitize --parallel "$jobs" > /dev/null
+say "building build-sanitize/ (Debug, ASan + UBSan; minutes the first time) ..."
+run_step "$CMAKE_STAGES" cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Debug -DPENDULUM_SANITIZE=ON
+run_step "$CMAKE_STAGES" cmake --build build-sanitize --parallel "$jobs"
 ctest --test-dir build-sanitize --output-on-failure
 echo "== valgrind memcheck of the FMI harness"
-for harness in test_fmi_api test_fmi_threads test_fmi3_api test_fmi_conformance test_fmi3_conformance; do
+harnesses=(test_fmi_api test_fmi_threads test_fmi3_api test_fmi_conformance test_fmi3_conformance)
+for k in "${!harnesses[@]}"; do
+    say "valgrind $((k + 1)) of ${#harnesses[@]}: ${harnesses[k]} ..."
     valgrind --quiet --error-exitcode=1 --leak-check=full --errors-for-leak-kinds=all \
-        "build/tests/c/$harness"
+        "build/tests/c/${harnesses[k]}"
 done
 echo "== Python tests"
 export PENDULUM_FMU="$ROOT/build/Pendulum.fmu"
