@@ -523,7 +523,8 @@ Exchange bound within a few periods."""
 def stated_tolerance(drawn: float, error: float) -> float:
     """The tolerance a wrong Model Exchange run is judged at: ``drawn``, or a decade at most
     1e-6 of the run's ``error`` when that is smaller (not below 1e-12), so that the error is
-    1e6 tol or more: 1000 times the Model Exchange bound's 1000 tol."""
+    1e6 tol or more: far beyond ME_FACTOR tol, the Model Exchange bound's local error a
+    period."""
     if not (error > 0 and math.isfinite(error)):
         return drawn
     return max(1e-12, min(drawn, 10.0 ** math.floor(math.log10(error / 1e6))))

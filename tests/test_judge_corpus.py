@@ -132,7 +132,7 @@ VISIBLE_IN_THE_VALUES = ("fixed step: explicit Euler", "fixed step: symplectic E
                          "scaled clock", "g = 9.80665 not told", "L = 2 not told", "g = 1.62 not told", "wrong theta",
                          "wrong omega", "startTime 5 not told", "degrees for radians")
 """The wrong kinds whose theta or omega is off the exact solution of what the judge is told
-by more than 10 times the bound (CS 100 tol; ME 1000 tol); the others are wrong in their
+by more than 10 times the bound (CS 100 tol; ME ME_FACTOR tol a period); the others are wrong in their
 times, their rows or one value."""
 
 
