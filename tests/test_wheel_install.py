@@ -57,8 +57,9 @@ def test_what_is_not_installed_says_so_in_one_line(installed: Path, tmp_path: Pa
     done = _run([str(installed), "bench", "solvers", "--quick"], tmp_path, env)
     assert done.returncode == 2
     assert done.stderr.splitlines() == [
-        "pendulum-fmu bench solvers: error: the C driver tests/c/bench_solvers is not installed with the package: "
-        "run it from a source checkout after cmake --build build, or give --driver"]
+        "pendulum-fmu bench solvers: error: the study times the FMU's solvers with the C driver tests/c/bench_solvers, "
+        "a test program of the repository that the package does not carry: run bash scripts/bench.sh solvers in a "
+        "source checkout, or give --driver"]
     exact = _run([str(installed), "bench", "exact", "-n", "1000", "--amplitudes", "80"], tmp_path, env)
     assert exact.returncode == 0 and "the C benchmark (tests/c/bench_exact) is not installed" in exact.stdout
     assert list(tmp_path.iterdir()) == []
