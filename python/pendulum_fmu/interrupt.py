@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import _signal
 import signal
+import sys
 import threading
 from collections.abc import Iterator
 from contextlib import contextmanager
@@ -115,5 +116,18 @@ def default_dispositions() -> None:
     ``_sticky``). Called by the command line as soon as its package is imported, before
     the heavy imports, and again by ``main`` (main thread only).
     """
-    if threading.current_thread() is threading.main_thread():
-        signal.signal(signal.SIGINT, _sticky)
+    if threading.current_thread() is not threading.main_thread():
+        return
+    signal.signal(signal.SIGINT, signal.SIG_IGN if spawned_child() else _sticky)
+
+
+def spawned_child() -> bool:
+    """True in a process started by ``multiprocessing`` (a local Dask worker), false in the command.
+
+    Such a process imports the command's main module again, the console script's too (its
+    ``import pendulum_fmu.cli`` calls :func:`default_dispositions`): the command's handler must
+    not be set there. A sweep's worker leaves Ctrl-C to the command, which shuts it down: a
+    ``KeyboardInterrupt`` in a starting worker made the cluster fail with "Nanny failed to
+    start", and in a running one printed its traceback.
+    """
+    return "--multiprocessing-fork" in getattr(sys, "orig_argv", sys.argv)

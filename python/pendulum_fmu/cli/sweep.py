@@ -120,8 +120,11 @@ def run(args: argparse.Namespace) -> int:
           + (f"; about {duration_text(seconds)} on {workers} worker processes" if seconds > SLOW_SECONDS
              and args.scheduler is None else ""), flush=True)
     from pendulum_fmu.output.paths import make_output_folder
+    from pendulum_fmu.sweep.cluster import check_scheduler
     from pendulum_fmu.sweep.run import run_sweep
 
+    if args.scheduler is not None:
+        check_scheduler(args.scheduler)  # nothing listening: one line at once, and no folder made
     make_output_folder(args.out)
     outcome = run_sweep(fmu, sweep, args.out, args.format, args.scheduler, workers,
                         progress=not args.quiet, plots=not args.no_plots)

@@ -5,7 +5,9 @@ from __future__ import annotations
 import logging
 import math
 import signal
+import socket
 import sys
+import threading
 import time
 from collections.abc import Callable, Iterator, Sequence
 from contextlib import contextmanager
@@ -23,6 +25,54 @@ TASKS_PER_THREAD = 8
 MAX_BATCH = 64
 POLL_SECONDS = 0.02
 """How often the client looks for finished tasks and for Ctrl-C."""
+
+
+@contextmanager
+def sigint_blocked() -> Iterator[None]:
+    """SIGINT held back from this thread (and every thread and process it starts) inside the block.
+
+    A signal mask is inherited by new threads and kept across ``fork`` and ``exec``: the local
+    cluster's event-loop thread, started inside the block, keeps SIGINT blocked for good, and so
+    does every worker process it spawns (then or later, a restarted worker too), from its first
+    instruction on. A terminal's Ctrl-C reaches every process of the group, and the workers must
+    leave it to this process, which shuts them down. An interrupt that arrives meanwhile is not
+    lost: it stays pending and is delivered to this thread as the block ends.
+    """
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    # multiprocessing starts its resource tracker from the first thread that spawns a process,
+    # and then *unblocks* SIGINT in that thread: started here first, it leaves the mask alone
+    from multiprocessing import resource_tracker
+
+    resource_tracker.ensure_running()
+    previous = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT})
+    try:
+        yield
+    finally:
+        signal.pthread_sigmask(signal.SIG_SETMASK, previous)
+
+
+def check_scheduler(address: str, timeout: float = 2.0) -> None:
+    """Refuse at once a ``tcp://host:port`` scheduler address where nothing listens.
+
+    Dask itself retries a refused connection until its own timeout; this probe answers in at
+    most ``timeout`` seconds, before the sweep writes anything.
+
+    Raises
+    ------
+    UsageError
+        If no TCP connection to the address can be opened.
+    """
+    if not address.startswith("tcp://"):
+        return
+    host, _, port = address.removeprefix("tcp://").rpartition(":")
+    try:
+        with socket.create_connection((host.strip("[]"), int(port)), timeout=timeout):
+            pass
+    except (OSError, ValueError) as error:
+        reason = getattr(error, "strerror", None) or str(error) or type(error).__name__
+        raise UsageError("--scheduler", f"cannot reach a Dask scheduler at {address}: {reason}") from None
 
 
 @contextmanager
@@ -45,60 +95,128 @@ def dask_client(scheduler: str | None = None, workers: int = 2) -> Iterator[Clie
     ------
     UsageError
         If the scheduler cannot be reached or has no worker.
+    KeyboardInterrupt
+        On Ctrl-C, after the local cluster's processes are gone.
     """
-    from distributed import Client, LocalCluster
-
     if scheduler is None:
-        # Ctrl-C at a terminal goes to the whole process group: the worker processes start with
-        # SIGINT ignored (inherited through exec), so only this process sees it and shuts them down.
-        previous = signal.signal(signal.SIGINT, signal.SIG_IGN)
-        try:
-            cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None,
-                                   silence_logs=logging.ERROR)
-        finally:
-            signal.signal(signal.SIGINT, previous)
-        client = None
-        interrupted = False
-        try:
-            with interrupt.deferred_interrupt():  # see execute: no interrupt inside the client's calls
-                client = Client(cluster)
+        with _local_client(workers) as client:
             yield client
-        except KeyboardInterrupt:
-            interrupted = True
-            quiet_shutdown()
-            raise
-        finally:
-            if client is not None:
-                client.close(timeout=2 if interrupted else 10)
-            cluster.close(timeout=3 if interrupted else 30)
-            if interrupted:
-                stop_worker_processes()
         return
+    from distributed import Client
+
+    check_scheduler(scheduler)
     try:
-        client = Client(scheduler, timeout="10s")
+        with interrupt.deferred_interrupt():
+            client = Client(scheduler, timeout="10s")
     except (OSError, TimeoutError) as error:
         raise UsageError("--scheduler", f"cannot reach a Dask scheduler at {scheduler}: {error}") from None
+    interrupted = False
     try:
-        try:
-            client.wait_for_workers(1, timeout=30)
-        except TimeoutError:
-            raise UsageError("--scheduler", f"the scheduler at {scheduler} has no worker (waited 30 s)") from None
+        with interrupt.deferred_interrupt():
+            try:
+                client.wait_for_workers(1, timeout=30)
+            except TimeoutError:
+                raise UsageError("--scheduler", f"the scheduler at {scheduler} has no worker (waited 30 s)") from None
         yield client
+    except KeyboardInterrupt:
+        interrupted = True
+        quiet_shutdown()
+        raise
     finally:
-        client.close()
+        with interrupt.deferred_interrupt():
+            client.close(timeout=2 if interrupted else 10)
+
+
+@contextmanager
+def _local_client(workers: int) -> Iterator[Client]:
+    """A client on a new local cluster, closed without a word on every way out (see dask_client)."""
+    from distributed import Client, LocalCluster
+
+    cluster: LocalCluster | None = None
+    client: Client | None = None
+    interrupted = False
+    try:
+        # No KeyboardInterrupt inside Dask's blocking calls (see execute): SIGINT sets a flag,
+        # raised as the block ends; while the cluster starts it is held back (sigint_blocked).
+        with interrupt.deferred_interrupt():
+            with sigint_blocked():
+                # the scheduler's HTTP server (health, metrics) on a free port: no "Port 8787 is
+                # already in use" warning when another Dask cluster runs on this machine
+                cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, host="127.0.0.1",
+                                       dashboard_address=None, scheduler_kwargs={"dashboard_address": "127.0.0.1:0"},
+                                       silence_logs=logging.ERROR)
+            client = Client(cluster)
+        yield client
+    except KeyboardInterrupt:
+        interrupted = True
+        raise
+    finally:
+        _close_local(cluster, client, interrupted)
+
+
+def _close_local(cluster: Any, client: Any, interrupted: bool) -> None:
+    """Close a local cluster and its client; after an interrupt, at once and without a word.
+
+    At a normal end the workers' loggers are silenced first: a worker whose heartbeat meets
+    the closing scheduler logs a ``CommClosedError`` traceback, noise at the end of a sweep.
+    After an interrupt the worker processes are killed first (their nannies told not to
+    restart them), then the cluster closed with short timeouts and its errors ignored.
+    """
+    if cluster is None:
+        return
+    with interrupt.deferred_interrupt():  # a second Ctrl-C while closing: the same one line
+        if interrupted:
+            _abandon(cluster, client)
+            return
+        if client is not None:
+            try:
+                client.run(quiet_shutdown)
+            except Exception:  # noqa: BLE001 -- a worker already gone has nothing to log
+                pass
+        quiet_shutdown()
+        if client is not None:
+            client.close(timeout=10)
+        cluster.close(timeout=30)
+
+
+def _abandon(cluster: Any, client: Any) -> None:
+    """The interrupted path of :func:`_close_local`."""
+    from distributed.core import Status
+
+    quiet_shutdown()
+    for nanny in list(getattr(cluster, "workers", {}).values()):
+        nanny.status = Status.closing_gracefully  # a worker that exits now is not restarted
+    stop_worker_processes(grace=0.5)
+    for close in (lambda: client is not None and client.close(timeout=1), lambda: cluster.close(timeout=2)):
+        try:
+            close()
+        except Exception:  # noqa: BLE001 -- the user asked to stop: what is left is killed below
+            pass
+    stop_worker_processes(grace=0.5)
 
 
 def quiet_shutdown() -> None:
-    """Silence Dask's loggers: after an interrupt, closing the cluster logs only noise."""
+    """Silence Dask's loggers in this process: closing a cluster logs only noise."""
     for name in ("distributed", "tornado", "asyncio"):
         logging.getLogger(name).setLevel(logging.CRITICAL + 1)
 
 
 def stop_worker_processes(grace: float = 1.0) -> None:
-    """Terminate (then kill) any child process the local cluster left behind after an interrupt."""
+    """Terminate (then kill) this process's worker processes: a local cluster's after an interrupt.
+
+    Only the processes ``multiprocessing`` spawned to run code (its resource tracker, which
+    ignores SIGTERM, ends by itself with this process; killed, it would be relaunched with a
+    warning).
+    """
     import psutil
 
-    children = psutil.Process().children(recursive=True)
+    children = []
+    for child in psutil.Process().children(recursive=True):
+        try:
+            if "--multiprocessing-fork" in child.cmdline():
+                children.append(child)
+        except psutil.Error:
+            pass
     for child in children:
         try:
             child.terminate()
