@@ -46,6 +46,19 @@ def write_json(verdict: Verdict, path: Path) -> None:
     _replace_atomically(path, lambda p: p.write_text(text))
 
 
+def _log_values(values: np.ndarray) -> np.ndarray:
+    """Values for a log axis: exact zeros (the error at t = 0) become NaN, not a plunge to a floor."""
+    return np.where(values > 0.0, values, np.nan)
+
+
+def _zero_ticks(ax: Any, time: np.ndarray, error: np.ndarray, color: str) -> None:
+    """Mark the times where ``error`` is exactly 0 as ticks on the panel's bottom edge (labelled once)."""
+    zero = error == 0.0
+    if zero.any():
+        ax.plot(time[zero], np.zeros(int(zero.sum())), "|", color=color, ms=9, mew=1.4, clip_on=False,
+                transform=ax.get_xaxis_transform(), label="exactly 0 (ticks on the bottom edge)")
+
+
 def write_plot(verdict: Verdict, data: Any, path: Path) -> None:
     """|theta - exact| and |omega - exact| over time on a log scale, with the bound drawn
     (and the exact columns' differences when they are off).
@@ -71,9 +84,9 @@ def write_plot(verdict: Verdict, data: Any, path: Path) -> None:
     ref = checks.reference(result, verdict.experiment)
     errors = checks.state_errors(result, ref)
     fig, axes = plt.subplots(len(errors) or 1, 1, figsize=(9, 3.2 * max(1, len(errors))), sharex=True, squeeze=False)
-    tiny = 1e-17
     for ax, (name, error) in zip(axes[:, 0], errors.items()):
-        ax.semilogy(result.time, np.maximum(np.abs(error), tiny), lw=1, label=f"|{name} - {name}_exact|")
+        ax.semilogy(result.time, _log_values(np.abs(error)), lw=1, label=f"|{name} - {name}_exact|")
+        _zero_ticks(ax, result.time, np.abs(error), "tab:blue")
         me = verdict.experiment.interface == "ME"
         factor = f"{checks.ME_FACTOR:g} tol" if me else f"{checks.CS_FACTOR:g} tol"
         scale = "max(1, |theta_e|)" if name == "theta" else "max(w0, |omega_e|)"
@@ -82,19 +95,18 @@ def write_plot(verdict: Verdict, data: Any, path: Path) -> None:
         exact_name = f"{name}_exact"
         mismatch = checks.exact_mismatch(result, ref, verdict.experiment).get(exact_name)
         if mismatch is not None and np.any(mismatch[0] > mismatch[1]):
-            ax.semilogy(result.time, np.maximum(mismatch[0], tiny), color="tab:red", lw=1,
+            ax.semilogy(result.time, _log_values(mismatch[0]), color="tab:red", lw=1,
                         label=f"|{exact_name} column - pendulum_fmu.exact|")
         ax.set_ylabel(f"{name} error ({'rad' if name == 'theta' else 'rad/s'})")
         ax.grid(True, which="major", alpha=0.3)
-        ax.set_ylim(bottom=tiny)
-        ax.legend(loc="lower right", fontsize=8)
+        ax.legend(loc="lower left", bbox_to_anchor=(0.0, 1.0), ncol=3, fontsize=8, frameon=False)  # off the curves
     if not errors:
         axes[0, 0].text(0.5, 0.5, "no theta or omega column", ha="center", transform=axes[0, 0].transAxes)
     axes[-1, 0].set_xlabel("time (s)")
     verdict_word = "PASS" if verdict.passed else "FAIL"
     e = verdict.experiment
     fig.suptitle(f"{Path(verdict.source).name}: {verdict_word}  ({e.interface}, tol {e.tolerance:g}, "
-                 f"theta0 {math.degrees(e.theta0):.4g} deg, L {e.L:g} m, g {e.g:g})", fontsize=10)
+                 f"theta0 {math.degrees(e.theta0):.4g} deg, L {e.L:g} m, g {e.g:g} m/s$^2$)", fontsize=10)
     fig.tight_layout()
     _replace_atomically(path, lambda p: fig.savefig(p, dpi=110, format="png"))
     plt.close(fig)
