@@ -53,3 +53,34 @@ def test_too_long_an_animation_is_refused_with_the_limit(fmu_path: Path, tmp_pat
     assert stop.value.code == 2
     assert "argument --periods: the animation would have" in capsys.readouterr().err
     assert not (tmp_path / "long.gif").exists()
+
+
+def test_rendering_says_how_far_and_nothing_moving_crosses_the_readouts_or_the_legend(
+        fmu_path: Path, tmp_path: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]) -> None:
+    """Going over the top, the bob sweeps the whole circle of radius L, which fills each panel: the
+    readouts sit above the panels and the legend below them. The film says its frames as it draws."""
+    import matplotlib.pyplot as plt
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+
+    figures: list[Figure] = []
+    close = plt.close
+    monkeypatch.setattr(plt, "close", lambda figure=None: (figures.append(figure), close(figure)))
+    out = tmp_path / "rotation.gif"
+    assert main(["animate", "-a", "0", "-w", "7", "--stop-time", "0.8", "--fps", "10", "--out", str(out),
+                 "--fmu", str(fmu_path)]) == 0
+    err = capsys.readouterr().err.splitlines()
+    assert err == [f"animate: drawing 9 frames into {out} ...", "animate: 2 of 9 frames drawn",
+                   "animate: 4 of 9 frames drawn", "animate: 7 of 9 frames drawn"]
+    figure, = figures
+    canvas = FigureCanvasAgg(figure)
+    canvas.draw()
+    renderer = canvas.get_renderer()
+    panels = [ax.get_window_extent(renderer) for ax in figure.axes]
+    legend, = figure.legends
+    assert legend.get_window_extent(renderer).y1 < min(panel.y0 for panel in panels)
+    for ax, panel in zip(figure.axes, panels):
+        readout, = [text for text in ax.texts if text.get_animated()]
+        readout.set_text("theta =   186.20 deg,  |theta - theta_exact| = 1.3e-15 rad")
+        assert readout.get_window_extent(renderer).y0 >= panel.y1
+        assert ax.get_legend() is None

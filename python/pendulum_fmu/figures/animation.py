@@ -6,6 +6,7 @@ import math
 import os
 import sys
 from pathlib import Path
+from collections.abc import Callable
 from typing import Any
 
 import numpy as np
@@ -17,8 +18,6 @@ from pendulum_fmu.spec import Method, Pendulum, StopUnit, TimeGrid
 
 MAX_FRAMES = 1500
 """Most frames an animation may have (a minute at 25 frames/s; a GIF is assembled in memory)."""
-SLOW_FRAMES = 250
-"""Films of more frames say so before they are drawn (about 100 frames a second here)."""
 
 
 class _GifFrames:
@@ -67,7 +66,8 @@ class _Mp4Frames:
             pass
 
 
-def render(trajectory: Trajectory, out: Path, fps: int, trail: float = 1.0) -> Path:
+def render(trajectory: Trajectory, out: Path, fps: int, trail: float = 1.0,
+           progress: Callable[[int, int], None] | None = None) -> Path:
     """Draw every output point of ``trajectory`` as one frame and write the GIF or MP4.
 
     The axes, labels and legends are drawn once; each frame restores them and draws only
@@ -83,6 +83,8 @@ def render(trajectory: Trajectory, out: Path, fps: int, trail: float = 1.0) -> P
         Frames per second of the file.
     trail : float
         Seconds of simulated time of the bob's path drawn behind it.
+    progress : callable, optional
+        Called with (frames drawn, frames in all) after each quarter of the frames.
 
     Returns
     -------
@@ -105,7 +107,9 @@ def render(trajectory: Trajectory, out: Path, fps: int, trail: float = 1.0) -> P
 
     # 960 x 480 pixels: both multiples of 16, so H.264 needs no rescaling.
     fig, axes = plt.subplots(1, 2, figsize=(9.6, 4.8), dpi=100)
-    fig.subplots_adjust(left=0.075, right=0.985, bottom=0.11, top=0.86, wspace=0.22)
+    # The bob's circle fills each square panel: the readouts sit above the panels (under their
+    # titles) and one legend below them, so neither the bob nor its trail ever crosses them.
+    fig.subplots_adjust(left=0.075, right=0.985, bottom=0.2, top=0.79, wspace=0.22)
     titles = {"numeric": f"numerical: FMU, {m.label}", "exact": "exact: Jacobi elliptic (theta_exact, in the FMU)"}
     colors = {"numeric": "tab:blue", "exact": "tab:orange"}
     moving: dict[str, tuple[Any, Any, Any, Any]] = {}
@@ -116,17 +120,21 @@ def render(trajectory: Trajectory, out: Path, fps: int, trail: float = 1.0) -> P
         ax.set_aspect("equal")
         ax.set_xlabel("x (m)")
         ax.set_ylabel("y (m)")
-        ax.set_title(titles[name], fontsize=10)
+        ax.set_title(titles[name], fontsize=10, pad=18)
         ax.grid(alpha=0.25)
-        ax.plot([0], [0], "ks", ms=5, label="pivot")
-        path, = ax.plot([], [], "-", color=colors[name], lw=1.4, alpha=0.5, animated=True,
-                        label=f"path, last {trail:g} s")
-        rod, = ax.plot([], [], "-", color="0.35", lw=2.2, animated=True, label="rod")
-        bob, = ax.plot([], [], "o", color=colors[name], ms=15, mec="k", animated=True, label="bob")
-        text = ax.text(0.03, 0.97, "", transform=ax.transAxes, va="top", fontsize=9, family="monospace",
-                       animated=True)
-        ax.legend(loc="lower right", fontsize=7, framealpha=0.9, markerscale=0.6)
+        ax.plot([0], [0], "ks", ms=5)
+        path, = ax.plot([], [], "-", color=colors[name], lw=1.4, alpha=0.5, animated=True)
+        rod, = ax.plot([], [], "-", color="0.35", lw=2.2, animated=True)
+        bob, = ax.plot([], [], "o", color=colors[name], ms=15, mec="k", animated=True)
+        text = ax.text(0.5, 1.015, "", transform=ax.transAxes, ha="center", va="bottom", fontsize=9,
+                       family="monospace", animated=True)
         moving[name] = (path, rod, bob, text)
+    key = [(plt.Line2D([], [], ls="none", marker="s", color="k", ms=5), "pivot"),
+           (plt.Line2D([], [], color="0.35", lw=2.2), "rod"),
+           (plt.Line2D([], [], ls="none", marker="o", color=colors["numeric"], mec="k", ms=9), "bob, numerical"),
+           (plt.Line2D([], [], ls="none", marker="o", color=colors["exact"], mec="k", ms=9), "bob, exact"),
+           (plt.Line2D([], [], color="0.5", lw=1.4, alpha=0.6), f"path, last {trail:g} s")]
+    fig.legend(*zip(*key), loc="lower center", ncol=len(key), fontsize=8, frameon=False)
     heading = fig.text(0.5, 0.965, "", ha="center", va="top", fontsize=10, animated=True)
     canvas = fig.canvas
     canvas.draw()
@@ -138,6 +146,7 @@ def render(trajectory: Trajectory, out: Path, fps: int, trail: float = 1.0) -> P
     frames: _GifFrames | _Mp4Frames = (_Mp4Frames(partial, fps, (width, height)) if out.suffix.lower() == ".mp4"
                                        else _GifFrames(partial, fps))
     finished = False
+    quarters = {round(time.size * q / 4) for q in (1, 2, 3)} - {0, time.size}
     try:
         for k in range(time.size):
             canvas.restore_region(background)  # type: ignore[attr-defined]
@@ -150,7 +159,7 @@ def render(trajectory: Trajectory, out: Path, fps: int, trail: float = 1.0) -> P
                 bob.set_data([x[k]], [y[k]])
                 line = f"theta = {math.degrees(theta[name][k]):8.2f} deg"
                 if name == "numeric":
-                    line += f"\n|theta - theta_exact| = {error[k]:.1e} rad"
+                    line += f",  |theta - theta_exact| = {error[k]:.1e} rad"
                 text.set_text(line)
                 for artist in (path, rod, bob, text):
                     ax.draw_artist(artist)
@@ -158,6 +167,8 @@ def render(trajectory: Trajectory, out: Path, fps: int, trail: float = 1.0) -> P
                              f"g = {p.gravity:g} m/s^2        t = {time[k]:6.2f} s  ({time[k] / period:5.2f} periods)")
             fig.draw_artist(heading)
             frames.add(np.asarray(canvas.buffer_rgba())[:, :, :3])  # type: ignore[attr-defined]
+            if progress is not None and (k + 1) in quarters:
+                progress(k + 1, time.size)
         frames.close()
         os.replace(partial, out)
         finished = True
@@ -214,7 +225,10 @@ def animate(fmu: Path, pendulum: Pendulum, method: Method, stop: float, unit: St
     with FmuRunner(fmu) as runner:
         trajectory = runner.run(pendulum, method, grid, plan)   # refused before the first frame
     frames = counted[0]
-    if frames > SLOW_FRAMES:
-        print(f"animate: drawing {frames} frames into {out} ...", file=sys.stderr, flush=True)
-    render(trajectory, out, fps)
+    print(f"animate: drawing {frames} frames into {out} ...", file=sys.stderr, flush=True)
+
+    def drawn(done: int, total: int) -> None:
+        print(f"animate: {done} of {total} frames drawn", file=sys.stderr, flush=True)
+
+    render(trajectory, out, fps, progress=drawn)
     return trajectory
