@@ -8,10 +8,13 @@
     for check in verdict.checks:
         print(check.name, check.status, check.line)
 
-Modules: ``reading`` (CSV, Parquet, tables), ``experiment`` (start values and defaults),
-``checks`` (grid, exact columns, errors, isolated values, bound), ``inference`` (parameter
-fit, fixed-step methods, effective tolerance), ``verdict`` (the dataclasses), ``report``
-(text, JSON, plot), ``judge`` (the whole run).
+Modules: ``reading`` (CSV, Parquet, tables) with ``print_format`` (each cell's rounding),
+``experiment`` (start values and defaults) with ``standard_files`` (a cross-check ``_ref.opt``,
+an FMI-LS-REF ``.exp``), ``checks`` (grid, exact columns, errors, isolated values, bound) with
+``sensitivity`` (the Model Exchange bound's growth), ``alternatives`` (what else the values are
+right for), ``fixed_step`` and ``inference`` (fixed-step methods, parameter fit, tolerance
+reruns), ``diagnosis`` (why the bound failed), ``band`` (fmpy's cross-check rule), ``verdict``
+(the dataclasses), ``report`` (text, JSON, plot), ``judge`` (the whole run).
 """
 
 from pendulum_fmu.judge.judge import judge
