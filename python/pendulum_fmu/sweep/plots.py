@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from collections import defaultdict
 from collections.abc import Sequence
 from pathlib import Path
@@ -72,7 +73,7 @@ def plot_error(rows: Sequence[dict[str, Any]], path: Path) -> None:
     for (solver, tol), group in _groups(ok, "solver", "tolerance").items():
         group = sorted(group, key=lambda row: row["amplitude_deg"])
         ax.semilogy([r["amplitude_deg"] for r in group], _positive([r["max_error_rad"] for r in group]), ms=3.5,
-                    lw=0.8, label=f"{solver}, tol {tol:g}", **_method_style(solver, tol, tolerances))
+                    lw=0.8, label=_label(group[0]), **_method_style(solver, tol, tolerances))
     ax.set_xlabel(r"amplitude $\theta_0$ (deg)")
     ax.set_ylabel(r"max $|\theta - \theta_{exact}|$ (rad)")
     ax.set_title(f"Sweep: largest error over {ok[0]['periods']:g} periods" if ok else "Sweep: largest error")
@@ -83,25 +84,57 @@ def plot_error(rows: Sequence[dict[str, Any]], path: Path) -> None:
     plt.close(fig)
 
 
+def _count(value: Any) -> float:
+    """A solver counter of a row as a float: NaN where there is none (Model Exchange, or not read)."""
+    try:
+        number = float(value)
+    except (TypeError, ValueError):
+        return math.nan
+    return number if number > 0.0 else math.nan
+
+
+def _label(row: dict[str, Any]) -> str:
+    """``rkn (CS), tol 1e-08``: the solver, its interface and tolerance."""
+    return f"{row['solver']} ({row['interface']}), tol {row['tolerance']:g}"
+
+
 def plot_cost(rows: Sequence[dict[str, Any]], path: Path) -> None:
-    """Work-precision: largest error against wall time per run, one series per solver and tolerance."""
+    """Work-precision: largest error against the FMU's right-hand-side evaluations per run.
+
+    The count is the FMU's own and exact (wall time on a shared machine is noise). Model
+    Exchange runs (fmpy's CVODE) have no such counter: they get a panel of their own against
+    wall time, marked as Model Exchange.
+    """
     ok = _ok(rows)
     tolerances = sorted({row["tolerance"] for row in ok})
-    fig, ax = plt.subplots(figsize=(8.5, 4.8))
-    for (solver, tol), group in _groups(ok, "solver", "tolerance").items():
-        ax.loglog([1e3 * r["wall_time_s"] for r in group], _positive([r["max_error_rad"] for r in group]),
-                  ls="none", ms=4, alpha=0.7, label=f"{solver}, tol {tol:g}",
-                  **_method_style(solver, tol, tolerances))
-    # Labels at 1, 2 and 5 of each decade only: every minor tick labelled ran into its neighbours.
-    ax.xaxis.set_major_locator(LogLocator(base=10.0, subs=(1.0, 2.0, 5.0)))
-    ax.xaxis.set_major_formatter(FuncFormatter(lambda value, _: f"{value:g}"))
-    ax.xaxis.set_minor_formatter(NullFormatter())
-    ax.set_xlabel("wall time per run (ms)")
-    ax.set_ylabel(r"max $|\theta - \theta_{exact}|$ (rad)")
-    ax.set_title("Sweep: error against cost")
-    ax.grid(alpha=0.3, which="both")
-    ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
-    fig.tight_layout()
+    counted = [row for row in ok if math.isfinite(_count(row.get("rhs_evaluations")))]
+    timed = [row for row in ok if row not in counted]
+    panels = [(rows_, kind) for rows_, kind in ((counted, "rhs"), (timed, "wall")) if rows_]
+    fig, axes = plt.subplots(1, len(panels), figsize=(8.5 + 3.5 * (len(panels) - 1), 4.8), sharey=True,
+                             squeeze=False)
+    for ax, (panel_rows, kind) in zip(axes[0], panels):
+        for _, group in _groups(panel_rows, "solver", "tolerance").items():
+            x = ([_count(r["rhs_evaluations"]) for r in group] if kind == "rhs"
+                 else [1e3 * r["wall_time_s"] for r in group])
+            ax.loglog(x, _positive([r["max_error_rad"] for r in group]), ls="none", ms=4, alpha=0.7,
+                      label=_label(group[0]), **_method_style(group[0]["solver"], group[0]["tolerance"], tolerances))
+        # Labels at 1, 2 and 5 of each decade only: every minor tick labelled ran into its neighbours.
+        ax.xaxis.set_major_locator(LogLocator(base=10.0, subs=(1.0, 2.0, 5.0)))
+        ax.xaxis.set_major_formatter(FuncFormatter(lambda value, _: f"{value:g}"))
+        ax.xaxis.set_minor_formatter(NullFormatter())
+        if kind == "rhs":
+            ax.set_xlabel("right-hand-side evaluations per run (the FMU's count)")
+            ax.set_title("Co-Simulation: error against the FMU's work")
+        else:
+            ax.set_xlabel("wall time per run (ms; no FMU counter)")
+            ax.set_title("Model Exchange (fmpy's CVODE)")
+        ax.grid(alpha=0.3, which="major")
+    axes[0, 0].set_ylabel(r"max $|\theta - \theta_{exact}|$ (rad)")
+    handles = [h for ax in axes[0] for h in ax.get_legend_handles_labels()[0]]
+    labels = [label for ax in axes[0] for label in ax.get_legend_handles_labels()[1]]
+    fig.legend(handles, labels, fontsize=7, loc="upper left", bbox_to_anchor=(0.8 if len(panels) > 1 else 0.77, 0.93))
+    fig.suptitle("Sweep: error against cost")
+    fig.tight_layout(rect=(0, 0, 0.8 if len(panels) > 1 else 0.77, 1))
     fig.savefig(path, dpi=130)
     plt.close(fig)
 
