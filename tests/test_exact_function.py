@@ -63,3 +63,51 @@ def test_a_missing_library_is_one_line_naming_the_platform(tmp_path: Path) -> No
     done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=tmp_path, timeout=60)
     assert done.stdout.strip() == "$PENDULUM_EXACT_LIB names no file: '/nonexistent/libpendulum_exact.so'"
     assert done.stderr == ""
+
+
+def test_threads_give_the_values_of_one_thread_bit_for_bit() -> None:
+    """Both C entries (one state over many times, a state per point), split over 1 .. 7 threads."""
+    rng = np.random.default_rng(27)
+    times = rng.uniform(-50.0, 50.0, 100_003)
+    states = (rng.uniform(-4.0, 4.0, 100_003), rng.uniform(-8.0, 8.0, 100_003), 1.3, 9.81)
+    for args in [(*CASES[0], times), (*CASES[4], times), (*CASES[5], times), (*states, times)]:
+        one = exact(*args, workers=1)
+        for workers in (2, 3, 7):
+            split = exact(*args, workers=workers)
+            for a, b in zip(one, split):
+                assert a.tobytes() == b.tobytes(), workers
+
+
+def test_large_arrays_are_split_over_the_usable_cores_and_small_ones_are_not(monkeypatch: pytest.MonkeyPatch) -> None:
+    import threading
+
+    from pendulum_fmu.fmu import library
+
+    assert library.usable_cores() >= 1
+    assert library.thread_count(1000) == 1                               # small: the calling thread
+    assert library.thread_count(10_000_000) == min(library.usable_cores(), library.MAX_THREADS)
+    assert library.thread_count(3 * library.MIN_POINTS_PER_THREAD) == min(library.usable_cores(), 3)
+    assert library.thread_count(10, workers=16) == 10 and library.thread_count(10**6, workers=3) == 3
+    for bad in (0, -1, 1.5, True):
+        with pytest.raises(ValueError, match="workers must be a positive integer"):
+            exact(0.5, 0.0, 1.0, 9.81, [0.0, 1.0], workers=bad)  # type: ignore[arg-type]
+    parts = library.chunks(1_000_003, 3)
+    assert parts[0][0] == 0 and parts[-1][1] == 1_000_003 and len(parts) == 3
+    assert all(b == c and b % library.ALIGN == 0 for (_, b), (c, _) in zip(parts, parts[1:]))
+    seen: set[str] = set()
+    original = library._library()
+
+    class Recording:
+        """The library, noting the thread of each call."""
+
+        def __getattr__(self, name: str) -> object:
+            function = getattr(original, name)
+
+            def call(*args: object) -> object:
+                seen.add(threading.current_thread().name)
+                return function(*args)
+            return call
+
+    monkeypatch.setattr(library, "_library", Recording)
+    exact(0.5, 0.0, 1.0, 9.81, np.linspace(0.0, 1.0, 1000), workers=2)
+    assert len(seen) == 2 and threading.current_thread().name in seen, seen

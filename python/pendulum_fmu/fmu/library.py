@@ -2,7 +2,8 @@
 
 The C library ``pendulum_exact`` (``exact_lib/`` of the repository, built by CMake beside
 the FMU from the same ``exact.c`` and ``elliptic.c``) is called once per array through
-ctypes: no FMU instance, no round trip per point. Its theta equals the FMU's
+ctypes: no FMU instance, no round trip per point. A large array is split over threads
+(``workers``), each running the C code on its chunk with the GIL released. Its theta equals the FMU's
 ``theta_exact`` bit for bit (same code, same w0 = sqrt(g/L), initial state at t = 0).
 
 Where the library is looked for: ``$PENDULUM_EXACT_LIB``, then the package's
@@ -16,6 +17,8 @@ import ctypes
 import os
 import platform
 import sys
+from collections.abc import Callable
+from concurrent.futures import ThreadPoolExecutor
 from functools import lru_cache
 from pathlib import Path
 
@@ -131,8 +134,78 @@ def _library() -> ctypes.CDLL:
     return library
 
 
+MIN_POINTS_PER_THREAD = 65_536
+"""The default splits an array over threads only in chunks of at least this many points
+(about 15 ms of work: a thread's start and hand-over cost microseconds)."""
+MAX_THREADS = 64
+"""The default uses at most this many threads."""
+ALIGN = 64
+"""Chunk boundaries fall on multiples of this many points."""
+
+
+def usable_cores() -> int:
+    """The cores this process may run on (its CPU affinity where the platform has one)."""
+    if hasattr(os, "sched_getaffinity"):
+        return max(1, len(os.sched_getaffinity(0)))
+    return max(1, os.cpu_count() or 1)
+
+
+def thread_count(points: int, workers: int | None = None) -> int:
+    """Threads :func:`exact` uses for ``points`` points.
+
+    Parameters
+    ----------
+    points : int
+        Points to evaluate.
+    workers : int, optional
+        Threads asked for (at most one per point); default the usable cores, at most
+        :data:`MAX_THREADS`, and one per :data:`MIN_POINTS_PER_THREAD` points (1 for small arrays).
+
+    Returns
+    -------
+    int
+        At least 1.
+
+    Raises
+    ------
+    ValueError
+        If ``workers`` is given and is not a positive integer.
+    """
+    if workers is not None:
+        if isinstance(workers, bool) or not isinstance(workers, int) or workers < 1:
+            raise ValueError(f"workers must be a positive integer, got {workers!r}")
+        return max(1, min(workers, points))
+    return max(1, min(usable_cores(), MAX_THREADS, points // MIN_POINTS_PER_THREAD))
+
+
+def chunks(points: int, threads: int) -> list[tuple[int, int]]:
+    """``threads`` contiguous ranges ``[start, stop)`` covering ``points``, near-equal, aligned to :data:`ALIGN`."""
+    bounds = [min(points, (points * k // threads) // ALIGN * ALIGN) for k in range(threads)] + [points]
+    return [(a, b) for a, b in zip(bounds, bounds[1:]) if b > a]
+
+
+_pool: list[ThreadPoolExecutor] = []
+
+
+def _in_threads(evaluate: Callable[[int, int], object], points: int, threads: int) -> None:
+    """Call ``evaluate(start, stop)`` over :func:`chunks`, the first in this thread, the others in a pool.
+
+    The C calls release the GIL (ctypes does for a ``CDLL``), so the chunks run at once.
+    """
+    parts = chunks(points, threads)
+    if len(parts) == 1:
+        evaluate(*parts[0])
+        return
+    if not _pool:
+        _pool.append(ThreadPoolExecutor(max_workers=MAX_THREADS, thread_name_prefix="pendulum-exact"))
+    futures = [_pool[0].submit(evaluate, start, stop) for start, stop in parts[1:]]
+    evaluate(*parts[0])
+    for future in futures:
+        future.result()
+
+
 def exact(theta0: ArrayLike, omega0: ArrayLike, L: ArrayLike, g: ArrayLike,  # noqa: N803 (physics names)
-          t: ArrayLike) -> tuple[np.ndarray, np.ndarray]:
+          t: ArrayLike, workers: int | None = None) -> tuple[np.ndarray, np.ndarray]:
     """theta(t) and omega(t) of the pendulum theta'' + (g/L) sin(theta) = 0, exactly.
 
     The inputs broadcast against each other like numpy arrays; the initial state
@@ -151,6 +224,10 @@ def exact(theta0: ArrayLike, omega0: ArrayLike, L: ArrayLike, g: ArrayLike,  # n
         Gravitational acceleration, m/s^2 (> 0).
     t : array_like
         Times, s.
+    workers : int, optional
+        Threads to split the points over (each point is computed alone, so the values are
+        the same bit for bit on any number). Default: one per usable core, at most 64,
+        and one per 65536 points, so a small array is evaluated in the calling thread.
 
     Returns
     -------
@@ -162,6 +239,8 @@ def exact(theta0: ArrayLike, omega0: ArrayLike, L: ArrayLike, g: ArrayLike,  # n
     ------
     BuildError
         When no ``pendulum_exact`` library for this platform is available.
+    ValueError
+        If ``workers`` is not a positive integer.
 
     Examples
     --------
@@ -176,12 +255,23 @@ def exact(theta0: ArrayLike, omega0: ArrayLike, L: ArrayLike, g: ArrayLike,  # n
         times = np.ascontiguousarray(t, dtype=np.float64).reshape(-1)
         theta = np.empty(times.size)
         omega = np.empty(times.size)
-        library.pendulum_exact_times(*(float(x) for x in state), times.size, times, theta, omega)
+        values = [float(x) for x in state]
+        threads = thread_count(times.size, workers)
+        if threads == 1:
+            library.pendulum_exact_times(*values, times.size, times, theta, omega)
+        else:
+            _in_threads(lambda a, b: library.pendulum_exact_times(*values, b - a, times[a:b], theta[a:b], omega[a:b]),
+                        times.size, threads)
         return theta.reshape(shape), omega.reshape(shape)
     arrays = np.broadcast_arrays(*(np.asarray(x, dtype=np.float64) for x in (theta0, omega0, L, g, t)))
     shape = arrays[0].shape
     flat = [np.ascontiguousarray(a).reshape(-1) for a in arrays]
     theta = np.empty(flat[0].size)
     omega = np.empty(flat[0].size)
-    library.pendulum_exact_many(theta.size, *flat, theta, omega)
+    threads = thread_count(theta.size, workers)
+    if threads == 1:
+        library.pendulum_exact_many(theta.size, *flat, theta, omega)
+    else:
+        _in_threads(lambda a, b: library.pendulum_exact_many(b - a, *(x[a:b] for x in flat), theta[a:b], omega[a:b]),
+                    theta.size, threads)
     return theta.reshape(shape), omega.reshape(shape)
