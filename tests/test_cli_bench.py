@@ -59,7 +59,7 @@ def test_bench_exact_prints_batch_gsl_and_new_states_side_by_side(bench_exact: P
     assert float(values["batch_best"]) < float(values["eval_best"]) < float(values["init_eval_best"])
     if math.isnan(float(values["gsl_best"])):  # bench_exact configured without GSL: the command says so
         assert GSL_ABSENT in out and "nan" not in out.split("bench_exact ")[0]
-        pytest.skip("GSL column not timed: apt-get install libgsl-dev, then cmake -S . -B build and rebuild")
+        pytest.skip("GSL column not timed: apt-get install libgsl-dev, then cmake -S . -B build and rebuild bench_exact")
     assert 0 < float(values["gsl_best"]) <= float(values["gsl_median"]) < 1e5
     assert GSL_ABSENT not in out
 

@@ -64,7 +64,7 @@ def configure(parser: argparse.ArgumentParser) -> None:
 
 
 GSL_ABSENT = ("GSL: not timed, tests/c/bench_exact was built without GSL "
-              "(apt-get install libgsl-dev, then cmake -S . -B build and rebuild)")
+              "(apt-get install libgsl-dev, then cmake -S . -B build and bash scripts/bench.sh exact)")
 
 
 def both(x_best: float, x_median: float, y_best: float, y_median: float) -> str:
