@@ -177,10 +177,10 @@ def test_ctrl_c_during_a_long_study_is_one_line_and_exit_130(installed: Path, fo
     assert time.monotonic() - sent < 5, "the study took more than 5 s to stop"
     assert process.returncode == 130, stderr
     assert "Traceback" not in stderr and "Exception ignored" not in stderr and "failed" not in stderr, stderr
-    lines = [line for line in stderr.splitlines() if line.strip() and not line.startswith("study: run ")]
+    lines = [line for line in stderr.splitlines() if line.strip() and not line.startswith("study: ")]  # its stages
     assert lines == ["pendulum-fmu study: interrupted"] or (delay < 1 and lines == ["pendulum-fmu: interrupted"]), \
         stderr
-    assert not (folder / "out" / "study" / "report.html").exists()
+    assert not (folder / "out").exists(), "an interrupted study left its folder"
     _no_leftovers(folder)
 
 
@@ -192,7 +192,8 @@ def test_an_interrupted_animation_leaves_no_file(installed: Path, folder: Path) 
     os.killpg(process.pid, signal.SIGINT)
     _, stderr = process.communicate(timeout=60)
     assert process.returncode == 130, stderr
-    assert [line for line in stderr.splitlines() if line.strip()] == [
+    progress = re.compile(r"animate: \d+ of 1379 frames drawn$")  # each quarter drawn before the interrupt
+    assert [line for line in stderr.splitlines() if line.strip() and not progress.match(line)] == [
         "animate: drawing 1379 frames into long.gif ...", "pendulum-fmu animate: interrupted"], stderr
     assert list(folder.iterdir()) == [], "an interrupted animation left a file"
     _no_leftovers(folder)

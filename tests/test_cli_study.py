@@ -100,7 +100,7 @@ def test_an_interrupted_study_leaves_the_folder_as_it_was(fmu_path: Path, tmp_pa
     err = capsys.readouterr().err
     assert "study: run 8 of 8" in err and "study: Figure 5 (fig5_overlay.png) ..." in err
     assert "study: the period ratio" in err and err.rstrip().endswith("interrupted")
-    assert not fresh.exists() and (tmp_path / "fresh").exists()
+    assert not (tmp_path / "fresh").exists()  # nor the parent the study created
     kept = tmp_path / "kept"
     kept.mkdir()
     (kept / "fig3_numeric.png").write_bytes(b"the previous study's")

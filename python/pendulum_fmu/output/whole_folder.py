@@ -31,10 +31,10 @@ def whole_folder(out: Path) -> Iterator[Path]:
 
     Notes
     -----
-    On an exception (``KeyboardInterrupt`` included) the temporary folder is deleted, and
-    ``out`` too when this call created it and it is still empty.
+    On an exception (``KeyboardInterrupt`` included) the temporary folder is deleted, and so
+    are ``out`` and the parents this call created, when they are still empty.
     """
-    created = not out.exists()
+    created = [folder for folder in (out, *out.parents) if not folder.exists()]  # innermost first
     out.mkdir(parents=True, exist_ok=True)
     partial = out / f".partial-{os.getpid()}"
     shutil.rmtree(partial, ignore_errors=True)
@@ -48,7 +48,9 @@ def whole_folder(out: Path) -> Iterator[Path]:
             item.replace(target)
     except BaseException:
         shutil.rmtree(partial, ignore_errors=True)
-        if created and not any(out.iterdir()):
-            out.rmdir()
+        for folder in created:
+            if any(folder.iterdir()):
+                break
+            folder.rmdir()
         raise
     partial.rmdir()
