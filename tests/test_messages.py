@@ -30,6 +30,14 @@ def test_the_certificate_messages_of_a_run_are_said_once_and_short() -> None:
     assert len(lines[0]) < 250
 
 
+def test_a_hard_case_and_the_certificate_it_carries_are_said_apart() -> None:
+    hard = "hard case: by t = 9.9 the numerical solution reversed the rotation. Use a tighter tolerance."
+    lines = warning_lines((certificate(8.9, "19.8"), f"{hard} {certificate(9.9, '439')}"))
+    assert lines[0] == f"warning   the FMU: {hard}"
+    assert lines[1].startswith("warning   the step certificate failed from t = 8.9 s on (19.8 times its bound, "
+                               "growing to 439 times)")
+
+
 def test_other_warnings_stay_as_the_fmu_logged_them() -> None:
     assert warning_lines(("hard case: near the top",)) == ["warning   the FMU: hard case: near the top"]
     assert warning_lines(()) == []

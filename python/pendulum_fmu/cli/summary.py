@@ -67,8 +67,10 @@ def certificate_line(messages: list[re.Match[str]]) -> str:
 def warning_lines(warnings: tuple[str, ...]) -> list[str]:
     """What the FMU warned about during a run: the certificate's messages in one short line,
     any other warning in one line as the FMU logged it (nothing when it warned of nothing)."""
-    matches = [CERTIFICATE.match(w) for w in warnings]
+    # a hard case's message carries the certificate's of the same step at its end: said apart
+    parts = [part for w in warnings for part in re.split(r" (?=certificate: at t = )", w)]
+    matches = [CERTIFICATE.match(part) for part in parts]
     certificates = [m for m in matches if m is not None]
-    others = [w for w, m in zip(warnings, matches) if m is None]
+    others = [part for part, m in zip(parts, matches) if m is None]
     lines = [f"warning   the FMU: {'; '.join(others)}"] if others else []
     return lines + ([certificate_line(certificates)] if certificates else [])
