@@ -128,6 +128,15 @@ def length_option(grid: TimeGrid) -> str:
     return "-T/--stop-time" if grid.unit == "s" else "-p/--periods"
 
 
+def sweep_run_seconds(points_per_run: int) -> float:
+    """Estimated wall time of one sweep run of this many output points (rounded up).
+
+    The sweep also uses it to size its tasks before it has measured a run
+    (:func:`pendulum_fmu.sweep.cluster.task_size`).
+    """
+    return SECONDS_PER_SWEEP_RUN + points_per_run * SECONDS_PER_POINT
+
+
 def check_sweep(runs: int, points_per_run: int, workers: int, memory: int | None = None,
                 runs_argument: str = "-a/--amplitudes", fewer: str = "use fewer values on its axes") -> float:
     """Refuse a sweep that does not fit in memory or in :data:`MAX_SECONDS`; return its estimated seconds.
@@ -163,7 +172,7 @@ def check_sweep(runs: int, points_per_run: int, workers: int, memory: int | None
         raise UsageError(runs_argument, f"this sweep has {quantity(runs)} runs, about {size_text(need)} of "
                                         f"memory for their rows, and {size_text(memory)} is available: {fewer} "
                                         f"(at most about {quantity(fits)} runs fit)")
-    seconds = runs * (SECONDS_PER_SWEEP_RUN + points_per_run * SECONDS_PER_POINT) / max(workers, 1)
+    seconds = runs * sweep_run_seconds(points_per_run) / max(workers, 1)
     if seconds > MAX_SECONDS:
         raise UsageError(runs_argument, f"this sweep has {quantity(runs)} runs of {quantity(points_per_run)} "
                                         f"points, about {duration_text(seconds)} on {workers} workers: {fewer}, "

@@ -21,8 +21,10 @@ from pendulum_fmu.sweep.grid import SweepPoint
 if TYPE_CHECKING:
     from distributed import Client
 
-TASKS_PER_THREAD = 8
-MAX_BATCH = 64
+TASK_SECONDS = 0.1
+"""Work per Dask task the sweep aims at (see :func:`task_size`)."""
+TASKS_PER_THREAD = 2
+"""Fewest tasks per worker thread, when the runs are few."""
 POLL_SECONDS = 0.02
 """How often the client looks for finished tasks and for Ctrl-C."""
 
@@ -235,8 +237,37 @@ def worker_threads(client: Client) -> int:
     return max(1, sum(client.nthreads().values()))
 
 
-def batches(points: Sequence[SweepPoint], threads: int, batch_size: int | None = None) -> list[list[SweepPoint]]:
-    """Split points into tasks of about equal cost: about 8 per worker thread, at most 64 runs each.
+def task_size(runs: int, threads: int, run_seconds: float) -> int:
+    """Runs per task: about :data:`TASK_SECONDS` of work, yet at least two tasks per worker thread.
+
+    A Dask task costs the scheduler and the client about a millisecond whatever it does
+    (``pendulum-fmu bench sweep`` measures it with empty tasks): one run of 1 ms per task
+    spends as much on scheduling as on running, and 16 workers then wait on the scheduler.
+    Tasks of 0.1 s make that cost about 1 % of the work; with few runs, smaller tasks keep
+    every thread busy (two tasks per thread let the quick ones even out the slow).
+
+    Parameters
+    ----------
+    runs : int
+        Runs to deal out.
+    threads : int
+        Worker threads.
+    run_seconds : float
+        The cost of one run, measured or estimated.
+
+    Returns
+    -------
+    int
+        At least 1.
+    """
+    by_cost = math.ceil(TASK_SECONDS / max(run_seconds, 1e-6))
+    by_balance = math.ceil(runs / (TASKS_PER_THREAD * max(threads, 1)))
+    return max(1, min(by_cost, by_balance))
+
+
+def batches(points: Sequence[SweepPoint], threads: int, batch_size: int | None = None,
+            run_seconds: float | None = None) -> list[list[SweepPoint]]:
+    """Split points into tasks of about equal cost, sized by :func:`task_size`.
 
     The points are dealt out like cards (task i gets points i, i + n, i + 2n, ...), so each
     task holds amplitudes from the whole range, costs about the same as the others, and the
@@ -249,7 +280,10 @@ def batches(points: Sequence[SweepPoint], threads: int, batch_size: int | None =
     threads : int
         Worker threads that will run them.
     batch_size : int, optional
-        Runs per task instead of the default.
+        Runs per task instead of the sized one.
+    run_seconds : float, optional
+        The cost of one run (default: the estimate of :func:`pendulum_fmu.sizing.sweep_run_seconds`
+        for the first point).
 
     Returns
     -------
@@ -258,9 +292,32 @@ def batches(points: Sequence[SweepPoint], threads: int, batch_size: int | None =
     """
     if not points:
         return []
-    size = batch_size or MAX_BATCH
-    tasks = max(math.ceil(len(points) / size), 1 if batch_size else min(len(points), TASKS_PER_THREAD * threads))
+    if batch_size is None:
+        cost = run_seconds if run_seconds is not None else estimated_run_seconds(points[0])
+        batch_size = task_size(len(points), threads, cost)
+    tasks = math.ceil(len(points) / batch_size)
     return [list(points[i::tasks]) for i in range(tasks)]
+
+
+def estimated_run_seconds(point: SweepPoint) -> float:
+    """The sizing estimate of one run of ``point`` (before any run was measured)."""
+    from pendulum_fmu.sizing import sweep_run_seconds
+
+    return sweep_run_seconds(math.ceil(point.periods * point.points_per_period) + 1)
+
+
+def measured_run_seconds(client: Client, data: Any, points: Sequence[SweepPoint]) -> float:
+    """Load the FMU on every worker and time there one run of the sweep's middle point.
+
+    A run estimated longer than :data:`TASK_SECONDS` is not timed (it is a task of its own
+    anyway); the estimate is returned for it, and when every sample run failed.
+    """
+    from pendulum_fmu.sweep.worker import warm
+
+    estimate = estimated_run_seconds(points[len(points) // 2]) if points else 0.0
+    sample = points[len(points) // 2] if points and estimate < TASK_SECONDS else None
+    times = sorted(seconds for _, seconds in client.run(warm, data, sample).values() if seconds > 0)
+    return times[len(times) // 2] if times else estimate
 
 
 def execute(client: Client, fmu: Path, points: Sequence[SweepPoint],
@@ -281,7 +338,7 @@ def execute(client: Client, fmu: Path, points: Sequence[SweepPoint],
     progress : bool
         Show a progress bar (runs done, rate, time left) on stderr.
     batch_size : int, optional
-        Runs per task (default: about 8 tasks per worker thread, at most 64 runs each).
+        Runs per task (default: sized by the cost of a run measured on the workers, :func:`task_size`).
 
     Returns
     -------
@@ -291,21 +348,22 @@ def execute(client: Client, fmu: Path, points: Sequence[SweepPoint],
     from distributed import as_completed
     from tqdm import tqdm
 
-    from pendulum_fmu.sweep.worker import run_points, warm
+    from pendulum_fmu.sweep.worker import run_points
 
     data = fmu.read_bytes()
     # Ctrl-C only sets a flag (deferred_interrupt) and the loop below raises it between results:
     # a KeyboardInterrupt raised inside one of the client's blocking calls breaks Dask's own
     # clean-up (distributed 2026.8 then logs a NameError traceback from its event loop thread).
     with interrupt.deferred_interrupt():
-        client.run(warm, data)  # every worker loads the FMU now, not inside the timed first task
+        # every worker loads the FMU now, not inside the timed first task, and times one run
+        run_seconds = measured_run_seconds(client, data, points)
         # A key of its own (hash=False): a second sweep on the same client must not reuse the key
         # of the first one's data, which the scheduler may be releasing at that moment.
         shared = client.scatter(data, broadcast=True, hash=False)
         interrupt.check()
         start = time.perf_counter()
         futures = [client.submit(run_points, shared, batch, pure=False)
-                   for batch in batches(points, worker_threads(client), batch_size)]
+                   for batch in batches(points, worker_threads(client), batch_size, run_seconds)]
         # with_results: the client's event loop fetches each result; this thread only polls.
         finished = as_completed(futures, with_results=True)
         bar = tqdm(total=len(points), unit="run", desc="sweep", disable=not progress, file=sys.stderr,

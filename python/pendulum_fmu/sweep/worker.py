@@ -14,6 +14,7 @@ import math
 import os
 import tempfile
 import threading
+import time
 from collections.abc import Iterator
 from contextlib import contextmanager
 from pathlib import Path
@@ -80,10 +81,24 @@ def load_count() -> int:
     return _loads
 
 
-def warm(fmu_bytes: bytes) -> int:
-    """Load the FMU on this worker ahead of the first task; returns the process id."""
-    with borrowed_runner(fmu_bytes):
-        return os.getpid()
+def warm(fmu_bytes: bytes, sample: SweepPoint | None = None) -> tuple[int, float]:
+    """Load the FMU on this worker ahead of the first task, and time one run of ``sample``.
+
+    Returns
+    -------
+    tuple of (int, float)
+        The process id, and the wall time of the sample run in seconds (0 without a sample,
+        and for a sample that failed).
+    """
+    with borrowed_runner(fmu_bytes) as runner:
+        if sample is None:
+            return os.getpid(), 0.0
+        start = time.perf_counter()
+        try:
+            runner.run(sample.pendulum(), sample.method(), sample.grid())
+        except SimulationError:
+            return os.getpid(), 0.0
+        return os.getpid(), time.perf_counter() - start
 
 
 def row_of(point: SweepPoint, trajectory: Trajectory) -> dict[str, Any]:
