@@ -1,0 +1,123 @@
+"""Ctrl-C at random moments through the installed ``pendulum-fmu`` console script (issue 27).
+
+A terminal's Ctrl-C reaches the whole process group: the command, its Dask nanny and worker
+processes and multiprocessing's resource tracker. The console script's main module is
+imported again by every spawned worker (``python -m`` is not), which is where the command's
+own SIGINT handler once leaked into the workers. Each moment asserts: exit 130 within 5 s,
+one line on stderr, no traceback from any process, no ``.tmp`` file, and a table that holds
+exactly the runs of the journal.
+"""
+
+from __future__ import annotations
+
+import csv
+import os
+import random
+import shutil
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+
+MOMENTS = 50
+"""SIGINTs sent, at moments spread from 0.2 s to the end of an uninterrupted sweep."""
+LIMIT_S = 5.0
+"""From the signal to the exit."""
+SWEEP = ["sweep", "-a", "1:179:400", "-p", "2", "-j", "2", "-q", "--no-plots"]
+
+
+def console_script() -> Path:
+    """The installed ``pendulum-fmu`` beside this interpreter, or a skip naming the install command."""
+    path = Path(sys.executable).parent / "pendulum-fmu"
+    if not path.is_file():
+        pytest.skip("the pendulum-fmu console script is not installed: pip install -e .")
+    return path
+
+
+def start(command: list[str], cwd: Path) -> subprocess.Popen[str]:
+    """The command in a session of its own (a process group, as a terminal's job)."""
+    return subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                            start_new_session=True, cwd=cwd)
+
+
+def rows(path: Path) -> list[dict[str, str]]:
+    """The rows of a CSV table (none if the file is not there)."""
+    if not path.is_file():
+        return []
+    with path.open(newline="") as file:
+        return list(csv.DictReader(file))
+
+
+def journal_rows(path: Path) -> list[dict[str, str]]:
+    """The complete rows of the journal (a line cut short at the end is not one)."""
+    if not path.is_file():
+        return []
+    text = path.read_text()
+    complete = text[:text.rfind("\n") + 1]
+    return list(csv.DictReader(complete.splitlines()))
+
+
+def interrupted_at(command: list[str], cwd: Path, moment: float) -> tuple[int | None, float, str]:
+    """Send SIGINT to the command's group ``moment`` s after its start.
+
+    Returns
+    -------
+    tuple
+        The exit code (``None`` if it ended before the moment), the seconds from the signal
+        to the exit, and stderr.
+    """
+    process = start(command, cwd)
+    try:
+        process.wait(timeout=moment)
+        return None, 0.0, process.communicate()[1]
+    except subprocess.TimeoutExpired:
+        pass
+    os.killpg(process.pid, signal.SIGINT)
+    sent = time.monotonic()
+    try:
+        _, stderr = process.communicate(timeout=30)
+    except subprocess.TimeoutExpired:
+        os.killpg(process.pid, signal.SIGKILL)
+        process.communicate()
+        pytest.fail(f"a sweep interrupted {moment:.2f} s after its start still ran 30 s later")
+    return process.returncode, time.monotonic() - sent, stderr
+
+
+def test_ctrl_c_at_fifty_moments_through_the_console_script(fmu_path: Path, tmp_path: Path) -> None:
+    """Exit 130 within 5 s, one line, no traceback, no partial file, the finished runs kept."""
+    script = console_script()
+    fmu = tmp_path / "Pendulum.fmu"
+    shutil.copyfile(fmu_path, fmu)   # the checkout's build/ may be rebuilt meanwhile
+    whole = tmp_path / "whole"
+    began = time.monotonic()
+    done = subprocess.run([str(script), *SWEEP, "-o", str(whole), "--fmu", str(fmu)], capture_output=True,
+                          text=True, cwd=tmp_path, timeout=300)
+    length = time.monotonic() - began
+    assert done.returncode == 0, done.stderr
+    assert done.stderr == "", f"a sweep that ends normally logged its shutdown:\n{done.stderr}"
+    generator = random.Random(27)
+    moments = sorted(generator.uniform(0.2, length) for _ in range(MOMENTS))
+    interrupted = 0
+    for index, moment in enumerate(moments):
+        out = tmp_path / f"z{index}"
+        code, seconds, stderr = interrupted_at([str(script), *SWEEP, "-o", str(out), "--fmu", str(fmu)],
+                                               tmp_path, moment)
+        where = f"SIGINT at {moment:.2f} s of {length:.2f} s"
+        assert "Traceback" not in stderr, f"{where}:\n{stderr}"
+        if code is None:   # it had finished: nothing to interrupt
+            continue
+        interrupted += 1
+        lines = [line for line in stderr.splitlines() if line.strip()]
+        assert code == 130, f"{where}: exit {code}\n{stderr}"
+        assert seconds < LIMIT_S, f"{where}: the command took {seconds:.1f} s to stop"
+        assert len(lines) == 1 and lines[0].startswith("pendulum-fmu") and "interrupted" in lines[0], \
+            f"{where}:\n{stderr}"
+        assert not list(tmp_path.glob(f"z{index}/**/*.tmp")), f"{where}: a partial file is left"
+        table, journal = rows(out / "sweep.csv"), journal_rows(out / "runs.journal.csv")
+        if table:   # written on the interrupt: exactly the runs the journal holds
+            assert sorted(float(row["amplitude_deg"]) for row in table) == \
+                sorted(float(row["amplitude_deg"]) for row in journal), where
+    assert interrupted >= MOMENTS * 0.8, f"only {interrupted} of {MOMENTS} moments fell inside a sweep"
