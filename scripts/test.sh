@@ -14,6 +14,12 @@ run_step "$CMAKE_STAGES" cmake --build build-sanitize --parallel "$jobs"
 ctest --test-dir build-sanitize --output-on-failure
 echo "== valgrind memcheck of the FMI harness"
 harnesses=(test_fmi_api test_fmi_threads test_fmi3_api test_fmi_conformance test_fmi3_conformance)
+if ! command -v valgrind > /dev/null; then
+    # skipped with its install command, unless PENDULUM_NO_SKIP=1 (CI, whose install script provides it)
+    say "skipped: valgrind not found, install it with: apt-get install valgrind"
+    [ "${PENDULUM_NO_SKIP:-}" != 1 ] || { say "PENDULUM_NO_SKIP=1 requires every test to run"; exit 1; }
+    harnesses=()
+fi
 for k in "${!harnesses[@]}"; do
     say "valgrind $((k + 1)) of ${#harnesses[@]}: ${harnesses[k]} ..."
     valgrind --quiet --error-exitcode=1 --leak-check=full --errors-for-leak-kinds=all \

@@ -21,6 +21,8 @@ from dataclasses import dataclass
 from pathlib import Path
 
 INSTALL = "pip install -r python/requirements.lock (libcosimpy==0.0.6, ecospy==0.7.2, tbb==2023.2.0)"
+FMUTOOL_INSTALL = "pip install fmu_manipulation_toolbox==2.0 (python/requirements.lock)"
+"""How to get fmutool, the FMU Manipulation Toolbox's checker."""
 STEP = 0.01
 STEPS = 1000
 VALUE_REFERENCES = {"L": 1, "g": 2, "theta": 3, "omega": 5, "theta_exact": 7, "omega_exact": 8}

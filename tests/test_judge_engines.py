@@ -26,7 +26,7 @@ import pytest
 from fmpy import simulate_fmu
 from fmpy.util import write_csv
 
-from engine_runs import INSTALL, ecos_environment, missing, run_ecos, run_libcosim, tbb_library_folder
+from engine_runs import FMUTOOL_INSTALL, ecos_environment, missing, run_ecos, run_libcosim, tbb_library_folder
 from pendulum_fmu.judge import ReadError, judge
 
 THETA0 = math.radians(80.0)
@@ -145,7 +145,7 @@ def test_ecospy_imports_in_the_environment_engine_runs_gives_it(monkeypatch: pyt
 def fmutool() -> str:
     path = shutil.which("fmutool") or str(Path(sys.executable).with_name("fmutool"))
     if not Path(path).exists():
-        pytest.skip(f"fmutool not found: {INSTALL}")
+        pytest.skip(f"fmutool not found: {FMUTOOL_INSTALL}")
     return path
 
 
