@@ -51,8 +51,9 @@ def write_html(out: Path, rows: list[tuple[str, ...]], periods: float) -> Path:
                                  "it matches Figure 3 to about 1e-12 rad, which Figure 5 shows"),
         Figure("fig5_overlay.png", "Figure 5: top, the last two periods, the numerical solution (thin line) inside "
                                    "the exact one (wide grey band); bottom, |theta - theta_exact| over the whole "
-                                   "run on a log axis, Co-Simulation (rkn) and Model Exchange (CVODE), errors "
-                                   "exactly 0 as ticks on the bottom edge"),
+                                   "run on a log axis, Co-Simulation (rkn) and Model Exchange (CVODE), both against "
+                                   "t/T0 as in Figures 3 and 4; errors exactly 0 as ticks in each interface's "
+                                   "colour, CS's on the bottom edge, ME's a row above"),
         Figure("period_ratio.png", "The period ratio T/T0 against amplitude (left, linear) and its logarithmic "
                                    "growth toward 180 deg (right, against the distance 180 deg - theta0, which "
                                    "shrinks to the right), from the FMU's period output; circles: periods measured "

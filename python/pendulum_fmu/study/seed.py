@@ -1,7 +1,8 @@
 """The seed's study: amplitudes 75-90 deg, Co-Simulation and Model Exchange, numeric vs exact.
 
 The seed is Arwin Tsalas, "Simulasi model matematika gerak pendulum sederhana" (Universitas
-Negeri Surabaya): its Figures 3-5 show theta against w0 t at 75, 80, 85 and 90 deg. Every run
+Negeri Surabaya): its Figures 3-5 show theta against w0 t at 75, 80, 85 and 90 deg (redrawn
+here against t/T0, in small-angle periods, so that the period's growth shows). Every run
 goes through :class:`~pendulum_fmu.fmu.runner.FmuRunner` (the FMU extracted and loaded once).
 """
 
