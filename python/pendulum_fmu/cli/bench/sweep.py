@@ -7,12 +7,12 @@ import sys
 import statistics
 
 import pendulum_fmu.bench.sweep as bench_sweep
-from pendulum_fmu.bench.sweep import bench_points, measure
+from pendulum_fmu.bench.sweep import bench_points, cores, measure
 from pendulum_fmu.cli.arguments import add_fmu_argument, integer, plain_text, positive
 from pendulum_fmu.cli.extras import require_extra
 
 NAME = "sweep"
-HELP = "sweep throughput, runs/s with 1 and 2 Dask workers, and the speed-up"
+HELP = "sweep throughput, runs/s with 1 and 2 Dask workers, the speed-up, efficiency and cost per task"
 DESCRIPTION = plain_text(bench_sweep.__doc__ or HELP)
 EPILOG = """\
 examples:
@@ -57,10 +57,12 @@ def run(args: argparse.Namespace) -> int:
     with FmuRunner(fmu) as runner:  # a run that fails here would be timed as a fast one: refuse now
         first = points[0]
         runner.run(first.pendulum(), first.method(), first.grid())
+    physical, logical, usable = cores()
     print(f"sweep of {len(points)} runs (amplitudes 1-179 deg from rest, {args.periods:g} periods, dopri5 "
           f"at 1e-8), median of {args.repeat}; FMU {fmu}")
+    print(f"cores: {physical or '?'} physical, {logical or '?'} logical, {usable} usable by this process")
     print(f"{'loop':>6}  {'workers':>7}  {'runs':>6}  {'seconds':>8}  {'runs/s':>8}  {'per worker':>10}  "
-          f"{'speed-up':>8}  {'startup (s)':>11}")
+          f"{'speed-up':>8}  {'efficiency':>10}  {'ms/task':>7}  {'startup (s)':>11}")
     results = []
     for loop in loops:
         first = None
@@ -68,12 +70,15 @@ def run(args: argparse.Namespace) -> int:
             result = measure(fmu, points, workers, args.repeat, loop)
             results.append(result)
             first = first or result
+            speedup = result.rate / first.rate
             print(f"{loop:>6}  {workers:>7}  {result.runs:>6}  {statistics.median(result.seconds):>8.3f}  "
-                  f"{result.rate:>8.1f}  {result.rate / workers:>10.1f}  {result.rate / first.rate:>7.2f}x  "
+                  f"{result.rate:>8.1f}  {result.rate / workers:>10.1f}  {speedup:>7.2f}x  "
+                  f"{speedup * first.workers / workers:>10.2f}  {result.task_seconds * 1e3:>7.2f}  "
                   f"{result.startup:>11.2f}", flush=True)
     for result in results:
         print(f"bench_sweep loop={result.loop} workers={result.workers} runs={result.runs} rate={result.rate:.2f} "
-              f"per_worker={result.rate / result.workers:.2f} seconds={','.join(f'{s:.3f}' for s in result.seconds)}")
+              f"per_worker={result.rate / result.workers:.2f} task_ms={result.task_seconds * 1e3:.3f} "
+              f"seconds={','.join(f'{s:.3f}' for s in result.seconds)}")
     by_key = {(r.loop, r.workers): r for r in results}
     for workers in args.workers:
         if ("c", workers) in by_key and ("python", workers) in by_key:
