@@ -186,3 +186,23 @@ def test_page_screenshot_is_not_blank(site: Path, shots: Path, page: str) -> Non
         dark = sum(article.histogram()[:128]) / (article.width * article.height)
     assert spread > 15, f"{page}: the screenshot's article is blank (grey-level spread {spread:.1f}); {shot}"
     assert dark > 0.005, f"{page}: the screenshot's article has almost no text ({dark:.2%} dark pixels); {shot}"
+
+
+def test_maths_hook_leaves_code_and_prices_alone() -> None:
+    """The hook's rules on a sample: formulas become MathML, code and a lone $ stay as written."""
+    import importlib.util  # noqa: PLC0415
+
+    import markdown  # noqa: PLC0415
+
+    spec = importlib.util.spec_from_file_location("maths_hook", DOCS / "hooks" / "maths.py")
+    assert spec is not None and spec.loader is not None
+    hook = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(hook)
+    md = markdown.Markdown(extensions=[hook.MathExtension(), "fenced_code"])
+    html = md.convert("Energy $H = \\omega^2/2$ and `echo $HOME` cost 5 $ each.\n\n"
+                      "$$\nT = \\frac{4 K(m)}{w_0}\n$$\n\n```sh\n$$\nx=$PATH\n```\n")
+    assert html.count("<math") == 2 and 'display="block"' in html
+    assert "<code>echo $HOME</code>" in html and "cost 5 $ each" in html
+    assert "$$\nx=$PATH" in html, "a fenced block's $$ was taken for a formula"
+    with pytest.raises(ValueError, match="cannot render the formula"):
+        markdown.Markdown(extensions=[hook.MathExtension()]).convert("$\\frac{1}{$ and $x$")
