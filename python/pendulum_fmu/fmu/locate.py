@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import os
 import shutil
+import sys
 import zipfile
 from functools import lru_cache
 from pathlib import Path
@@ -154,6 +155,10 @@ def locate_fmu(explicit: Path | None = None, build: bool = True, fmi_version: in
     if shutil.which("cmake") is None:
         raise UsageError("--fmu", f"{fmu} is missing or out of date and cmake is not on PATH to build it: "
                                   "install cmake, pass --fmu PATH or set PENDULUM_FMU")
+    # a build takes from seconds to minutes: say so, on stderr, before it starts
+    print(f"pendulum-fmu: {fmu.relative_to(REPO_ROOT) if fmu.is_relative_to(REPO_ROOT) else fmu} is "
+          f"{'out of date' if fmu.is_file() else 'missing'}: building it with CMake (a minute or more) ...",
+          file=sys.stderr, flush=True)
     try:
         build_fmu(DEFAULT_BUILD_DIR)
     except RuntimeError as error:
