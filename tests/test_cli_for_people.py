@@ -313,8 +313,9 @@ def test_installed_bench_exact_leaves_out_the_c_columns(installed: Path, folder:
 def test_bench_solvers_quick_passes_with_an_honest_report(tmp_path: Path) -> None:
     import sys
 
-    done = subprocess.run([sys.executable, "-m", "pendulum_fmu", "bench", "solvers", "--quick", "--out",
-                           str(tmp_path)], cwd=REPO, capture_output=True, text=True, timeout=600, check=False)
+    driver = REPO / "build" / "tests" / "c" / "bench_solvers"
+    done = subprocess.run([sys.executable, "-m", "pendulum_fmu", "bench", "solvers", "--quick", "--driver", str(driver),
+                           "--out", str(tmp_path)], cwd=REPO, capture_output=True, text=True, timeout=600, check=False)
     assert done.returncode == 0, done.stdout[-3000:] + done.stderr[-2000:]
     report = (tmp_path / "report.md").read_text()
     t1 = next(line for line in report.splitlines() if line.startswith("| T1"))
