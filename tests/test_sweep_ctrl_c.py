@@ -121,3 +121,18 @@ def test_ctrl_c_at_fifty_moments_through_the_console_script(fmu_path: Path, tmp_
             assert sorted(float(row["amplitude_deg"]) for row in table) == \
                 sorted(float(row["amplitude_deg"]) for row in journal), where
     assert interrupted >= MOMENTS * 0.8, f"only {interrupted} of {MOMENTS} moments fell inside a sweep"
+
+
+@pytest.mark.parametrize("moment", [0.3, 1.0, 1.8, 2.6, 3.5, 5.0])
+def test_ctrl_c_in_bench_sweep_through_the_console_script(fmu_path: Path, tmp_path: Path, moment: float) -> None:
+    """``bench sweep`` starts and closes a cluster per worker count: any moment, one line and 130."""
+    script = console_script()
+    command = [str(script), "bench", "sweep", "--runs", "300", "--periods", "2", "--workers", "1", "2",
+               "--repeat", "1", "--loop", "c", "--fmu", str(fmu_path)]
+    code, seconds, stderr = interrupted_at(command, tmp_path, moment)
+    assert "Traceback" not in stderr, stderr
+    if code is None:
+        pytest.skip(f"bench sweep ended within {moment} s: nothing to interrupt")
+    lines = [line for line in stderr.splitlines() if line.strip()]
+    assert code == 130 and seconds < LIMIT_S, (code, seconds, stderr)
+    assert len(lines) == 1 and lines[0].startswith("pendulum-fmu") and lines[0].endswith("interrupted"), stderr
