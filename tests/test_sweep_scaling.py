@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import re
 import statistics
+from collections.abc import Sequence
 from pathlib import Path
 
 import pytest
@@ -13,6 +14,7 @@ import pytest
 from pendulum_fmu.bench.sweep import bench_points, cores, measure, task_cost
 from pendulum_fmu.cli.main import main
 from pendulum_fmu.sweep.cluster import TASK_SECONDS, dask_client, execute, task_size
+from pendulum_fmu.sweep.grid import SweepPoint
 
 
 def test_a_sweep_sends_tasks_of_a_tenth_of_a_second(fmu_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
@@ -23,7 +25,9 @@ def test_a_sweep_sends_tasks_of_a_tenth_of_a_second(fmu_path: Path, monkeypatch:
     measured: list[float] = []
     dealt = cluster.batches
 
-    def recording(points, threads, batch_size=None, run_seconds=None):  # type: ignore[no-untyped-def]
+    def recording(points: Sequence[SweepPoint], threads: int, batch_size: int | None = None,
+                  run_seconds: float | None = None) -> list[list[SweepPoint]]:
+        assert run_seconds is not None
         measured.append(run_seconds)
         parts = dealt(points, threads, batch_size, run_seconds)
         sizes.append([len(part) for part in parts])
