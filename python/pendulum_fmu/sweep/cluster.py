@@ -40,8 +40,8 @@ def sigint_blocked() -> Iterator[None]:
     leave it to this process, which shuts them down. An interrupt that arrives meanwhile is not
     lost: it stays pending and is delivered to this thread as the block ends.
     """
-    if threading.current_thread() is not threading.main_thread():
-        yield
+    if threading.current_thread() is not threading.main_thread() or not hasattr(signal, "pthread_sigmask"):
+        yield   # Windows has no signal masks (nor process groups to send Ctrl-C to)
         return
     # multiprocessing starts its resource tracker from the first thread that spawns a process,
     # and then *unblocks* SIGINT in that thread: started here first, it leaves the mask alone
