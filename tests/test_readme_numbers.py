@@ -155,6 +155,25 @@ def test_certificate_table_counts_are_the_printed_ones() -> None:
     assert int(silent) == len(unwarned) == 0, f"runs beyond the bound without a warning: {unwarned}"
 
 
+def test_solver_evaluation_ratio_is_the_printed_one(fmu_path: Path, tmp_path: Path) -> None:
+    """``bench solvers --problems P1``: rkn's evaluations over DOP853's at the same error. The
+    counts do not depend on the machine; the run takes about 4.5 minutes on two shared cores."""
+    driver = TESTS_C / "bench_solvers"
+    assert driver.exists(), f"{driver} is missing: bash scripts/build-fmu.sh builds it"
+    figure, held = headline("default solver `rkn` against DOP853")
+    assert held == "test"
+    low, high = re.findall(NUMBER, figure)[:2]
+    printed = cli("bench", "solvers", "--fmu", str(fmu_path), "--driver", str(driver), "--problems", "P1",
+                  "--out", str(tmp_path), timeout=1200)
+    table = printed.split("| error | rkn | solve_ivp DOP853 | ode dop853 | ratio |", 1)
+    assert len(table) == 2, f"bench solvers no longer prints the rkn / DOP853 table:\n{printed[-2000:]}"
+    ratios = [float(line.strip("|").split("|")[-1]) for line in table[1].strip().splitlines()[1:]
+              if line.startswith("| 1e-")]
+    assert len(ratios) == 9, f"{len(ratios)} error levels, not 1e-4 .. 1e-12"
+    assert agrees(low, min(ratios)) and agrees(high, max(ratios)), \
+        f"README.md says {figure}; bench solvers prints {min(ratios)} to {max(ratios)}"
+
+
 def test_judge_example_prints_the_quoted_diagnosis(fmu_path: Path, tmp_path: Path) -> None:
     """The README's ME judge example on fmpy's explicit Euler at h = 0.01 (its me.csv)."""
     quoted = re.search(rf"explicit Euler at h = 0.01 reproduces the file to ({NUMBER})", README)
