@@ -174,6 +174,23 @@ def test_solver_evaluation_ratio_is_the_printed_one(fmu_path: Path, tmp_path: Pa
         f"README.md says {figure}; bench solvers prints {min(ratios)} to {max(ratios)}"
 
 
+def test_speed_row_error_and_ratio_direction(fmu_path: Path) -> None:
+    """``bench speed``: the error the speed row is measured at is the printed one (it does not
+    depend on the machine); its timings are measured, and only their direction is held: the
+    package's runner at least 5 times faster than fmpy's ``simulate_fmu`` (the README: 20x)."""
+    figure, held = headline("100 periods from Python at error")
+    assert held == "measured"
+    quoted_error = re.search(rf"at error ({NUMBER})", README).group(1)
+    printed = cli("bench", "speed", "--repeat", "3", "--fmu", str(fmu_path), timeout=600)
+    runs = {m.group(1): (float(m.group(2)), float(m.group(3))) for m in re.finditer(
+        rf"bench_speed method='([^']+)' best_ms=({NUMBER}) median_ms={NUMBER} error=({NUMBER})", printed)}
+    runner_ms, runner_error = runs["package, C loop (FmuRunner)"]
+    assert agrees(quoted_error, runner_error), f"README.md says error {quoted_error}; bench speed prints {runner_error}"
+    fmpy_ms, _ = runs["fmpy simulate_fmu"]
+    assert fmpy_ms / runner_ms > 5, f"the runner is only {fmpy_ms / runner_ms:.1f} times faster than simulate_fmu"
+    assert "20x fmpy's `simulate_fmu`" in figure
+
+
 def test_judge_example_prints_the_quoted_diagnosis(fmu_path: Path, tmp_path: Path) -> None:
     """The README's ME judge example on fmpy's explicit Euler at h = 0.01 (its me.csv)."""
     quoted = re.search(rf"explicit Euler at h = 0.01 reproduces the file to ({NUMBER})", README)
