@@ -60,6 +60,28 @@ def journal_rows(path: Path) -> list[dict[str, str]]:
     return list(csv.DictReader(complete.splitlines()))
 
 
+def catches_sigint(pid: int) -> bool:
+    """Whether the process has a SIGINT handler yet (Linux: the SigCgt mask of /proc/PID/status)."""
+    try:
+        status = Path(f"/proc/{pid}/status").read_text()
+    except OSError:
+        return True
+    caught = next((line.split()[1] for line in status.splitlines() if line.startswith("SigCgt:")), None)
+    return caught is None or bool(int(caught, 16) & (1 << (signal.SIGINT - 1)))
+
+
+def wait_for_the_interpreter(process: subprocess.Popen[str], limit: float = 10.0) -> None:
+    """Wait until the process's interpreter has set its SIGINT handler (at most ``limit`` s).
+
+    Before that SIGINT kills any Python program, silently, with exit -2: a gap of the
+    interpreter's own start, a few hundredths of a second, which a loaded machine stretched
+    to seconds once (docs/for-people.md). The moments here are those of the command.
+    """
+    deadline = time.monotonic() + limit
+    while process.poll() is None and not catches_sigint(process.pid) and time.monotonic() < deadline:
+        time.sleep(0.005)
+
+
 def interrupted_at(command: list[str], cwd: Path, moment: float) -> tuple[int | None, float, str]:
     """Send SIGINT to the command's group ``moment`` s after its start.
 
@@ -75,6 +97,9 @@ def interrupted_at(command: list[str], cwd: Path, moment: float) -> tuple[int | 
         return None, 0.0, process.communicate()[1]
     except subprocess.TimeoutExpired:
         pass
+    wait_for_the_interpreter(process)
+    if process.poll() is not None:
+        return None, 0.0, process.communicate()[1]
     os.killpg(process.pid, signal.SIGINT)
     sent = time.monotonic()
     try:
@@ -84,6 +109,28 @@ def interrupted_at(command: list[str], cwd: Path, moment: float) -> tuple[int | 
         process.communicate()
         pytest.fail(f"a sweep interrupted {moment:.2f} s after its start still ran 30 s later")
     return process.returncode, time.monotonic() - sent, stderr
+
+
+def interrupted_inside(command: list[str], cwd: Path, moment: float,
+                       out: Path | None = None) -> tuple[int, float, str, float]:
+    """:func:`interrupted_at`, at 0.6 times the moment again while the command ends before it.
+
+    ``out``, the command's output folder, is removed before each try (a sweep would resume).
+
+    Returns
+    -------
+    tuple
+        The exit code, the seconds from the signal to the exit, stderr, and the moment used.
+    """
+    for _ in range(6):
+        if out is not None:
+            shutil.rmtree(out, ignore_errors=True)
+        code, seconds, stderr = interrupted_at(command, cwd, moment)
+        assert "Traceback" not in stderr, f"uninterrupted:\n{stderr}"
+        if code is not None:
+            return code, seconds, stderr, moment
+        moment = max(0.2, 0.6 * moment)
+    pytest.fail(f"the command ended within {moment:.2f} s six times: nothing to interrupt")
 
 
 def test_ctrl_c_at_fifty_moments_through_the_console_script(fmu_path: Path, tmp_path: Path) -> None:
@@ -100,16 +147,12 @@ def test_ctrl_c_at_fifty_moments_through_the_console_script(fmu_path: Path, tmp_
     assert done.stderr == "", f"a sweep that ends normally logged its shutdown:\n{done.stderr}"
     generator = random.Random(27)
     moments = sorted(generator.uniform(0.2, length) for _ in range(MOMENTS))
-    interrupted = 0
     for index, moment in enumerate(moments):
         out = tmp_path / f"z{index}"
-        code, seconds, stderr = interrupted_at([str(script), *SWEEP, "-o", str(out), "--fmu", str(fmu)],
-                                               tmp_path, moment)
+        code, seconds, stderr, moment = interrupted_inside(
+            [str(script), *SWEEP, "-o", str(out), "--fmu", str(fmu)], tmp_path, moment, out)
         where = f"SIGINT at {moment:.2f} s of {length:.2f} s"
         assert "Traceback" not in stderr, f"{where}:\n{stderr}"
-        if code is None:   # it had finished: nothing to interrupt
-            continue
-        interrupted += 1
         lines = [line for line in stderr.splitlines() if line.strip()]
         assert code == 130, f"{where}: exit {code}\n{stderr}"
         assert seconds < LIMIT_S, f"{where}: the command took {seconds:.1f} s to stop"
@@ -120,7 +163,6 @@ def test_ctrl_c_at_fifty_moments_through_the_console_script(fmu_path: Path, tmp_
         if table:   # written on the interrupt: exactly the runs the journal holds
             assert sorted(float(row["amplitude_deg"]) for row in table) == \
                 sorted(float(row["amplitude_deg"]) for row in journal), where
-    assert interrupted >= MOMENTS * 0.8, f"only {interrupted} of {MOMENTS} moments fell inside a sweep"
 
 
 @pytest.mark.parametrize("moment", [0.3, 1.0, 1.8, 2.6, 3.5, 5.0])
@@ -129,10 +171,8 @@ def test_ctrl_c_in_bench_sweep_through_the_console_script(fmu_path: Path, tmp_pa
     script = console_script()
     command = [str(script), "bench", "sweep", "--runs", "300", "--periods", "2", "--workers", "1", "2",
                "--repeat", "1", "--loop", "c", "--fmu", str(fmu_path)]
-    code, seconds, stderr = interrupted_at(command, tmp_path, moment)
+    code, seconds, stderr, moment = interrupted_inside(command, tmp_path, moment)
     assert "Traceback" not in stderr, stderr
-    if code is None:
-        pytest.skip(f"bench sweep ended within {moment} s: nothing to interrupt")
     lines = [line for line in stderr.splitlines() if line.strip()]
     assert code == 130 and seconds < LIMIT_S, (code, seconds, stderr)
     assert len(lines) == 1 and lines[0].startswith("pendulum-fmu") and lines[0].endswith("interrupted"), stderr
