@@ -63,3 +63,32 @@ def test_the_commands_handler_is_never_set_in_a_spawned_process(tmp_path: Path) 
     done = subprocess.run([sys.executable, str(script)], capture_output=True, text=True, timeout=120)
     assert done.returncode == 0, done.stderr
     assert done.stdout.split() == ["_sticky", "SIG_IGN"]
+
+
+LATE = """
+import os, signal, sys
+import pendulum_fmu.cli  # the command's handler, its quiet unraisable hook and exit hook
+from pendulum_fmu.interrupt import exit_quietly_on_interrupt
+
+class Finalized:
+    def __del__(self):
+        raise KeyboardInterrupt  # what Ctrl-C during a garbage collector's callback does
+
+Finalized()  # collected at once: 'Exception ignored in' would be printed without the hook
+print("work done", flush=True)
+if sys.argv[1] == "late":
+    exit_quietly_on_interrupt("pendulum-fmu x: interrupted\\n")
+    os.kill(os.getpid(), signal.SIGINT)  # after the work, while the program ends
+"""
+
+
+@pytest.mark.parametrize("when", ["late", "never"])
+def test_an_interrupt_as_the_command_ends_is_one_line_and_130(tmp_path: Path, when: str) -> None:
+    script = tmp_path / "late.py"
+    script.write_text(LATE)
+    done = subprocess.run([sys.executable, str(script), when], capture_output=True, text=True, timeout=120)
+    assert done.stdout == "work done\n"
+    if when == "late":
+        assert (done.returncode, done.stderr) == (130, "pendulum-fmu x: interrupted\n")
+    else:
+        assert (done.returncode, done.stderr) == (0, "")

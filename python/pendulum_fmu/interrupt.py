@@ -16,12 +16,15 @@ the run leaves the block, whatever else the run raised on the way.
 from __future__ import annotations
 
 import _signal
+import atexit
+import os
 import signal
 import sys
 import threading
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from types import FrameType
+from typing import Any
 
 _flag: list[bool] = [False]
 """``[True]`` once SIGINT arrived inside :func:`deferred_interrupt` (a list: cheap to test in a loop)."""
@@ -118,7 +121,58 @@ def default_dispositions() -> None:
     """
     if threading.current_thread() is not threading.main_thread():
         return
-    signal.signal(signal.SIGINT, signal.SIG_IGN if spawned_child() else _sticky)
+    if spawned_child():
+        signal.signal(signal.SIGINT, signal.SIG_IGN)
+        return
+    signal.signal(signal.SIGINT, _sticky)
+    if not getattr(sys.unraisablehook, "_pendulum_fmu", False):
+        sys.unraisablehook = _quiet_unraisable(sys.unraisablehook)
+        atexit.register(_leave)  # first registered, last run (see exit_quietly_on_interrupt)
+
+
+def _quiet_unraisable(previous: Callable[[Any], object]) -> Callable[[Any], object]:
+    """``sys.unraisablehook`` that says nothing of a ``KeyboardInterrupt``.
+
+    Ctrl-C can arrive while the garbage collector runs a weak reference's callback or a
+    ``__del__``: Python cannot raise the ``KeyboardInterrupt`` there and printed "Exception
+    ignored in: ..." with its traceback. ``_sticky`` has set the flag, which the command
+    raises at its next check (at the latest as its subcommand returns): one line, exit 130.
+    Any other error goes to the hook it replaces.
+    """
+    def hook(unraisable: Any) -> None:
+        if not isinstance(unraisable.exc_value, KeyboardInterrupt):
+            previous(unraisable)
+
+    hook._pendulum_fmu = True  # type: ignore[attr-defined]
+    return hook
+
+
+def exit_quietly_on_interrupt(line: str) -> None:
+    """From now on SIGINT only sets the flag, and the program exits with 130 and ``line`` if it is set.
+
+    For the command after its work is done: an interrupt while the interpreter shuts down
+    (threads joined, modules torn down) would raise where nothing can catch it. The exit
+    hook, registered when the command set its handler and so run after every later one
+    (the FMU runners' clean-up included), writes ``line`` and ends the process with 130:
+    such an interrupt is neither lost nor a traceback. Main thread only.
+    """
+    if threading.current_thread() is not threading.main_thread():
+        return
+    _signal.signal(signal.SIGINT, _note)
+    _last_words[:] = [line]
+
+
+_last_words: list[str] = []
+"""The line :func:`_leave` writes; empty until :func:`exit_quietly_on_interrupt`."""
+
+
+def _leave() -> None:
+    """The exit hook of :func:`exit_quietly_on_interrupt`."""
+    if _last_words and _flag[0]:
+        sys.stdout.flush()
+        sys.stderr.write(_last_words[0])
+        sys.stderr.flush()
+        os._exit(130)
 
 
 def spawned_child() -> bool:

@@ -20,7 +20,7 @@ from pendulum_fmu.cli import animate, bench, compare, completion, cross_check, j
 from pendulum_fmu.cli.arguments import resolve_fmu
 from pendulum_fmu.errors import BuildError, SimulationError, UsageError
 from pendulum_fmu.interrupt import check as check_interrupt
-from pendulum_fmu.interrupt import default_dispositions
+from pendulum_fmu.interrupt import default_dispositions, exit_quietly_on_interrupt
 from pendulum_fmu.interrupt import forget as forget_interrupt
 
 COMMANDS: tuple[ModuleType, ...] = (simulate, compare, study, animate, sweep, bench, judge, cross_check, completion)
@@ -138,10 +138,15 @@ def main(argv: list[str] | None = None) -> int:
         print("\npendulum-fmu: interrupted", file=sys.stderr)
         return 130
     subparser: argparse.ArgumentParser = args.subparser
+    hint = "; run the same command again to resume" if args.command == "sweep" else ""
     try:
         resolve_fmu(args)
         check_interrupt()
-        return int(args.handler(args))
+        code = int(args.handler(args))
+        check_interrupt()  # one a garbage collector's callback could not raise (interrupt._quiet_unraisable)
+        if argv is None:   # the program itself: an interrupt from here to its exit is one line too
+            exit_quietly_on_interrupt(f"\n{subparser.prog}: interrupted{hint}\n")
+        return code
     except UsageError as error:
         subparser.error(str(error))  # one line: "error: argument ...", exit 2
     except (BuildError, SimulationError) as error:
@@ -153,7 +158,6 @@ def main(argv: list[str] | None = None) -> int:
         return 1
     except KeyboardInterrupt:
         forget_interrupt()
-        hint = "; run the same command again to resume" if args.command == "sweep" else ""
         print(f"\n{subparser.prog}: interrupted{hint}", file=sys.stderr)
         return 130
     except Exception as error:  # noqa: BLE001 -- the promise is one line, never a traceback
