@@ -111,3 +111,28 @@ def test_large_arrays_are_split_over_the_usable_cores_and_small_ones_are_not(mon
     monkeypatch.setattr(library, "_library", Recording)
     exact(0.5, 0.0, 1.0, 9.81, np.linspace(0.0, 1.0, 1000), workers=2)
     assert len(seen) == 2 and threading.current_thread().name in seen, seen
+
+
+def _exact_in_a_forked_child(queue: "multiprocessing.Queue[float]") -> None:
+    t = np.linspace(0.0, 10.0, 300_000)
+    theta, _ = exact(np.radians(170.0), 0.0, 1.0, 9.81, t, workers=2)
+    queue.put(float(theta[-1]))
+
+
+def test_a_forked_child_evaluates_on_threads_of_its_own() -> None:
+    """A process forked after exact() ran on threads inherits the pool but not its threads:
+    the child must make its own pool, not wait for ever on the parent's."""
+    import multiprocessing
+
+    t = np.linspace(0.0, 10.0, 300_000)
+    theta, _ = exact(np.radians(170.0), 0.0, 1.0, 9.81, t, workers=2)  # the parent's pool now exists
+    context = multiprocessing.get_context("fork")
+    queue = context.Queue()
+    child = context.Process(target=_exact_in_a_forked_child, args=(queue,))
+    child.start()
+    child.join(60)
+    hung = child.is_alive()
+    if hung:
+        child.kill()
+    assert not hung, "the forked child hung in exact()"
+    assert child.exitcode == 0 and queue.get(timeout=5) == float(theta[-1])

@@ -185,6 +185,8 @@ def chunks(points: int, threads: int) -> list[tuple[int, int]]:
 
 
 _pool: list[ThreadPoolExecutor] = []
+# a forked child inherits the pool without its threads: it makes its own
+os.register_at_fork(after_in_child=_pool.clear)
 
 
 def _in_threads(evaluate: Callable[[int, int], object], points: int, threads: int) -> None:
