@@ -226,7 +226,7 @@ def test_a_run_too_large_for_memory_is_refused_at_once(installed: Path, folder: 
     assert time.monotonic() - start < 10
     # 1e6 s / T(75 deg) = 1e6 / 2.2447 s periods, 10000 points each: 4.45e9 points.
     assert re.search(r"this run would record 4\.45 billion output points, about [\d.]+ [TG]B of memory", line), line
-    assert "lower -n/--points-per-period" in line
+    assert "half the" in line and "lower -T/--stop-time or -n/--points-per-period" in line, line
 
 
 def test_a_sweep_of_a_hundred_million_runs_is_refused_at_once(installed: Path, folder: Path) -> None:
