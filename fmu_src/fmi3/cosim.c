@@ -3,27 +3,7 @@
  * Co-Simulation, no intermediate update and no early return (README, FMI 3.0). */
 #include "layer.h"
 
-fmi3Instance fmi3InstantiateCoSimulation(fmi3String instanceName, fmi3String instantiationToken,
-                                         fmi3String resourcePath, fmi3Boolean visible, fmi3Boolean loggingOn,
-                                         fmi3Boolean eventModeUsed, fmi3Boolean earlyReturnAllowed,
-                                         const fmi3ValueReference requiredIntermediateVariables[],
-                                         size_t nRequiredIntermediateVariables,
-                                         fmi3InstanceEnvironment instanceEnvironment,
-                                         fmi3LogMessageCallback logMessage,
-                                         fmi3IntermediateUpdateCallback intermediateUpdate) {
-    (void)resourcePath, (void)visible, (void)earlyReturnAllowed, (void)requiredIntermediateVariables;
-    (void)intermediateUpdate; /* providesIntermediateUpdate="false": never called */
-    if (eventModeUsed || nRequiredIntermediateVariables > 0) {
-        if (logMessage != NULL) {
-            logMessage(instanceEnvironment, fmi3Error, "logStatusError",
-                       eventModeUsed ? "fmi3InstantiateCoSimulation: eventModeUsed, but hasEventMode is false"
-                                     : "fmi3InstantiateCoSimulation: the model has no intermediate variables");
-        }
-        return NULL;
-    }
-    return fmi3_instantiate("fmi3InstantiateCoSimulation", instanceName, instantiationToken,
-                            INTERFACE_CO_SIMULATION, loggingOn, instanceEnvironment, logMessage);
-}
+DEFINE_FMI3_INSTANTIATE_CO_SIMULATION
 
 fmi3Status fmi3EnterStepMode(fmi3Instance instance) {
     if (!instance_allowed_for(instance, "fmi3EnterStepMode", INTERFACE_CO_SIMULATION, 0)) {
@@ -43,22 +23,4 @@ fmi3Status fmi3GetOutputDerivatives(fmi3Instance instance, const fmi3ValueRefere
                                                    nValueReferences, orders, values);
 }
 
-fmi3Status fmi3DoStep(fmi3Instance instance, fmi3Float64 currentCommunicationPoint, fmi3Float64 communicationStepSize,
-                      fmi3Boolean noSetFMUStatePriorToCurrentPoint, fmi3Boolean *eventHandlingNeeded,
-                      fmi3Boolean *terminateSimulation, fmi3Boolean *earlyReturn, fmi3Float64 *lastSuccessfulTime) {
-    Instance *inst = instance;
-    Status status;
-    (void)noSetFMUStatePriorToCurrentPoint; /* the solver state is plain data: nothing to drop */
-    if (inst != NULL && (eventHandlingNeeded == NULL || terminateSimulation == NULL || earlyReturn == NULL ||
-                         lastSuccessfulTime == NULL)) {
-        return (fmi3Status)instance_fail(inst, "fmi3DoStep", "an output argument is NULL");
-    }
-    status = instance_do_step(inst, "fmi3DoStep", currentCommunicationPoint, communicationStepSize);
-    if (inst != NULL && (status == STATUS_OK || status == STATUS_WARNING)) {
-        *eventHandlingNeeded = fmi3False;
-        *terminateSimulation = fmi3False;
-        *earlyReturn = fmi3False;
-        *lastSuccessfulTime = inst->data.time;
-    }
-    return (fmi3Status)status;
-}
+DEFINE_FMI3_DO_STEP(instance_do_step)

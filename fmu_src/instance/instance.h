@@ -30,11 +30,14 @@ typedef enum {
 typedef struct Instance Instance;
 typedef struct StateNode StateNode; /* an FMU state handed out (instance/state.c) */
 
-/* What the FMI layer supplies: its host's logger and memory, behind one signature. */
+/* What the FMI layer supplies: its host's logger and memory, behind one signature, and a
+ * pointer to the host's callbacks, so that one set of these functions serves every layer of
+ * an FMI version (fmi2/host2.h, fmi3/layer.h) whatever its instance type. */
 typedef struct {
     void (*log)(const Instance *inst, Status status, const char *category, const char *message);
     void *(*allocate)(const Instance *inst, size_t size); /* zeroed memory, or NULL */
     void (*release)(const Instance *inst, void *memory);
+    const void *context; /* the layer's own: where it keeps its host's callbacks */
 } InstanceHost;
 
 struct Instance {

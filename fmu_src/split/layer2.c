@@ -2,81 +2,31 @@
  * it only translates FMI 2.0 types onto split.c and the shared instance (instance.h). The
  * FMUs have Co-Simulation only; FMU states and directional derivatives are not provided
  * (canGetAndSetFMUstate, providesDirectionalDerivative false) and are refused with a reason. */
-#include "fmi2_api.h"
+#include <stddef.h>
+
+#include "host2.h"
 #include "split.h"
 
 typedef struct {
     SplitInstance split; /* first: an fmi2Component is a SplitInstance and an Instance */
-    fmi2CallbackFunctions callbacks;
+    fmi2CallbackFunctions callbacks; /* host2.h */
 } Split2;
 
-static void host_log(const Instance *inst, Status status, const char *category, const char *message) {
-    const fmi2CallbackFunctions *callbacks = &((const Split2 *)inst)->callbacks;
-    callbacks->logger(callbacks->componentEnvironment, inst->name, (fmi2Status)status, category, "%s", message);
+/* NULL, or why fmi2Instantiate refuses. */
+static const char *refusal(fmi2String instanceName, fmi2String fmuGUID, fmi2Type fmuType) {
+    const char *why = split_refusal(instanceName, fmuGUID);
+    return why == NULL && fmuType != fmi2CoSimulation
+           ? "fmuType must be fmi2CoSimulation: the FMU has no Model Exchange interface" : why;
 }
 
-static void *host_allocate(const Instance *inst, size_t size) {
-    return ((const Split2 *)inst)->callbacks.allocateMemory(1, size);
+static int setup(Instance *inst, const char *name, fmi2Type fmuType, int logging_on) {
+    (void)fmuType; /* Co-Simulation: refusal() refuses any other */
+    return split_setup((SplitInstance *)inst, name, 2, logging_on);
 }
 
-static void host_release(const Instance *inst, void *memory) {
-    ((const Split2 *)inst)->callbacks.freeMemory(memory);
-}
+DEFINE_FMI2_INSTANTIATE(Split2, SPLIT_MODEL_NAME, refusal, setup)
 
-const char *fmi2GetTypesPlatform(void) { return fmi2TypesPlatform; }
-
-const char *fmi2GetVersion(void) { return fmi2Version; }
-
-fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2String fmuGUID,
-                              fmi2String fmuResourceLocation, const fmi2CallbackFunctions *functions,
-                              fmi2Boolean visible, fmi2Boolean loggingOn) {
-    Split2 *inst;
-    const char *refusal = split_refusal(instanceName, fmuGUID);
-    (void)fmuResourceLocation, (void)visible;
-    if (functions == NULL || functions->allocateMemory == NULL || functions->freeMemory == NULL ||
-        functions->logger == NULL) {
-        return NULL;
-    }
-    if (refusal == NULL && fmuType != fmi2CoSimulation) {
-        refusal = "fmuType must be fmi2CoSimulation: the FMU has no Model Exchange interface";
-    }
-    if (refusal != NULL) {
-        functions->logger(functions->componentEnvironment, instanceName != NULL && instanceName[0] != '\0'
-                          ? instanceName : SPLIT_MODEL_NAME, fmi2Error, "logStatusError", "fmi2Instantiate: %s",
-                          refusal);
-        return NULL;
-    }
-    inst = functions->allocateMemory(1, sizeof *inst);
-    if (inst != NULL) {
-        inst->callbacks = *functions;
-        inst->split.core.host.log = host_log;
-        inst->split.core.host.allocate = host_allocate;
-        inst->split.core.host.release = host_release;
-    }
-    if (inst == NULL || split_setup(&inst->split, instanceName, 2, loggingOn) != 0) {
-        if (inst != NULL) {
-            functions->freeMemory(inst);
-        }
-        functions->logger(functions->componentEnvironment, instanceName, fmi2Error, "logStatusError",
-                          "fmi2Instantiate: out of memory");
-        return NULL;
-    }
-    return inst;
-}
-
-void fmi2FreeInstance(fmi2Component c) {
-    Split2 *inst = c;
-    if (inst != NULL) {
-        fmi2CallbackFreeMemory release = inst->callbacks.freeMemory;
-        instance_release(&inst->split.core);
-        release(inst);
-    }
-}
-
-fmi2Status fmi2SetDebugLogging(fmi2Component c, fmi2Boolean loggingOn, size_t nCategories,
-                               const fmi2String categories[]) {
-    return (fmi2Status)instance_set_debug_logging(c, "fmi2SetDebugLogging", loggingOn, nCategories, categories);
-}
+DEFINE_FMI2_PASSING_CALLS(split_exit_initialization, split_reset, split_get_reals, split_set_reals)
 
 fmi2Status fmi2SetupExperiment(fmi2Component c, fmi2Boolean toleranceDefined, fmi2Real tolerance,
                                fmi2Real startTime, fmi2Boolean stopTimeDefined, fmi2Real stopTime) {
@@ -85,69 +35,14 @@ fmi2Status fmi2SetupExperiment(fmi2Component c, fmi2Boolean toleranceDefined, fm
                                                  startTime, stopTimeDefined, stopTime);
 }
 
-fmi2Status fmi2EnterInitializationMode(fmi2Component c) {
-    return (fmi2Status)instance_enter_initialization(c, "fmi2EnterInitializationMode");
-}
+DEFINE_NO_FMU_STATE_CALLS(fmi2Status, fmi2Component, fmi2FMUstate, fmi2Byte, fmi2GetFMUstate, fmi2SetFMUstate,
+                          fmi2FreeFMUstate, fmi2SerializedFMUstateSize, fmi2SerializeFMUstate, fmi2DeSerializeFMUstate,
+                          "canGetAndSetFMUstate is false: the FMU provides no FMU states")
 
-fmi2Status fmi2ExitInitializationMode(fmi2Component c) {
-    return (fmi2Status)split_exit_initialization(c, "fmi2ExitInitializationMode");
-}
-
-fmi2Status fmi2Terminate(fmi2Component c) { return (fmi2Status)instance_terminate(c, "fmi2Terminate"); }
-
-fmi2Status fmi2Reset(fmi2Component c) { return (fmi2Status)split_reset(c, "fmi2Reset"); }
-
-fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2Real value[]) {
-    return (fmi2Status)split_get_reals(c, "fmi2GetReal", vr, nvr, value);
-}
-
-fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const fmi2Real value[]) {
-    return (fmi2Status)split_set_reals(c, "fmi2SetReal", vr, nvr, value);
-}
-
-/* No Integer, Boolean or String variables: any value reference is unknown. */
-#define NO_VARIABLES_OF_TYPE(Name, Type)                                                                       \
-    fmi2Status fmi2Get##Name(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, Type value[]) {       \
-        return (fmi2Status)instance_no_variables(c, "fmi2Get" #Name, GET_MODES, vr, nvr, value);              \
-    }                                                                                                          \
-    fmi2Status fmi2Set##Name(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const Type value[]) { \
-        return (fmi2Status)instance_no_variables(c, "fmi2Set" #Name, SET_MODES, vr, nvr, value);              \
-    }
-NO_VARIABLES_OF_TYPE(Integer, fmi2Integer)
-NO_VARIABLES_OF_TYPE(Boolean, fmi2Boolean)
-NO_VARIABLES_OF_TYPE(String, fmi2String)
-
-#define NO_FMU_STATES "canGetAndSetFMUstate is false: the FMU provides no FMU states"
-
-fmi2Status fmi2GetFMUstate(fmi2Component c, fmi2FMUstate *state) {
-    (void)state;
-    return (fmi2Status)split_not_provided(c, "fmi2GetFMUstate", NO_FMU_STATES);
-}
-
-fmi2Status fmi2SetFMUstate(fmi2Component c, fmi2FMUstate state) {
-    (void)state;
-    return (fmi2Status)split_not_provided(c, "fmi2SetFMUstate", NO_FMU_STATES);
-}
-
-fmi2Status fmi2FreeFMUstate(fmi2Component c, fmi2FMUstate *state) {
-    (void)state;
-    return (fmi2Status)split_not_provided(c, "fmi2FreeFMUstate", NO_FMU_STATES);
-}
-
-fmi2Status fmi2SerializedFMUstateSize(fmi2Component c, fmi2FMUstate state, size_t *size) {
-    (void)state, (void)size;
-    return (fmi2Status)split_not_provided(c, "fmi2SerializedFMUstateSize", NO_FMU_STATES);
-}
-
-fmi2Status fmi2SerializeFMUstate(fmi2Component c, fmi2FMUstate state, fmi2Byte bytes[], size_t size) {
-    (void)state, (void)bytes, (void)size;
-    return (fmi2Status)split_not_provided(c, "fmi2SerializeFMUstate", NO_FMU_STATES);
-}
-
-fmi2Status fmi2DeSerializeFMUstate(fmi2Component c, const fmi2Byte bytes[], size_t size, fmi2FMUstate *state) {
-    (void)bytes, (void)size, (void)state;
-    return (fmi2Status)split_not_provided(c, "fmi2DeSerializeFMUstate", NO_FMU_STATES);
-}
+/* No Integer, Boolean or String variables. */
+DEFINE_FMI2_NO_VARIABLES_OF_TYPE(Integer, fmi2Integer)
+DEFINE_FMI2_NO_VARIABLES_OF_TYPE(Boolean, fmi2Boolean)
+DEFINE_FMI2_NO_VARIABLES_OF_TYPE(String, fmi2String)
 
 fmi2Status fmi2GetDirectionalDerivative(fmi2Component c, const fmi2ValueReference vUnknown_ref[], size_t nUnknown,
                                         const fmi2ValueReference vKnown_ref[], size_t nKnown,
@@ -197,45 +92,25 @@ static fmi2Status not_provided(fmi2Component c, const char *function, fmi2Status
     return fmi2Discard;
 }
 
-fmi2Status fmi2GetStatus(fmi2Component c, const fmi2StatusKind s, fmi2Status *value) {
-    fmi2Status status = status_call(c, "fmi2GetStatus", value);
-    if (status != fmi2OK) {
-        return status;
+/* A status call that provides one status kind, `provided`, whose value is `answer`. */
+#define STATUS_CALL(Name, Type, provided, answer)                                 \
+    fmi2Status fmi2Get##Name(fmi2Component c, const fmi2StatusKind s, Type *value) { \
+        fmi2Status status = status_call(c, "fmi2Get" #Name, value);               \
+        if (status == fmi2OK && s != provided) {                                  \
+            return not_provided(c, "fmi2Get" #Name, s);                           \
+        }                                                                         \
+        if (status == fmi2OK) {                                                   \
+            *value = answer;                                                      \
+        }                                                                         \
+        return status;                                                            \
     }
-    if (s != fmi2DoStepStatus) {
-        return not_provided(c, "fmi2GetStatus", s);
-    }
-    *value = ((Instance *)c)->data.mode == MODE_ERROR ? fmi2Error : fmi2OK;
-    return fmi2OK;
-}
-
-fmi2Status fmi2GetRealStatus(fmi2Component c, const fmi2StatusKind s, fmi2Real *value) {
-    fmi2Status status = status_call(c, "fmi2GetRealStatus", value);
-    if (status != fmi2OK) {
-        return status;
-    }
-    if (s != fmi2LastSuccessfulTime) {
-        return not_provided(c, "fmi2GetRealStatus", s);
-    }
-    *value = ((Instance *)c)->data.time;
-    return fmi2OK;
-}
+STATUS_CALL(Status, fmi2Status, fmi2DoStepStatus, ((Instance *)c)->data.mode == MODE_ERROR ? fmi2Error : fmi2OK)
+STATUS_CALL(RealStatus, fmi2Real, fmi2LastSuccessfulTime, ((Instance *)c)->data.time)
+STATUS_CALL(BooleanStatus, fmi2Boolean, fmi2Terminated, fmi2False)
 
 fmi2Status fmi2GetIntegerStatus(fmi2Component c, const fmi2StatusKind s, fmi2Integer *value) {
     fmi2Status status = status_call(c, "fmi2GetIntegerStatus", value);
     return status != fmi2OK ? status : not_provided(c, "fmi2GetIntegerStatus", s);
-}
-
-fmi2Status fmi2GetBooleanStatus(fmi2Component c, const fmi2StatusKind s, fmi2Boolean *value) {
-    fmi2Status status = status_call(c, "fmi2GetBooleanStatus", value);
-    if (status != fmi2OK) {
-        return status;
-    }
-    if (s != fmi2Terminated) {
-        return not_provided(c, "fmi2GetBooleanStatus", s);
-    }
-    *value = fmi2False;
-    return fmi2OK;
 }
 
 fmi2Status fmi2GetStringStatus(fmi2Component c, const fmi2StatusKind s, fmi2String *value) {
