@@ -53,31 +53,9 @@ static void host_log(const Instance *inst, Status status, const char *category, 
     }
 }
 
-typedef struct {
-    double theta0, omega0, L, g;
-} Start;
-
 static int setup(Instance *inst, const Start *s, int solver, double tol, int certificate_off)
 {
-    memset(inst, 0, sizeof *inst);
-    inst->host.log = host_log;
-    inst->host.allocate = host_allocate;
-    inst->host.release = host_release;
-    const ValueReference vrs[] = {VR_L, VR_G, VR_THETA, VR_OMEGA};
-    const double values[] = {s->L, s->g, s->theta0, s->omega0};
-    if (instance_setup(inst, "certificate", INTERFACE_CO_SIMULATION, 2, 0) != 0) {
-        return -1;
-    }
-    inst->certificate_off = certificate_off;
-    if (instance_setup_experiment(inst, "setup", 1, tol, 0.0, 0, 0.0) != STATUS_OK ||
-        instance_enter_initialization(inst, "enter") != STATUS_OK ||
-        instance_set_reals(inst, "set", vrs, 4, values) != STATUS_OK ||
-        instance_set_integer(inst, "set", VR_SOLVER, solver) != STATUS_OK ||
-        instance_exit_initialization(inst, "exit") != STATUS_OK) {
-        instance_release(inst);
-        return -1;
-    }
-    return 0;
+    return core_start(inst, "certificate", host_log, certificate_off, s, solver, tol, 0.0);
 }
 
 /* Departure from the bound in units of the bound, written out again from the words. */

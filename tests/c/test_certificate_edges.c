@@ -37,35 +37,16 @@ static void host_log(const Instance *inst, Status status, const char *category, 
     }
 }
 
-typedef struct {
-    double theta0, omega0, L, g;
-} Start;
-
 static void instantiate(Instance *inst, InterfaceType type)
 {
-    memset(inst, 0, sizeof *inst);
-    inst->host.log = host_log;
-    inst->host.allocate = host_allocate;
-    inst->host.release = host_release;
-    check(instance_setup(inst, "edges", type, 2, 0) == 0, "instance_setup");
+    check(core_instance(inst, "edges", host_log, type) == 0, "instance_setup");
 }
 
 /* A Co-Simulation instance at startTime t0; 0 or -1 (the call that failed is in last_error). */
 static int setup(Instance *inst, const Start *s, int solver, double tol, double t0)
 {
-    const ValueReference vrs[] = {VR_L, VR_G, VR_THETA, VR_OMEGA};
-    const double values[] = {s->L, s->g, s->theta0, s->omega0};
-    instantiate(inst, INTERFACE_CO_SIMULATION);
     last_error[0] = '\0';
-    if (instance_setup_experiment(inst, "setup", 1, tol, t0, 0, 0.0) != STATUS_OK ||
-        instance_enter_initialization(inst, "enter") != STATUS_OK ||
-        instance_set_reals(inst, "set", vrs, 4, values) != STATUS_OK ||
-        instance_set_integer(inst, "set", VR_SOLVER, solver) != STATUS_OK ||
-        instance_exit_initialization(inst, "exit") != STATUS_OK) {
-        instance_release(inst);
-        return -1;
-    }
-    return 0;
+    return core_start(inst, "edges", host_log, 0, s, solver, tol, t0);
 }
 
 typedef struct {

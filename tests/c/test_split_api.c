@@ -49,22 +49,19 @@ static void close_to(double got, double want, double tol, const char *what) {
 }
 
 /* --- the FMI 2.0 functions of one binary --------------------------------------------------- */
+/* X(field, function) for each function the tests call: one list gives the struct its fields
+ * and the loader its bindings (DEFINE_LOADER below). */
+#define API2_FUNCTIONS(X)                                                                                          \
+    X(instantiate, fmi2Instantiate) X(free_instance, fmi2FreeInstance) X(setup, fmi2SetupExperiment)               \
+    X(enter_init, fmi2EnterInitializationMode) X(exit_init, fmi2ExitInitializationMode) X(get_real, fmi2GetReal)   \
+    X(set_real, fmi2SetReal) X(get_integer, fmi2GetInteger) X(do_step, fmi2DoStep)                                 \
+    X(set_input_derivatives, fmi2SetRealInputDerivatives) X(get_output_derivatives, fmi2GetRealOutputDerivatives) \
+    X(get_state, fmi2GetFMUstate) X(reset, fmi2Reset) X(terminate, fmi2Terminate)
+#define FIELD(field, function) __typeof__(&function) field;
+
 typedef struct {
     void *dll;
-    __typeof__(&fmi2Instantiate) instantiate;
-    __typeof__(&fmi2FreeInstance) free_instance;
-    __typeof__(&fmi2SetupExperiment) setup;
-    __typeof__(&fmi2EnterInitializationMode) enter_init;
-    __typeof__(&fmi2ExitInitializationMode) exit_init;
-    __typeof__(&fmi2GetReal) get_real;
-    __typeof__(&fmi2SetReal) set_real;
-    __typeof__(&fmi2GetInteger) get_integer;
-    __typeof__(&fmi2DoStep) do_step;
-    __typeof__(&fmi2SetRealInputDerivatives) set_input_derivatives;
-    __typeof__(&fmi2GetRealOutputDerivatives) get_output_derivatives;
-    __typeof__(&fmi2GetFMUstate) get_state;
-    __typeof__(&fmi2Reset) reset;
-    __typeof__(&fmi2Terminate) terminate;
+    API2_FUNCTIONS(FIELD)
 } Api2;
 
 static void *need(void *dll, const char *name) {
@@ -85,27 +82,17 @@ static void *open_library(const char *path) {
     return dll;
 }
 
-#define BIND(api, field, name) *(void **)(&(api).field) = need((api).dll, name)
+#define BIND(field, function) *(void **)(&api.field) = need(api.dll, #function);
+/* A loader of an Api struct whose functions the list LIST names. */
+#define DEFINE_LOADER(load, Api, LIST)       \
+    static Api load(const char *path) {      \
+        Api api;                             \
+        api.dll = open_library(path);        \
+        LIST(BIND)                           \
+        return api;                          \
+    }
 
-static Api2 load2(const char *path) {
-    Api2 api;
-    api.dll = open_library(path);
-    BIND(api, instantiate, "fmi2Instantiate");
-    BIND(api, free_instance, "fmi2FreeInstance");
-    BIND(api, setup, "fmi2SetupExperiment");
-    BIND(api, enter_init, "fmi2EnterInitializationMode");
-    BIND(api, exit_init, "fmi2ExitInitializationMode");
-    BIND(api, get_real, "fmi2GetReal");
-    BIND(api, set_real, "fmi2SetReal");
-    BIND(api, get_integer, "fmi2GetInteger");
-    BIND(api, do_step, "fmi2DoStep");
-    BIND(api, set_input_derivatives, "fmi2SetRealInputDerivatives");
-    BIND(api, get_output_derivatives, "fmi2GetRealOutputDerivatives");
-    BIND(api, get_state, "fmi2GetFMUstate");
-    BIND(api, reset, "fmi2Reset");
-    BIND(api, terminate, "fmi2Terminate");
-    return api;
-}
+DEFINE_LOADER(load2, Api2, API2_FUNCTIONS)
 
 static const fmi2CallbackFunctions CALLBACKS = {logger2, calloc, free, NULL, NULL};
 
@@ -354,35 +341,18 @@ static void test_misuse2(const Api2 *body, const Api2 *gravity) {
 }
 
 /* --- FMI 3.0: the input held over each step, the same step ---------------------------------- */
+#define API3_FUNCTIONS(X)                                                                                     \
+    X(instantiate, fmi3InstantiateCoSimulation) X(instantiate_me, fmi3InstantiateModelExchange)               \
+    X(free_instance, fmi3FreeInstance) X(enter_init, fmi3EnterInitializationMode)                             \
+    X(exit_init, fmi3ExitInitializationMode) X(get, fmi3GetFloat64) X(set, fmi3SetFloat64) X(do_step, fmi3DoStep) \
+    X(get_output_derivatives, fmi3GetOutputDerivatives) X(set_time, fmi3SetTime)
+
 typedef struct {
     void *dll;
-    __typeof__(&fmi3InstantiateCoSimulation) instantiate;
-    __typeof__(&fmi3InstantiateModelExchange) instantiate_me;
-    __typeof__(&fmi3FreeInstance) free_instance;
-    __typeof__(&fmi3EnterInitializationMode) enter_init;
-    __typeof__(&fmi3ExitInitializationMode) exit_init;
-    __typeof__(&fmi3GetFloat64) get;
-    __typeof__(&fmi3SetFloat64) set;
-    __typeof__(&fmi3DoStep) do_step;
-    __typeof__(&fmi3GetOutputDerivatives) get_output_derivatives;
-    __typeof__(&fmi3SetTime) set_time;
+    API3_FUNCTIONS(FIELD)
 } Api3;
 
-static Api3 load3(const char *path) {
-    Api3 api;
-    api.dll = open_library(path);
-    BIND(api, instantiate, "fmi3InstantiateCoSimulation");
-    BIND(api, instantiate_me, "fmi3InstantiateModelExchange");
-    BIND(api, free_instance, "fmi3FreeInstance");
-    BIND(api, enter_init, "fmi3EnterInitializationMode");
-    BIND(api, exit_init, "fmi3ExitInitializationMode");
-    BIND(api, get, "fmi3GetFloat64");
-    BIND(api, set, "fmi3SetFloat64");
-    BIND(api, do_step, "fmi3DoStep");
-    BIND(api, get_output_derivatives, "fmi3GetOutputDerivatives");
-    BIND(api, set_time, "fmi3SetTime");
-    return api;
-}
+DEFINE_LOADER(load3, Api3, API3_FUNCTIONS)
 
 static fmi3Instance instance3(const Api3 *api, const char *token) {
     fmi3Instance c = api->instantiate("split", token, NULL, fmi3False, fmi3False, fmi3False, fmi3False, NULL, 0, NULL,
