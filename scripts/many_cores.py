@@ -106,21 +106,9 @@ def exact_threads(points: int, workers: list[int], repeat: int) -> None:
 
 def exact_wrapper(points: int, repeat: int) -> None:
     """Table 3: one state per point, ``exact()`` against its C call (CPU time, one thread)."""
-    from pendulum_fmu.fmu.library import _library, exact
+    from pendulum_fmu.bench.exact import wrapper_overhead
 
-    library = _library()
-    theta0 = math.radians(80.0) * (1.0 + 1e-9 * (np.arange(points) % 1024))
-    times = np.random.default_rng(27).uniform(0.0, 100.0, points)
-    arrays = [theta0, np.zeros(points), np.ones(points), np.ones(points), times]
-    theta, omega = np.empty(points), np.empty(points)
-    c_best = wrapped_best = math.inf
-    for _ in range(repeat):
-        start = time.process_time()
-        library.pendulum_exact_many(points, *arrays, theta, omega)
-        c_best = min(c_best, time.process_time() - start)
-        start = time.process_time()
-        exact(theta0, 0.0, 1.0, 1.0, times, workers=1)
-        wrapped_best = min(wrapped_best, time.process_time() - start)
+    c_best, wrapped_best, _ = wrapper_overhead(points, repeat)
     print(f"\none state per point, {points:,} points, one thread, best of {repeat} (CPU time)\n")
     print("| `pendulum_exact_many` (C) | `exact()` | the wrapper adds |\n|---|---|---|")
     print(f"| {1e9 * c_best / points:.0f} ns | {1e9 * wrapped_best / points:.0f} ns | "

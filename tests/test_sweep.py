@@ -14,6 +14,7 @@ import numpy as np
 import pyarrow as pa
 import pytest
 from PIL import Image
+from processes import stop
 from scipy.special import ellipk
 
 from pendulum_fmu.cli.main import main
@@ -139,15 +140,8 @@ def dask_scheduler(tmp_path_factory: pytest.TempPathFactory) -> Iterator[str]:
             client.wait_for_workers(2, timeout=60)
         yield address
     finally:
-        for group in (processes[1:], processes[:1]):  # the workers, then the scheduler
-            for process in group:
-                process.terminate()
-            for process in group:
-                try:
-                    process.wait(timeout=20)
-                except subprocess.TimeoutExpired:
-                    process.kill()
-                    process.wait()
+        stop(processes[1:])  # the workers, then the scheduler
+        stop(processes[:1])
 
 
 def test_sweep_through_a_running_scheduler_gives_the_local_table(local_sweep: Path, dask_scheduler: str,

@@ -16,6 +16,7 @@ from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
+from processes import stop
 
 RUNS = 400
 SWEEP = ["sweep", "-a", f"1:179:{RUNS}", "-p", "20", "-q", "--no-plots"]
@@ -34,19 +35,6 @@ def free_port() -> int:
     with socket.socket() as probe:
         probe.bind(("127.0.0.1", 0))
         return int(probe.getsockname()[1])
-
-
-def stop(processes: list[subprocess.Popen[bytes]]) -> None:
-    """Terminate the processes (kill what is left after 20 s)."""
-    for process in processes:
-        if process.poll() is None:
-            process.terminate()
-    for process in processes:
-        try:
-            process.wait(timeout=20)
-        except subprocess.TimeoutExpired:
-            process.kill()
-            process.wait()
 
 
 @pytest.fixture

@@ -244,6 +244,47 @@ def time_library_states(amplitude_deg: float, n: int, seed: int = 1) -> float:
     return 1e9 * (time.process_time() - start) / n
 
 
+def wrapper_overhead(points: int, rounds: int) -> tuple[float, float, bool]:
+    """:func:`pendulum_fmu.exact` with one state per point against the C call it wraps.
+
+    The release angles of :func:`release_angles` around 80 degrees (from rest, L = g = 1), each
+    at a random time within 100 s; the C call is ``pendulum_exact_many`` on arrays already
+    contiguous, the wrapper is ``exact()`` given the scalars and the two arrays (what it
+    broadcasts and copies is its own cost), on one thread.
+
+    Parameters
+    ----------
+    points : int
+        The number of states, one time each.
+    rounds : int
+        Interleaved rounds of the two; the best of each counts.
+
+    Returns
+    -------
+    tuple of (float, float, bool)
+        The best processor time (``time.process_time``, s) of the C call and of ``exact()``,
+        and whether the two gave the same bits.
+    """
+    from pendulum_fmu.fmu.library import _library, exact
+
+    library = _library()
+    theta0 = release_angles(80.0, points)
+    times = np.random.default_rng(27).uniform(0.0, 100.0, points)
+    arrays = [theta0, np.zeros(points), np.ones(points), np.ones(points), times]
+    theta, omega = np.empty(points), np.empty(points)
+    c_best = wrapped_best = math.inf
+    same = True
+    for _ in range(rounds):
+        start = time.process_time()
+        library.pendulum_exact_many(points, *arrays, theta, omega)
+        c_best = min(c_best, time.process_time() - start)
+        start = time.process_time()
+        values = exact(theta0, 0.0, 1.0, 1.0, times, workers=1)
+        wrapped_best = min(wrapped_best, time.process_time() - start)
+        same = same and values[0].tobytes() == theta.tobytes() and values[1].tobytes() == omega.tobytes()
+    return c_best, wrapped_best, same
+
+
 def time_scipy_states(amplitude_deg: float, n: int, seed: int = 1) -> float:
     """ns per point of scipy with a new state per point (one timing).
 
