@@ -6,6 +6,7 @@ import math
 import subprocess
 import sys
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 import pytest
@@ -113,7 +114,7 @@ def test_large_arrays_are_split_over_the_usable_cores_and_small_ones_are_not(mon
     assert len(seen) == 2 and threading.current_thread().name in seen, seen
 
 
-def _exact_in_a_forked_child(queue: "multiprocessing.Queue[float]") -> None:
+def _exact_in_a_forked_child(queue: Any) -> None:
     t = np.linspace(0.0, 10.0, 300_000)
     theta, _ = exact(np.radians(170.0), 0.0, 1.0, 9.81, t, workers=2)
     queue.put(float(theta[-1]))

@@ -11,7 +11,6 @@ and library inside the installed package and write under that folder.
 from __future__ import annotations
 
 import os
-import shutil
 import subprocess
 import zipfile
 from pathlib import Path

@@ -85,9 +85,9 @@ def plot_solutions(runs: list[Trajectory], field: str, title: str, path: Path) -
             ax.plot(cycles, np.degrees(run.result[field]), color=color, lw=1.3)
             for sign in (1.0, -1.0):
                 ax.axhline(sign * amplitude, color="tab:red", lw=1.0, ls="--", alpha=0.8)
-            ax.text(1.005, amplitude, rf"$+\theta_0$", transform=ax.get_yaxis_transform(), color="tab:red",
+            ax.text(1.005, amplitude, r"$+\theta_0$", transform=ax.get_yaxis_transform(), color="tab:red",
                     va="center", fontsize=10)
-            ax.text(1.005, -amplitude, rf"$-\theta_0$", transform=ax.get_yaxis_transform(), color="tab:red",
+            ax.text(1.005, -amplitude, r"$-\theta_0$", transform=ax.get_yaxis_transform(), color="tab:red",
                     va="center", fontsize=10)
             ratio = run.period / t0
             ends = np.arange(1, int(cycles[-1] / ratio + 1e-9) + 1) * ratio
