@@ -198,16 +198,22 @@ def slopes(ref: Reference, experiment: Experiment) -> dict[str, np.ndarray]:
     return {"theta": ref.omega, "omega": -(experiment.g / experiment.L) * np.sin(ref.theta)}
 
 
+def print_rounding(result: Result, ref: Reference, experiment: Experiment, column: str) -> np.ndarray:
+    """How far the print's rounding can move a column's value at each row: half a unit in its
+    last printed digit, plus its rate of change times the time's."""
+    rate = slopes(ref, experiment)[column.removesuffix("_exact")]
+    return result.resolution[column] + np.abs(rate) * result.resolution["time"]
+
+
 def exact_mismatch(result: Result, ref: Reference, experiment: Experiment) -> dict[str, tuple[np.ndarray, np.ndarray]]:
     """For each exact column present: (|column - reference|, allowed) per row."""
     out = {}
-    rates = slopes(ref, experiment)
     for name, exact_name in (("theta", "theta_exact"), ("omega", "omega_exact")):
         if exact_name in result.values:
             expected = getattr(ref, name)
             diff = np.abs(result.values[exact_name] - expected)
-            allowed = (EXACT_AGREEMENT * np.maximum(1.0, np.abs(expected)) + result.resolution[exact_name]
-                       + np.abs(rates[name]) * result.resolution["time"])
+            allowed = (EXACT_AGREEMENT * np.maximum(1.0, np.abs(expected))
+                       + print_rounding(result, ref, experiment, exact_name))
             out[exact_name] = (np.where(np.isfinite(diff), diff, np.inf), allowed)
     return out
 
@@ -380,7 +386,7 @@ def _allowed_there(result: Result, ref: Reference, experiment: Experiment, name:
         if value > natural:
             parts.append(f"the bound grows with |{name}_e| = {value:.4g} {unit} there: 100 tol |{name}_e| = "
                          f"{allowed:.1e}")
-    rounding = float(result.resolution[name][k] + abs(slopes(ref, experiment)[name][k]) * result.resolution["time"][k])
+    rounding = float(print_rounding(result, ref, experiment, name)[k])
     figures["print_rounding_there"] = rounding
     if result.formats is not None and rounding >= 0.1 * allowed:
         parts.append(f"the print's rounding there ({result.formats[name].describe()}: {rounding:.1e}) is "

@@ -62,8 +62,7 @@ def diagnose(result: Result, ref: checks.Reference, experiment: Experiment, erro
     if still:
         return Check("diagnosis", "info", still, {"cause": "frozen"})
     if result.formats is not None:
-        rates = checks.slopes(ref, experiment)
-        rounding = {n: result.resolution[n] + np.abs(rates[n]) * result.resolution["time"] for n in errors}
+        rounding = {n: checks.print_rounding(result, ref, experiment, n) for n in errors}
         if all(np.all(np.abs(e) <= 1.01 * rounding[n] + 1e-12) for n, e in errors.items()):
             name = max(errors, key=lambda n: float(np.max(np.abs(errors[n]))))
             k = int(np.argmax(np.abs(errors[name])))

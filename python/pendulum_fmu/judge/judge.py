@@ -39,17 +39,14 @@ def _experiment_check(experiment: Experiment, where: str) -> Check:
 
 
 def _exact_fits(result: Result, ref: checks.Reference, experiment: Experiment) -> alternatives.Fits:
-    """Exact columns fit an alternative when they equal it to FIT_AGREEMENT beyond the print."""
-    rates = checks.slopes(ref, experiment)
+    """Exact columns fit an alternative when they equal it to FIT_AGREEMENT beyond the print
+    (its rounding, and half a unit more: the alternative's own value is not printed)."""
+    allowed = {name: FIT_AGREEMENT * np.maximum(1.0, np.abs(result.values[name])) + result.resolution[name]
+               + checks.print_rounding(result, ref, experiment, name) for name in ("theta_exact", "omega_exact")
+               if name in result.values}
 
     def fits(residuals: alternatives.Columns) -> bool:
-        for name, r in residuals.items():
-            key = name.removesuffix("_exact")
-            allowed = (FIT_AGREEMENT * np.maximum(1.0, np.abs(result.values[name])) + 2 * result.resolution[name]
-                       + np.abs(rates[key]) * result.resolution["time"])
-            if not np.all(np.abs(r) <= allowed):
-                return False
-        return True
+        return all(bool(np.all(np.abs(r) <= allowed[name])) for name, r in residuals.items())
     return fits
 
 
