@@ -103,7 +103,8 @@ def build_fmu(platforms: bool = False) -> Path | None:
               "it is looked for at run time", file=sys.stderr)
         return None
     options = platform_options() if platforms else []
-    targets = ["fmu", "fmu3", "pendulum_exact", "pendulum_driver"] + (["pendulum_exact_platforms"] if options else [])
+    targets = ["fmu", "fmu3", "split_fmi2", "split_fmi3", "pendulum_exact", "pendulum_driver"] + (
+        ["pendulum_exact_platforms"] if options else [])
     commands = [[cmake, "-S", str(ROOT), "-B", str(build_dir), "-DCMAKE_BUILD_TYPE=Release", *options],
                 [cmake, "--build", str(build_dir), "--target", *targets, "--parallel", str(os.cpu_count() or 1)]]
     what = "every platform with zig" if options else "the host's binaries"
@@ -164,6 +165,12 @@ class BuildPyWithFmu(build_py):
         if (build_dir / "fmi3" / "Pendulum.fmu").is_file():  # pendulum_fmu.fmu.build.PACKAGED_FMU3
             (package / "fmi3").mkdir(exist_ok=True)
             shutil.copyfile(build_dir / "fmi3" / "Pendulum.fmu", package / "fmi3" / "Pendulum.fmu")
+        # The split pendulum beside them (pendulum_fmu.split.locate: the package's own folder)
+        for version in ("", "fmi3"):
+            for name in ("PendulumBody.fmu", "PendulumGravity.fmu", "PendulumSplit.ssp"):
+                if (build_dir / version / name).is_file():
+                    (package / version).mkdir(exist_ok=True)
+                    shutil.copyfile(build_dir / version / name, package / version / name)
         # The C libraries: pendulum_exact (pendulum_fmu.exact) and pendulum_driver (FmuRunner's
         # output loop): the host's, and any cross-built ones left in build_dir/exact_lib/<platform>/
         # (platform names as the FMU's binaries/).

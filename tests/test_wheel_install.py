@@ -89,6 +89,20 @@ def test_the_installed_package_runs_its_shipped_c_loop(installed: Path, tmp_path
     assert all(float(run.split()[2]) < 1e-9 for run in runs)
 
 
+def test_the_installed_package_finds_the_split_pendulum(installed: Path, tmp_path: Path) -> None:
+    """split_path gives the wheel's own PendulumSplit.ssp for FMI 2.0 and 3.0 (not the checkout's build/)."""
+    python = installed.parent / "python"
+    script = "import pendulum_fmu; print(pendulum_fmu.split_path(fmi_version=2)); print(pendulum_fmu.split_path(fmi_version=3))"
+    done = _run([str(python), "-c", script], tmp_path, _clean_env())
+    assert done.returncode == 0, done.stderr[-3000:]
+    site = installed.parent.parent / "lib"
+    two, three = (Path(line) for line in done.stdout.splitlines())
+    assert two.is_relative_to(site) and two.name == "PendulumSplit.ssp" and two.is_file()
+    assert three.is_relative_to(site) and three.parent.name == "fmi3" and three.is_file()
+    for ssp in (two, three):
+        assert {"PendulumBody.fmu", "PendulumGravity.fmu"} <= {p.name for p in ssp.parent.iterdir()}
+
+
 FMI3_COMMANDS: list[list[str]] = [
     ["simulate", "-a", "85", "-p", "2", "-o", "run.csv"],
     ["compare", "-a", "170", "-p", "1"],

@@ -2,8 +2,7 @@
 
 Order: ``$PENDULUM_SPLIT_DIR`` (a folder holding the FMI 2.0 files, with the FMI 3.0 ones in its
 ``fmi3/``), then the package's own folder (a wheel carries them beside ``Pendulum.fmu``), then the
-checkout's CMake build ``build/``, then any ``build-*/`` folder of the checkout that holds them
-(a private build), the newest first.
+checkout's CMake build ``build/``.
 """
 
 from __future__ import annotations
@@ -12,7 +11,7 @@ import os
 from pathlib import Path
 
 from pendulum_fmu.errors import UsageError
-from pendulum_fmu.fmu.build import DEFAULT_BUILD_DIR, PACKAGED_FMU, REPO_ROOT
+from pendulum_fmu.fmu.build import DEFAULT_BUILD_DIR, PACKAGED_FMU
 
 FILES: tuple[str, ...] = ("PendulumBody.fmu", "PendulumGravity.fmu", "PendulumSplit.ssp")
 """What a folder of the split pendulum holds, for one FMI version."""
@@ -30,10 +29,7 @@ def candidate_folders() -> list[Path]:
     """The folders searched, in order (see the module's docstring)."""
     override = os.environ.get("PENDULUM_SPLIT_DIR")
     folders = [Path(override)] if override else []
-    folders += [PACKAGED_FMU.parent, DEFAULT_BUILD_DIR]
-    private = [p for p in REPO_ROOT.glob("build-*") if (p / "PendulumSplit.ssp").is_file()]
-    folders += sorted(private, key=lambda p: (p / "PendulumSplit.ssp").stat().st_mtime, reverse=True)
-    return folders
+    return folders + [PACKAGED_FMU.parent, DEFAULT_BUILD_DIR]
 
 
 def split_folder(fmi_version: int = 2) -> Path:
