@@ -16,14 +16,15 @@ from types import ModuleType
 from typing import Any, NoReturn
 
 from pendulum_fmu import __version__
-from pendulum_fmu.cli import animate, bench, compare, completion, cross_check, judge, simulate, study, sweep
+from pendulum_fmu.cli import animate, bench, compare, completion, cross_check, judge, simulate, study, suite, sweep
 from pendulum_fmu.cli.arguments import resolve_fmu
 from pendulum_fmu.errors import BuildError, SimulationError, UsageError
 from pendulum_fmu.interrupt import check as check_interrupt
 from pendulum_fmu.interrupt import default_dispositions, exit_quietly_on_interrupt
 from pendulum_fmu.interrupt import forget as forget_interrupt
 
-COMMANDS: tuple[ModuleType, ...] = (simulate, compare, study, animate, sweep, bench, judge, cross_check, completion)
+COMMANDS: tuple[ModuleType, ...] = (simulate, compare, study, animate, sweep, bench, judge, cross_check, suite,
+                                    completion)
 
 DESCRIPTION = """\
 Build, run and check Pendulum.fmu: the nonlinear pendulum theta'' + (g/L) sin(theta) = 0,
@@ -43,6 +44,7 @@ examples:
   pendulum-fmu bench sweep
   pendulum-fmu judge result.csv --interface ME --start tolerance=1e-6
   pendulum-fmu cross-check out/cross-check
+  pendulum-fmu suite run --engine fmpy --out out/suite
   eval "$(pendulum-fmu completion bash)"          # complete commands and options in bash
 """
 
