@@ -31,6 +31,7 @@ target_compile_options(write_reference_result PRIVATE ${WARNING_FLAGS})
 target_link_libraries(write_reference_result PRIVATE pendulum_core)
 
 set(REFERENCE_CS_DEVIATION 1e-6)
+include(${CMAKE_CURRENT_SOURCE_DIR}/cmake/SuiteReference.cmake)  # the suite's validation experiments
 file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/reference/Pendulum.exp.new
   "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
   "<Experiments name=\"Pendulum\"\n"
@@ -64,27 +65,30 @@ add_custom_command(
   VERBATIM)
 
 # Adds extra/ and documentation/fmi-ls-ref.html to a packed FMU: copies them into its folder
-# and zips it again. target: the new target; fmu_target: the target that packs fmu_file. The
+# and zips it again; then the suite's files of the FMU's FMI version (major: 2 or 3), whose
+# manifest replaces the shared one. target: the new target; fmu_target: the target that packs fmu_file. The
 # dependency between the two makes fmu_target's packing run first and once (with only a file
 # dependency, a parallel make would run the packing rule in both targets at the same time).
-function(add_reference_result target fmu_target fmu_dir fmu_file)
+function(add_reference_result target fmu_target fmu_dir fmu_file major)
   set(stamp ${CMAKE_CURRENT_BINARY_DIR}/reference/${target}.stamp)
   add_custom_command(
     OUTPUT ${stamp}
     COMMAND ${CMAKE_COMMAND} -E copy_directory ${REFERENCE_DIR} ${fmu_dir}/extra/org.fmi-standard.fmi-ls-ref
+    COMMAND ${CMAKE_COMMAND} -E copy_directory ${SUITE_DIR_${major}} ${fmu_dir}/extra/org.fmi-standard.fmi-ls-ref
     COMMAND ${CMAKE_COMMAND} -E copy ${REFERENCE_HTML} ${fmu_dir}/documentation/fmi-ls-ref.html
     COMMAND ${CMAKE_COMMAND} -DFMU_DIR=${fmu_dir} -DFMU_FILE=${fmu_file}
             -P ${CMAKE_CURRENT_SOURCE_DIR}/cmake/pack_fmu.cmake
     COMMAND ${CMAKE_COMMAND} -E touch ${stamp}
     DEPENDS ${fmu_file} ${REFERENCE_DIR}/Pendulum_ref.csv ${REFERENCE_DIR}/fmi-ls-manifest.xml
             ${REFERENCE_DIR}/Pendulum.exp ${REFERENCE_HTML} ${CMAKE_CURRENT_SOURCE_DIR}/cmake/pack_fmu.cmake
+            ${SUITE_FILES_${major}}
     COMMENT "Adding the reference result to ${fmu_file}"
     VERBATIM)
   add_custom_target(${target} ALL DEPENDS ${stamp})
   add_dependencies(${target} ${fmu_target})
 endfunction()
 
-add_reference_result(fmu_reference fmu ${FMU_DIR} ${FMU_FILE})
+add_reference_result(fmu_reference fmu ${FMU_DIR} ${FMU_FILE} 2)
 if(TARGET fmu3)
-  add_reference_result(fmu3_reference fmu3 ${FMI3_FMU_DIR} ${FMI3_FMU_FILE})
+  add_reference_result(fmu3_reference fmu3 ${FMI3_FMU_DIR} ${FMI3_FMU_FILE} 3)
 endif()
