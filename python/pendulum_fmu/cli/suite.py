@@ -18,7 +18,8 @@ an importer's command line (--command TEMPLATE) or takes results made elsewhere 
 judges each against the exact solution and writes OUT/junit.xml, OUT/report.html,
 OUT/summary.json, and OUT/cases/<case>/ with the experiment, the result and the cross-check
 verdict file (passed, failed or rejected). Exit status 0 only when every case passes.
-'suite table' runs every built-in engine against every case and writes the compatibility table.
+'suite table' runs every built-in engine against every case and writes the compatibility table;
+'suite export' writes the Pendulum cases in the FMI cross-check layout.
 """
 EPILOG = """\
 examples:
@@ -41,7 +42,8 @@ a shell-quoted word: {fmu} the FMU, {fmi_version} 2.0 or 3.0, {interface} cs or 
 {stop}, {interval} (output interval, s), {tolerance} (relative), {output} (the CSV to write:
 a header row, then time and the outputs theta, omega, theta_exact, omega_exact, names as the
 FMU has them), {start_values} (name=value words: theta, omega, L, g), {experiment} (a JSON
-file holding all of them) and {case}.
+file holding all of them) and {case}; also {interface_type} (CoSimulation or ModelExchange)
+and {start_value_pairs} (name value name value ..., as fmpy's --start-values takes them).
 
 --results DIR holds CASE.csv for each case (or one CSV in DIR/CASE/), from a run elsewhere.
 """
@@ -86,6 +88,16 @@ def configure(parser: argparse.ArgumentParser) -> None:
     table.add_argument("--engines", metavar="NAMES", help="comma-separated engines (default: all)")
     table.add_argument("--timeout", type=float, default=120.0, metavar="S", help="per case (default 120)")
     table.set_defaults(subparser=table)
+    export = actions.add_parser("export", help="the Pendulum cases in the FMI cross-check layout "
+                                               "(fmus/<version>/<cs|me>/<platform>/PendulumFMU/<version>/<case>/)",
+                                description="Write OUT/fmus/... with one model folder per case and platform: "
+                                            "CASE.fmu, CASE_ref.opt, CASE_ref.csv and ReadMe.txt (the start values "
+                                            "to set). Prints each folder written.")
+    export.add_argument("out", type=output_folder, metavar="OUT", help="the folder to write fmus/ into")
+    export.add_argument("--cases", metavar="PATTERN", help="comma-separated shell patterns of case names")
+    export.add_argument("--fmu", type=Path, action="append", default=None, metavar="PATH",
+                        help="a Pendulum.fmu to export instead of the package's (repeat for FMI 2.0 and 3.0)")
+    export.set_defaults(subparser=export)
 
 
 def _progress(k: int, n: int, result: object) -> None:
@@ -109,8 +121,30 @@ def _fmus(paths: list[Path] | None) -> dict[int, Path]:
     return chosen
 
 
+def _export(args: argparse.Namespace) -> int:
+    from pendulum_fmu.errors import UsageError
+    from pendulum_fmu.fmu.locate import locate_fmu
+    from pendulum_fmu.suite import cases
+    from pendulum_fmu.suite.cross_check_layout import export_case
+    from pendulum_fmu.suite.session import suite_name
+
+    try:
+        chosen = cases.select(args.cases, ("pendulum",))
+    except ValueError as error:
+        raise UsageError("--cases", str(error).removeprefix("--cases: ")) from None
+    fmus = _fmus(args.fmu)
+    for case in chosen:
+        fmu = fmus.get(case.fmi_major) or locate_fmu(None, fmi_version=case.fmi_major)
+        try:
+            for folder in export_case(case, fmu, args.out, suite_name()):
+                print(folder)
+        except ValueError as error:
+            raise UsageError("--fmu", str(error)) from None
+    return 0
+
+
 def run(args: argparse.Namespace) -> int:
-    """List, run or tabulate."""
+    """List, run, tabulate or export."""
     from pendulum_fmu.errors import UsageError
     from pendulum_fmu.suite import adapters, cases
 
@@ -121,6 +155,8 @@ def run(args: argparse.Namespace) -> int:
         except ValueError as error:
             raise UsageError("--cases", str(error).removeprefix("--cases: ")) from None
         return 0
+    if args.suite_action == "export":
+        return _export(args)
     if args.suite_action == "table":
         from pendulum_fmu.suite.compatibility import write_table
 

@@ -20,8 +20,11 @@ from pendulum_fmu.suite.cases import Kind
 from pendulum_fmu.suite.experiment import OUTPUTS, Run
 
 PLACEHOLDERS: tuple[str, ...] = ("fmu", "interface", "start", "stop", "interval", "tolerance", "output",
-                                 "start_values", "experiment", "fmi_version", "case")
+                                 "start_values", "experiment", "fmi_version", "case", "interface_type",
+                                 "start_value_pairs")
 """What a command template may name, each in braces; values are shell-quoted words."""
+SEVERAL_WORDS: tuple[str, ...] = ("start_values", "start_value_pairs")
+"""Placeholders that stand for several words, each quoted alone."""
 DISTRIBUTIONS = {"fmpy": "fmpy", "fmpy-cli": "fmpy", "libcosim": "libcosimpy", "ecos": "ecospy",
                  "fmucontainer": "fmu-manipulation-toolbox", "fmpy-container": "fmpy"}
 """The installed distribution behind each built-in adapter (its version goes in the reports)."""
@@ -82,7 +85,8 @@ class Adapter:
 def fill_template(template: str, run: Run, experiment_file: Path) -> str:
     """The template with each ``{placeholder}`` replaced by its shell-quoted value.
 
-    ``{start_values}`` becomes several words, ``name=value`` each.
+    ``{start_values}`` becomes several words, ``name=value`` each; ``{start_value_pairs}`` the
+    words ``name value name value ...`` (fmpy's ``--start-values``).
 
     Raises
     ------
@@ -91,7 +95,8 @@ def fill_template(template: str, run: Run, experiment_file: Path) -> str:
     """
     values = run.placeholders(experiment_file)
     quoted = {name: shlex.quote(value) for name, value in values.items()}
-    quoted["start_values"] = " ".join(shlex.quote(word) for word in values["start_values"].split())
+    for name in SEVERAL_WORDS:
+        quoted[name] = " ".join(shlex.quote(word) for word in values[name].split())
     check_template(template)
     return template.format_map(quoted)
 

@@ -32,7 +32,9 @@ class Run:
                 "stop": repr(case.stop), "interval": repr(case.interval), "tolerance": repr(case.tolerance),
                 "output": str(self.output), "experiment": str(experiment_file),
                 "start_values": " ".join(f"{name}={value!r}" for name, value in case.start_values.items()),
-                "fmi_version": case.fmi, "case": case.name}
+                "fmi_version": case.fmi, "case": case.name,
+                "interface_type": "ModelExchange" if case.interface == "me" else "CoSimulation",
+                "start_value_pairs": " ".join(f"{name} {value!r}" for name, value in case.start_values.items())}
 
     def as_json(self) -> dict[str, object]:
         """What ``experiment.json`` holds: every placeholder's value, start values as a mapping."""

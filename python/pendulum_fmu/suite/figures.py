@@ -60,7 +60,7 @@ def case_png(result: CaseResult) -> bytes | None:
     axes.set_ylabel("error (rad)")
     axes.set_title(f"{result.case.name}: {result.status}", fontsize=10)
     axes.grid(True, which="major", alpha=0.3)
-    axes.legend(fontsize=7, loc="lower right")
+    axes.legend(fontsize=7, loc="best")
     figure.tight_layout()
     buffer = io.BytesIO()
     figure.savefig(buffer, format="png")

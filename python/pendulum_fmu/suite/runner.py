@@ -17,6 +17,8 @@ from pendulum_fmu.suite.judging import Judged, judge_pendulum, judge_split_resul
 from pendulum_fmu.suite.process import run_command
 
 Status = Literal["passed", "failed", "error"]
+CANNOT_RUN = 3
+"""The exit status of a built-in engine's child that cannot run a case (:mod:`pendulum_fmu.suite.engine_child`)."""
 DEFAULT_TIMEOUT = 120.0
 """Seconds a case's run may take before it is killed and reported as an error."""
 
@@ -111,6 +113,8 @@ def run_case(adapter: Adapter, case: Case, out: Path, timeout: float, fmus: dict
         said, seconds = finished.tail, finished.seconds
         (folder / "output.txt").write_text(said + "\n")
         last = said.strip().splitlines()[-1] if said.strip() else "no output"
+        if finished.returncode == CANNOT_RUN and last.startswith("cannot run: "):  # a built-in engine's refusal
+            return CaseResult(case, "error", f"ERROR: {last}", folder, None, seconds, output=said)
         if finished.timed_out or finished.returncode != 0:
             return CaseResult(case, "error", f"ERROR: {finished.describe()}: {last}", folder, None, seconds,
                               output=said)
