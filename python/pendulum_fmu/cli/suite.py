@@ -73,6 +73,8 @@ def configure(parser: argparse.ArgumentParser) -> None:
                                                         "(default: every case the adapter runs)")
     run.add_argument("--timeout", type=float, default=120.0, metavar="S",
                      help="seconds a case's run may take before it is killed (default 120)")
+    run.add_argument("--jobs", type=int, default=2, metavar="N",
+                     help="engine runs side by side (default 2; the judging is one at a time)")
     run.add_argument("--master", metavar="NAME", help="for the split cases of --results: the reference master "
                                                       "the engine implements, e.g. jacobi-zoh")
     run.add_argument("--fmu", type=Path, action="append", default=None, metavar="PATH",
@@ -169,6 +171,8 @@ def run(args: argparse.Namespace) -> int:
         return 0
     if not args.timeout > 0:
         raise UsageError("--timeout", f"must be > 0, got {args.timeout:g}")
+    if args.jobs < 1:
+        raise UsageError("--jobs", f"must be >= 1, got {args.jobs}")
     try:
         if args.engine is not None:
             adapter = adapters.engine(args.engine)
@@ -195,7 +199,7 @@ def run(args: argparse.Namespace) -> int:
     from pendulum_fmu.suite.session import run_and_report, suite_name
 
     print(f"{suite_name()}: {len(chosen)} cases with {adapter.version()}", file=sys.stderr, flush=True)
-    results = run_and_report(adapter, chosen, args.out, args.timeout, _progress, _fmus(args.fmu))
+    results = run_and_report(adapter, chosen, args.out, args.timeout, _progress, _fmus(args.fmu), args.jobs)
     passed = sum(r.status == "passed" for r in results)
     print(f"{passed} of {len(results)} cases passed; {args.out / 'junit.xml'}, {args.out / 'report.html'}, "
           f"{args.out / 'summary.json'}")

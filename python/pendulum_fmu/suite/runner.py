@@ -6,6 +6,7 @@ from __future__ import annotations
 import os
 import time
 from collections.abc import Callable
+from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Literal
@@ -19,6 +20,8 @@ from pendulum_fmu.suite.process import run_command
 Status = Literal["passed", "failed", "error"]
 CANNOT_RUN = 3
 """The exit status of a built-in engine's child that cannot run a case (:mod:`pendulum_fmu.suite.engine_child`)."""
+DEFAULT_JOBS = 2
+"""Engine processes run side by side by default (the judging is one at a time)."""
 DEFAULT_TIMEOUT = 120.0
 """Seconds a case's run may take before it is killed and reported as an error."""
 
@@ -90,45 +93,54 @@ def _environment(adapter: Adapter) -> dict[str, str]:
     return {**env, **adapter.environment}
 
 
-def run_case(adapter: Adapter, case: Case, out: Path, timeout: float, fmus: dict[int, Path] | None = None) -> CaseResult:
-    """Run (or find) one case's result and judge it; every failure becomes the result's status."""
+@dataclass(frozen=True)
+class _Executed:
+    """A run that left a result file, to be judged."""
+
+    case: Case
+    folder: Path
+    output: Path
+    fmu: Path
+    seconds: float
+    said: str
+
+
+def _execute(adapter: Adapter, case: Case, out: Path, timeout: float, fmu: Path) -> CaseResult | _Executed:
+    """Run (or find) one case's result; a run that went wrong is already its :class:`CaseResult`."""
     folder = out / "cases" / case.name
     folder.mkdir(parents=True, exist_ok=True)
     if case.kind not in adapter.kinds:
         return CaseResult(case, "error", f"ERROR: {adapter.name} runs one FMU, not the split pendulum's SSP", folder)
-    fmu = _fmu_for(case, fmus or {})
     output = folder / "result.csv"
     output.unlink(missing_ok=True)
     run = Run(case, fmu, output)
     experiment = run.write(folder / "experiment.json")
-    said, seconds = "", 0.0
     if adapter.name == "results":
         found = _result_file(adapter, case, folder)
         if found is None:
             return CaseResult(case, "error", f"ERROR: no result file {case.name}.csv (or one CSV in {case.name}/) "
                               f"in {adapter.results}", folder)
-        output = found
-    else:
-        finished = run_command(adapter.command(run, experiment), timeout, _environment(adapter))
-        said, seconds = finished.tail, finished.seconds
-        (folder / "output.txt").write_text(said + "\n")
-        last = said.strip().splitlines()[-1] if said.strip() else "no output"
-        if finished.returncode == CANNOT_RUN and last.startswith("cannot run: "):  # a built-in engine's refusal
-            return CaseResult(case, "error", f"ERROR: {last}", folder, None, seconds, output=said)
-        if finished.timed_out or finished.returncode != 0:
-            return CaseResult(case, "error", f"ERROR: {finished.describe()}: {last}", folder, None, seconds,
-                              output=said)
-        if not output.is_file() or output.stat().st_size == 0:
-            return CaseResult(case, "error", f"ERROR: {finished.describe()} but no result at {output}: {last}",
-                              folder, None, seconds, output=said)
-    return _judge(adapter, case, folder, output, fmu, seconds, said)
+        return _Executed(case, folder, found, fmu, 0.0, "")
+    finished = run_command(adapter.command(run, experiment), timeout, _environment(adapter))
+    said, seconds = finished.tail, finished.seconds
+    (folder / "output.txt").write_text(said + "\n")
+    last = said.strip().splitlines()[-1] if said.strip() else "no output"
+    if finished.returncode == CANNOT_RUN and last.startswith("cannot run: "):  # a built-in engine's refusal
+        return CaseResult(case, "error", f"ERROR: {last}", folder, None, seconds, output=said)
+    if finished.timed_out or finished.returncode != 0:
+        return CaseResult(case, "error", f"ERROR: {finished.describe()}: {last}", folder, None, seconds, output=said)
+    if not output.is_file() or output.stat().st_size == 0:
+        return CaseResult(case, "error", f"ERROR: {finished.describe()} but no result at {output}: {last}",
+                          folder, None, seconds, output=said)
+    return _Executed(case, folder, output, fmu, seconds, said)
 
 
-def _judge(adapter: Adapter, case: Case, folder: Path, output: Path, fmu: Path, seconds: float,
-           said: str) -> CaseResult:
+def _judge(adapter: Adapter, executed: _Executed) -> CaseResult:
     from pendulum_fmu.errors import UsageError
     from pendulum_fmu.judge import ReadError
 
+    case, folder, output, fmu, seconds, said = (executed.case, executed.folder, executed.output, executed.fmu,
+                                                executed.seconds, executed.said)
     began = time.perf_counter()
     try:
         judged = judge_pendulum(case, output, fmu) if case.kind == "pendulum" else \
@@ -142,15 +154,27 @@ def _judge(adapter: Adapter, case: Case, folder: Path, output: Path, fmu: Path, 
 
 def run_suite(adapter: Adapter, cases: list[Case], out: Path, timeout: float = DEFAULT_TIMEOUT,
               progress: Callable[[int, int, CaseResult], None] | None = None,
-              fmus: dict[int, Path] | None = None) -> list[CaseResult]:
-    """Every case in turn; ``progress(k, n, result)`` after each; ``fmus``: Pendulum.fmu by FMI major version."""
+              fmus: dict[int, Path] | None = None, jobs: int = DEFAULT_JOBS) -> list[CaseResult]:
+    """Every case; ``progress(k, n, result)`` after each, in the cases' order.
+
+    ``jobs`` engine processes run side by side (each case's run is a process of its own); the
+    results are judged one by one, in order, in this process. ``fmus``: ``Pendulum.fmu`` by FMI
+    major version, instead of the one the package finds.
+    """
     from pendulum_fmu.judge.standard_files import write_verdict_file
 
+    found = {key: _fmu_for(case, fmus or {}) for case in cases
+             for key in [(case.kind, case.fmi_major)]}  # found (or built) once, before any run starts
     results = []
-    for k, case in enumerate(cases, 1):
-        result = run_case(adapter, case, out, timeout, fmus)
-        write_verdict_file(result.folder, {"passed": "passed", "failed": "failed", "error": "rejected"}[result.status])
-        results.append(result)
-        if progress is not None:
-            progress(k, len(cases), result)
+    with ThreadPoolExecutor(max_workers=max(1, jobs)) as pool:
+        futures = [pool.submit(_execute, adapter, case, out, timeout, found[(case.kind, case.fmi_major)])
+                   for case in cases]
+        for k, future in enumerate(futures, 1):
+            executed = future.result()
+            result = executed if isinstance(executed, CaseResult) else _judge(adapter, executed)
+            write_verdict_file(result.folder, {"passed": "passed", "failed": "failed",
+                                               "error": "rejected"}[result.status])
+            results.append(result)
+            if progress is not None:
+                progress(k, len(cases), result)
     return results

@@ -10,7 +10,7 @@ from __future__ import annotations
 import argparse
 from types import ModuleType
 
-from pendulum_fmu.cli.bench import accuracy, exact, fmi_versions, judge, masters, solvers, speed, sweep
+from pendulum_fmu.cli.bench import accuracy, exact, fmi_versions, judge, masters, solvers, speed, suite, sweep
 
 NAME = "bench"
 HELP = "benchmarks: exact evaluation, work-precision of the solvers, sweep throughput"
@@ -21,9 +21,10 @@ examples:
   pendulum-fmu bench accuracy
   pendulum-fmu bench exact -n 100000
   pendulum-fmu bench sweep --runs 1000 --workers 1 2
+  pendulum-fmu bench suite
 """
 
-PARSED: tuple[ModuleType, ...] = (solvers, accuracy, exact, fmi_versions, judge, masters, speed, sweep)
+PARSED: tuple[ModuleType, ...] = (solvers, accuracy, exact, fmi_versions, judge, masters, speed, sweep, suite)
 """Benchmarks with ``NAME``, ``HELP``, ``DESCRIPTION``, ``EPILOG``, ``configure`` and ``run``."""
 
 
