@@ -51,10 +51,7 @@ and {start_value_pairs} (name value name value ..., as fmpy's --start-values tak
 
 def configure(parser: argparse.ArgumentParser) -> None:
     """Add ``suite list``, ``suite run`` and ``suite table``."""
-    from pendulum_fmu.cli.main import OneLineParser
-
-    actions = parser.add_subparsers(dest="suite_action", metavar="ACTION", title="actions", required=True,
-                                    parser_class=OneLineParser)
+    actions = parser.add_subparsers(dest="suite_action", metavar="ACTION", title="actions", required=True)
     listing = actions.add_parser("list", help="print the cases, one a line: name, FMI version, interface, what it "
                                               "catches", description="Print the cases, one a line.")
     listing.add_argument("--cases", metavar="PATTERN", help="only the cases matching these comma-separated shell "

@@ -53,7 +53,7 @@ def table_markdown(runs: dict[str, list[CaseResult]], versions: dict[str, str]) 
              "([Suite](suite.md#the-split-pendulums-cases)).", "",
              "| case | " + " | ".join(engines) + " |", "|---|" + "---|" * len(engines)]
     for name in names:
-        row = [cell(by_engine[e][name]) if name in by_engine[e] else "not run" for e in engines]
+        row = [cell(by_engine[e][name]) if name in by_engine[e] else "n/a: runs one FMU" for e in engines]
         lines.append(f"| `{name}` | " + " | ".join(_escape(c) for c in row) + " |")
     totals = [sum(r.status == "passed" for r in runs[e]) for e in engines]
     lines.append("| **passed** | " + " | ".join(f"**{t} of {len(runs[e])}**" for t, e in zip(totals, engines)) + " |")
