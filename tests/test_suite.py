@@ -333,3 +333,26 @@ def test_the_compatibility_table_covers_every_case_and_engine() -> None:
         row = next(line for line in page.splitlines() if line.startswith(f"| `{case.name}` |"))
         assert row.count("|") == len(ENGINES) + 2, row
     assert os.environ.get("PENDULUM_FMU") is None or page.startswith("<!-- written by")
+
+
+def test_a_junit_library_reads_the_report(tmp_path: Path, fmu_path: Path) -> None:
+    """junitparser (5.0.3, to be pinned in python/requirements.lock) reads what CI reads."""
+    junitparser = pytest.importorskip("junitparser")
+    results = tmp_path / "results"
+    results.mkdir()
+    (results / "cs2-baseline.csv").write_text("not a result\n")
+    _write(results / "cs2-uneven-interval.csv", _run(fmu_path, "cs2-uneven-interval")[:-1])
+    done = _cli("run", "--results", str(results), "--cases", "cs2-baseline,cs2-uneven-interval,cs2-rotation",
+                "--out", str(tmp_path / "out"))
+    assert done.returncode == 1
+    summary = {c["name"]: c for c in json.loads((tmp_path / "out" / "summary.json").read_text())["cases"]}
+    report = junitparser.JUnitXml.fromfile(str(tmp_path / "out" / "junit.xml"))
+    seen = {}
+    for suite in report:
+        assert suite.name == "pendulum-suite-1" and suite.tests == 3 and suite.failures == 1 and suite.errors == 2
+        for case in suite:
+            (verdict,) = case.result
+            seen[case.name] = (type(verdict).__name__, verdict.message)
+    assert seen == {"cs2-baseline": ("Error", summary["cs2-baseline"]["line"]),
+                    "cs2-uneven-interval": ("Failure", summary["cs2-uneven-interval"]["line"]),
+                    "cs2-rotation": ("Error", summary["cs2-rotation"]["line"])}

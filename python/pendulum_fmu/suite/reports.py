@@ -81,7 +81,8 @@ def report_html(results: list[CaseResult], suite: str, engine: str) -> str:
         png = case_png(result)
         image = (f"<img alt=\"theta's error against time for {anchor}\" src=\"data:image/png;base64,"
                  f"{base64.b64encode(png).decode()}\">") if png else "<p>(no result to draw)</p>"
-        tail = f"<pre>{html.escape(result.output)}</pre>" if result.output and result.status == "error" else ""
+        shown_tail = result.status == "error" and result.output.strip() and result.output.strip() not in result.line
+        tail = f"<pre>{html.escape(result.output)}</pre>" if shown_tail else ""
         sections.append(f"<div class=\"case\" id=\"{anchor}\"><h3>{anchor} <span class=\"{result.status}\">"
                         f"{result.status}</span></h3><p>{html.escape(case.catches)}</p>"
                         f"<p><code>{html.escape(result.line)}</code></p>{image}{tail}</div>")
