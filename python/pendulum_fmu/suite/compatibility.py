@@ -11,7 +11,7 @@ from __future__ import annotations
 import re
 import tempfile
 from collections.abc import Callable
-from datetime import datetime, timezone
+from datetime import UTC, datetime
 from pathlib import Path
 
 from pendulum_fmu.output.atomic import write_whole
@@ -46,7 +46,7 @@ def table_markdown(runs: dict[str, list[CaseResult]], versions: dict[str, str]) 
     by_engine = {engine: {r.case.name: r for r in results} for engine, results in runs.items()}
     lines = [f"<!-- written by '{COMMAND}'; do not edit by hand -->", "",
              f"# Compatibility: {suite_name()} in the engines that install here", "",
-             f"Measured {datetime.now(timezone.utc):%Y-%m-%d} on {machine()} by `{COMMAND}`.",
+             f"Measured {datetime.now(UTC):%Y-%m-%d} on {machine()} by `{COMMAND}`.",
              "Engines: " + ", ".join(f"`{engine}` ({versions[engine]})" for engine in engines) + ".",
              "A cell is the judge's verdict on the engine's result, or why the engine could not run the case",
              "(its own error). The split cases are judged against the master the engine claims",
@@ -56,7 +56,8 @@ def table_markdown(runs: dict[str, list[CaseResult]], versions: dict[str, str]) 
         row = [cell(by_engine[e][name]) if name in by_engine[e] else "n/a: runs one FMU" for e in engines]
         lines.append(f"| `{name}` | " + " | ".join(_escape(c) for c in row) + " |")
     totals = [sum(r.status == "passed" for r in runs[e]) for e in engines]
-    lines.append("| **passed** | " + " | ".join(f"**{t} of {len(runs[e])}**" for t, e in zip(totals, engines)) + " |")
+    counts = [f"**{t} of {len(runs[e])}**" for t, e in zip(totals, engines, strict=True)]
+    lines.append("| **passed** | " + " | ".join(counts) + " |")
     lines += ["", "## Every cell's line", ""]
     for engine in engines:
         lines += [f"### {engine}", ""]

@@ -11,8 +11,9 @@ import subprocess
 import sys
 import tempfile
 import uuid
+from collections.abc import Callable
 from pathlib import Path
-from typing import Any, Callable
+from typing import Any
 
 from pendulum_fmu.suite.experiment import OUTPUTS, CannotRun, write_csv
 

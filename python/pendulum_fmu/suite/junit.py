@@ -7,7 +7,7 @@ from __future__ import annotations
 import math
 import platform
 import xml.etree.ElementTree as ET
-from datetime import datetime, timezone
+from datetime import UTC, datetime
 from pathlib import Path
 
 from pendulum_fmu.output.atomic import write_whole
@@ -30,7 +30,7 @@ def junit_tree(results: list[CaseResult], suite: str, engine: str) -> ET.Element
                       errors=str(counts["error"]), time=f"{seconds:.3f}")
     testsuite = ET.SubElement(root, "testsuite", name=suite, tests=str(len(results)), failures=str(counts["failed"]),
                               errors=str(counts["error"]), skipped="0", time=f"{seconds:.3f}",
-                              timestamp=datetime.now(timezone.utc).strftime("%Y-%m-%dT%H:%M:%S"),
+                              timestamp=datetime.now(UTC).strftime("%Y-%m-%dT%H:%M:%S"),
                               hostname=platform.node() or "localhost")
     properties = ET.SubElement(testsuite, "properties")
     ET.SubElement(properties, "property", name="engine", value=engine)

@@ -37,8 +37,8 @@ class Finished:
 def run_command(command: list[str] | str, timeout: float, env: dict[str, str] | None = None) -> Finished:
     """Run ``command`` (words, or a line for ``bash -c``) in its own process group; kill the group at ``timeout``."""
     began = time.perf_counter()
-    shell = isinstance(command, str)
-    process = subprocess.Popen(["bash", "-c", command] if shell else command, stdout=subprocess.PIPE,
+    words = ["bash", "-c", command] if isinstance(command, str) else command
+    process = subprocess.Popen(words, stdout=subprocess.PIPE,
                                stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL, env=env, start_new_session=True)
     try:
         said, _ = process.communicate(timeout=timeout)

@@ -11,6 +11,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Literal
 
+from pendulum_fmu.judge.standard_files import Outcome
 from pendulum_fmu.suite.adapters import Adapter
 from pendulum_fmu.suite.cases import Case
 from pendulum_fmu.suite.experiment import Run
@@ -18,6 +19,9 @@ from pendulum_fmu.suite.judging import Judged, judge_pendulum, judge_split_resul
 from pendulum_fmu.suite.process import run_command
 
 Status = Literal["passed", "failed", "error"]
+OUTCOMES: dict[Status, Outcome] = {"passed": "passed", "failed": "failed", "error": "rejected"}
+"""The cross-check verdict file of each status: a run that went wrong, or a result that could not
+be read, is ``rejected``."""
 CANNOT_RUN = 3
 """The exit status of a built-in engine's child that cannot run a case (:mod:`pendulum_fmu.suite.engine_child`)."""
 DEFAULT_JOBS = 2
@@ -172,8 +176,7 @@ def run_suite(adapter: Adapter, cases: list[Case], out: Path, timeout: float = D
         for k, future in enumerate(futures, 1):
             executed = future.result()
             result = executed if isinstance(executed, CaseResult) else _judge(adapter, executed)
-            write_verdict_file(result.folder, {"passed": "passed", "failed": "failed",
-                                               "error": "rejected"}[result.status])
+            write_verdict_file(result.folder, OUTCOMES[result.status])
             results.append(result)
             if progress is not None:
                 progress(k, len(cases), result)
