@@ -27,7 +27,7 @@ examples:
   pendulum-fmu suite run --engine fmpy --out out/suite
   pendulum-fmu suite run --engine libcosim --cases 'cs2-*' --out out/libcosim
   pendulum-fmu suite run --out out/mine --cases 'cs*' \\
-      --command 'mytool --fmu {fmu} --from {start} --to {stop} --dt {interval} --rtol {tolerance} -o {output} {start_values}'
+      --command 'mytool {fmu} --from {start} --to {stop} --dt {interval} --rtol {tolerance} -o {output} {start_values}'
   pendulum-fmu suite run --results results/ --out out/judged
 """
 RUN_DESCRIPTION = """\
