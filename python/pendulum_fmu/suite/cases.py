@@ -60,11 +60,6 @@ class Case:
         """2 or 3."""
         return int(self.fmi[0])
 
-    @property
-    def steps(self) -> int:
-        """Output intervals from start to stop, the last one short when the interval does not divide."""
-        return math.ceil((self.stop - self.start) / self.interval - 1e-9)
-
     def describe(self) -> str:
         """``name  FMI 2.0  CS  what it catches``: the line of ``suite list``."""
         return f"{self.name:26s} FMI {self.fmi}  {self.interface.upper()}  {self.catches}"

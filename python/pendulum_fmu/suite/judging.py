@@ -3,7 +3,6 @@ the SSP, and the suite's own check that the result spans the experiment."""
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -105,20 +104,3 @@ def judge_split_result(csv: Path, master: str | None) -> Judged:
     return Judged(verdict.passed, text, verdict.error, ratio,
                   {"macro_step": verdict.H, "behaves_as": verdict.master or "", "claimed_master": master or "",
                    "bound": FACTOR * best if best else None})
-
-
-def error_curve(case: Case, csv: Path) -> tuple[np.ndarray, np.ndarray] | None:
-    """Times and |theta - exact| of a Pendulum result, for its figure; None when unreadable."""
-    from pendulum_fmu.fmu.library import exact
-    from pendulum_fmu.judge.reading import ReadError, read_result
-
-    try:
-        result = read_result(csv)
-    except (ReadError, OSError, ValueError):
-        return None
-    if "theta" not in result.values:
-        return None
-    v = case.start_values
-    theta, _ = exact(v["theta"], v["omega"], v["L"], v["g"], result.time - case.start)
-    error = np.abs(result.values["theta"] - theta)
-    return result.time, np.where(np.isfinite(error), error, math.nan)
