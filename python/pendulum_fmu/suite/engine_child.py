@@ -1,7 +1,7 @@
 """Run one case in one engine, in a process of its own: ``python -m pendulum_fmu.suite.engine_child
 ENGINE EXPERIMENT.json``. The runner starts it, so a crash, an abort or a hang of the engine ends
-that process only (libcosim aborts its process on an FMU error; /work/shared facts in
-docs/suite.md). Writes the experiment's ``output`` CSV; exits 3 with one line on stderr when the
+that process only (libcosim aborts its process on an FMU error and segfaults on an FMI 3.0
+FMU; docs/suite.md). Writes the experiment's ``output`` CSV; exits 3 with one line on stderr when the
 engine cannot run the case."""
 
 from __future__ import annotations
