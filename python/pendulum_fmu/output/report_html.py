@@ -43,6 +43,10 @@ class Section:
         The table, already formatted; no table when ``header`` is empty.
     figures : sequence of Figure
         PNGs below the table.
+    left_columns : sequence of int
+        Table columns of text, aligned left (0-based).
+    nowrap : bool
+        Keep every cell of the table on one line.
     """
 
     title: str
@@ -50,6 +54,8 @@ class Section:
     header: Sequence[str] = ()
     rows: Sequence[Sequence[str]] = ()
     figures: Sequence[Figure] = ()
+    left_columns: Sequence[int] = ()
+    nowrap: bool = False
 
 
 def _figure_html(folder: Path, figure: Figure) -> str:
@@ -60,11 +66,17 @@ def _figure_html(folder: Path, figure: Figure) -> str:
             f'<figcaption>{caption} (<a href="{link}">{link}</a>)</figcaption></figure>')
 
 
-def table_html(header: Sequence[str], rows: Sequence[Sequence[str]]) -> str:
-    """An HTML table of strings, escaped."""
+def table_html(header: Sequence[str], rows: Sequence[Sequence[str]], left_columns: Sequence[int] = (),
+               nowrap: bool = False) -> str:
+    """An HTML table of strings, escaped; the cells of ``left_columns`` (0-based) aligned left
+    (text), the others right (numbers); ``nowrap`` keeps every cell on one line."""
     head = "".join(f"<th>{html.escape(cell)}</th>" for cell in header)
-    body = "\n".join("<tr>" + "".join(f"<td>{html.escape(cell)}</td>" for cell in row) + "</tr>" for row in rows)
-    return f'<table class="results">\n<thead><tr>{head}</tr></thead>\n<tbody>\n{body}\n</tbody>\n</table>'
+    left = ' style="text-align: left"'
+    body = "\n".join("<tr>" + "".join(f"<td{left if k in left_columns else ''}>{html.escape(cell)}</td>"
+                                       for k, cell in enumerate(row)) + "</tr>" for row in rows)
+    style = ' style="white-space: nowrap"' if nowrap else ""
+    return (f'<table class="results"{style}>\n<thead><tr>{head}</tr></thead>\n<tbody>\n{body}\n</tbody>\n'
+            "</table>")
 
 
 def write_html_report(path: Path, title: str, intro: Sequence[str], table_title: str, header: Sequence[str],
@@ -107,7 +119,7 @@ def write_html_report(path: Path, title: str, intro: Sequence[str], table_title:
         parts.append(f"<h2>{html.escape(section.title)}</h2>")
         parts += [f"<p>{html.escape(paragraph)}</p>" for paragraph in section.paragraphs]
         if section.header:
-            parts.append(table_html(section.header, section.rows))
+            parts.append(table_html(section.header, section.rows, section.left_columns, section.nowrap))
         parts += [_figure_html(folder, figure) for figure in section.figures]
     if files:
         parts.append("<h2>Files</h2><ul>")

@@ -21,6 +21,7 @@ from pendulum_fmu.errors import SimulationError
 from pendulum_fmu.fmu.runner import FmuRunner, Trajectory, reference_period
 from pendulum_fmu.spec import CS_SOLVERS, Method, Pendulum, TimeGrid
 from pendulum_fmu.study.seed import ME_TOLERANCE
+from pendulum_fmu.study.speed import microseconds
 
 EXACT_ERROR = 5e-14
 """The exact port's own error bound, the room the certificate leaves (CERTIFICATE_EXACT_ERROR)."""
@@ -31,6 +32,9 @@ LONG_PERIODS_ME = 1_000.0
 take about half a minute here, more than the whole study; the table says so."""
 LARGE_START_S = 1e9
 """The large start time, s (about 32 years: a time's last bit is 1.2e-7 s)."""
+QUICK_S = 0.02
+"""A run quicker than this, s, is run :data:`QUICK_REPEATS` times more and timed best of all."""
+QUICK_REPEATS = 2
 ROTATION_EXCESS = 1e-9
 """The rotation just above the separatrix: omega0 = 2 w0 (1 + this), theta0 = 0."""
 
@@ -143,9 +147,8 @@ class HardRun:
     def _status(self) -> str:
         if self.method.interface == "ME":
             if self.steps_beyond:
-                return (f"not certified (ME): {self.steps_beyond} of {self.points} points beyond 100 tol, "
-                        "no FMU warning possible")
-            return "not certified (ME): every point within 100 tol"
+                return f"UNCERTIFIED (ME): {self.steps_beyond} of {self.points} points beyond 100 tol"
+            return f"uncertified (ME): all {self.points} points within 100 tol"
         warned = self.certificate_warnings + self.hard_case_warnings
         if self.steps_beyond and not warned:
             return f"SILENT: {self.steps_beyond} of {self.points} steps beyond the bound and no warning"
@@ -155,8 +158,8 @@ class HardRun:
         if self.certificate_warnings:
             parts.append(f"{self.certificate_warnings} certificate messages")
         if self.hard_case_warnings:
-            parts.append("hard case (solution qualitatively wrong)")
-        return ", ".join(parts)
+            parts.append("hard case")
+        return "; ".join(parts)
 
 
 def certificate_departures(run: Trajectory, exact_error: float = EXACT_ERROR) -> np.ndarray:
@@ -227,32 +230,30 @@ def run_hard_cases(runner: FmuRunner, points_per_period: int,
             periods = case.me_periods if method.interface == "ME" and case.me_periods else case.periods
             grid = TimeGrid(periods, "periods", points_per_period)
             try:
-                rows.append(assess(case, runner.run(case.pendulum, method, grid, start_time=case.start_time)))
+                run = runner.run(case.pendulum, method, grid, start_time=case.start_time)
+                for _ in range(QUICK_REPEATS if run.wall_time < QUICK_S else 0):   # the same run: best wall time
+                    again = runner.run(case.pendulum, method, grid, start_time=case.start_time)
+                    run = again if again.wall_time < run.wall_time else run
+                rows.append(assess(case, run))
             except SimulationError as failure:
                 rows.append(HardRun(case, method, periods, math.nan, 0, 0, 0, 0, "", 0, math.nan, str(failure)))
     return rows
 
 
-HARD_HEADER = ("case", "method", "periods", "max abs(theta - theta_exact) (rad)", "steps certified?",
+HARD_HEADER = ("case", "method", "periods", "max abs(theta - theta_exact) (rad)", "every step certified?",
                "rhs evaluations", "wall per period (us)")
 """The hard cases' table."""
 
 
-def _microseconds(seconds: float) -> str:
-    """A wall time in us: three digits, or whole microseconds in groups of three from 1000 up."""
-    if not math.isfinite(seconds):
-        return "-"
-    value = seconds * 1e6
-    return f"{value:,.0f}".replace(",", " ") if value >= 1000 else f"{value:.3g}"
-
-
 def hard_rows(runs: list[HardRun]) -> list[tuple[str, ...]]:
-    """One row of :data:`HARD_HEADER` per run."""
+    """One row of :data:`HARD_HEADER` per run; a case is named on its first row only."""
     rows = []
-    for run in runs:
-        wall = _microseconds(run.wall_per_period)
+    for k, run in enumerate(runs):
+        first = k == 0 or runs[k - 1].case != run.case
+        wall = microseconds(run.wall_per_period)
         error = f"{run.max_error:.2e}" if math.isfinite(run.max_error) else "-"
-        rows.append((run.case.name, run.method.label, f"{run.periods:g}", error, run.verdict,
+        method = f"{run.method.solver} ({run.method.interface}, tol {run.method.effective_tolerance:g})"
+        rows.append((run.case.name if first else "", method, f"{run.periods:g}", error, run.verdict,
                      f"{run.rhs_evaluations:,}".replace(",", " "), wall))
     return rows
 

@@ -43,9 +43,9 @@ def speed_text(speed: SpeedStudy) -> list[str]:
     amplitudes = ", ".join(f"{a:g}" for a in speed.amplitudes_deg)
     return [
         (f"Every solver at the seed's amplitudes ({amplitudes} deg from rest, {speed.periods:g} exact periods each, "
-         f"50 points a period): the FMU's four Co-Simulation solvers at tolerances {CS_TOLERANCES[0]:g} to "
-         f"{CS_TOLERANCES[-1]:g}, Model Exchange through fmpy's CVODE at {ME_TOLERANCES[0]:g} to "
-         f"{ME_TOLERANCES[-1]:g}. Error: the largest max |theta - theta_exact| of the four runs. Cost: their "
+         f"50 points a period): the FMU's four Co-Simulation solvers at tolerances {CS_TOLERANCES[0]:.0e} to "
+         f"{CS_TOLERANCES[-1]:.0e}, Model Exchange through fmpy's CVODE at {ME_TOLERANCES[0]:.0e} to "
+         f"{ME_TOLERANCES[-1]:.0e}. Error: the largest max |theta - theta_exact| of the four runs. Cost: their "
          "right-hand-side evaluations (the FMU's stats.rhs_evaluations; CVODE's fmi2GetDerivatives calls, its "
          "Jacobian's included), machine-independent, and their wall time per simulated period on this machine "
          "(Co-Simulation best of 3). A cell is the cost to reach the error level, read off the method's "
@@ -64,7 +64,7 @@ def hard_text(hard: list[HardRun]) -> list[str]:
          f"separatrix, a creep over the top, a long run ({LONG_PERIODS:g} periods; CVODE {LONG_PERIODS_ME:g}, "
          f"since its Python call per evaluation would take about half a minute for all) and a start at "
          f"t0 = {LARGE_START_S:g} s. A Co-Simulation step returns OK only within 100 tol of the exact solution "
-         "(the certificate, docs/certificate.md); 'steps certified?' counts the steps beyond that bound, "
+         "(the certificate, docs/certificate.md); 'every step certified?' counts the steps beyond that bound, "
          "recomputed from the run's outputs by the certificate's rule, and the warnings the FMU logged for "
          "them (a message at the first crossing and at each tenfold growth; 'hard case' when the solution is "
          "qualitatively wrong). Model Exchange is integrated by the importer, which the FMU cannot certify: "
@@ -142,10 +142,10 @@ def write_html(out: Path, rows: list[tuple[str, ...]], periods: float, speed: Sp
                    "with the exact solution's cost as the floor); one marker a tolerance, the loosest and the "
                    "tightest labelled")
         sections.append(Section("Speed against error", speed_text(speed), SPEED_HEADER, speed_rows(speed),
-                                (Figure(SPEED_FIGURE, caption),)))
+                                (Figure(SPEED_FIGURE, caption),), left_columns=(0,), nowrap=True))
         files.append(("speed.csv", "every method at every tolerance: error, evaluations, wall time"))
     if hard is not None:
-        sections.append(Section("Hard cases", hard_text(hard), HARD_HEADER, hard_rows(hard)))
+        sections.append(Section("Hard cases", hard_text(hard), HARD_HEADER, hard_rows(hard), left_columns=(0, 1, 4)))
         files.append(("hard_cases.csv", "every hard-case run: error, certificate, warnings, cost"))
     return write_html_report(out / "report.html", "The seed's study: the nonlinear pendulum at 75-90 deg", intro,
                              "Error table", TABLE_HEADER, rows, figures, files, sections)

@@ -208,7 +208,7 @@ def fastest_sentence(study: SpeedStudy) -> str:
         if by_wall is None:
             parts.append(f"{level:.0e} rad: none of the methods reaches it")
             continue
-        text = f"{level:.0e} rad: {by_wall[0]} ({by_wall[1] * 1e6:.3g} us a period)"
+        text = f"{level:.0e} rad: {by_wall[0]} ({microseconds(by_wall[1])} us a period)"
         if by_rhs is not None and by_rhs[0] != by_wall[0]:
             text += f", though {by_rhs[0]} needs the fewest evaluations"
         parts.append(text)
@@ -216,8 +216,16 @@ def fastest_sentence(study: SpeedStudy) -> str:
             "period on this machine): " + "; ".join(parts) + ".")
 
 
-SPEED_HEADER = ("method", *(f"error {level:.0e}" for level in LEVELS), "best error (rad)", "at tol")
+SPEED_HEADER = ("method", *(f"error {level:.0e}" for level in LEVELS), "best error (rad) at tol")
 """The table: per method, evaluations (and microseconds per period) to reach each level."""
+
+
+def microseconds(seconds: float) -> str:
+    """A wall time in us: three digits, or whole microseconds in groups of three from 1000 up."""
+    if not math.isfinite(seconds):
+        return "-"
+    value = seconds * 1e6
+    return f"{value:,.0f}".replace(",", " ") if value >= 1000 else f"{value:.3g}"
 
 
 def speed_rows(study: SpeedStudy) -> list[tuple[str, ...]]:
@@ -229,20 +237,17 @@ def speed_rows(study: SpeedStudy) -> list[tuple[str, ...]]:
         cells = []
         for level in LEVELS:
             rhs, wall = cost_at(points, level, "rhs_evaluations"), cost_at(points, level, "wall_per_period")
-            cells.append("-" if not math.isfinite(rhs) else f"{rhs:,.0f} ({wall * 1e6:.3g} us)".replace(",", " "))
+            cells.append("-" if not math.isfinite(rhs) else f"{rhs:,.0f} ({microseconds(wall)} us)".replace(",", " "))
         failed = [p for p in study.points if p.method == method and p.failure]
-        if points:
-            best = min(points, key=lambda p: p.max_error)
-            tail = (f"{best.max_error:.2e}", f"{best.tolerance:g}")
-        else:
-            tail = ("-", "-")
+        best = min(points, key=lambda p: p.max_error) if points else None
+        tail = f"{best.max_error:.2e} at {best.tolerance:.0e}" if best is not None else "-"
         if failed:
-            tail = (tail[0], tail[1] + f" (failed at tol {', '.join(f'{p.tolerance:g}' for p in failed)})")
-        rows.append((label, *cells, *tail))
+            tail += f" (failed at tol {', '.join(f'{p.tolerance:.0e}' for p in failed)})"
+        rows.append((label, *cells, tail))
     floor = study.floor
-    floor_cell = (f"0 ({floor.wall_per_period * 1e6:.3g} us)" if math.isfinite(floor.wall_per_period)
+    floor_cell = (f"0 ({microseconds(floor.wall_per_period)} us)" if math.isfinite(floor.wall_per_period)
                   else floor.note)
-    rows.append(("exact solution (floor)", *([floor_cell] * len(LEVELS)), "5e-14 (bound)", "-"))
+    rows.append(("exact solution (floor)", *([floor_cell] * len(LEVELS)), "5e-14 (its bound)"))
     return rows
 
 

@@ -42,7 +42,7 @@ def plot_work_precision(study: SpeedStudy, path: Path) -> None:
         PNG to write.
     """
     with plt.rc_context(STYLE):
-        fig, (ax_rhs, ax_wall) = plt.subplots(1, 2, figsize=(13.0, 6.2), sharex=True, constrained_layout=True)
+        fig, (ax_rhs, ax_wall) = plt.subplots(1, 2, figsize=(13.0, 7.0), sharex=True, constrained_layout=True)
         for method in METHODS:
             points = curve(study.points, method)
             if not points:
@@ -73,8 +73,8 @@ def plot_work_precision(study: SpeedStudy, path: Path) -> None:
         ax_rhs.set_title("cost in evaluations of sin (machine-independent)")
         ax_wall.set_ylabel("wall time per simulated period (us)")
         ax_wall.set_title("cost in wall time (this machine)")
-        ax_rhs.legend(loc="upper left", fontsize=9)
-        ax_wall.legend(loc="upper left", fontsize=9)
+        handles, labels = ax_wall.get_legend_handles_labels()   # one legend for both, below them
+        fig.legend(handles, labels, loc="outside lower center", ncol=3, fontsize=10)
         amplitudes = ", ".join(f"{a:g}" for a in study.amplitudes_deg)
         fig.suptitle(f"Speed against error: {amplitudes} deg from rest, {study.periods:g} periods each; "
                      "markers are tolerances (the loosest and tightest labelled)")
