@@ -140,7 +140,7 @@ def write_html(out: Path, rows: list[tuple[str, ...]], periods: float, speed: Sp
         caption = ("Speed against error: max |theta - theta_exact| over the seed's amplitudes (more accurate to the "
                    "right) against right-hand-side evaluations (left) and wall time per simulated period (right, "
                    "with the exact solution's cost as the floor); one marker a tolerance, the loosest and the "
-                   "tightest labelled")
+                   "tightest labelled on the left")
         sections.append(Section("Speed against error", speed_text(speed), SPEED_HEADER, speed_rows(speed),
                                 (Figure(SPEED_FIGURE, caption),), left_columns=(0,), nowrap=True))
         files.append(("speed.csv", "every method at every tolerance: error, evaluations, wall time"))
