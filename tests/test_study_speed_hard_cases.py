@@ -136,7 +136,7 @@ def test_the_fastest_sentence_names_the_cheapest_cell(study: dict) -> None:
         cells = [c.strip() for c in line.strip().strip("|").split("|")]
         if len(cells) != len(LEVELS) + 2 or "(" not in cells[0] or cells[0].startswith("exact"):
             continue
-        for level, cell in zip(LEVELS, cells[1:]):
+        for level, cell in zip(LEVELS, cells[1:], strict=False):
             if cell != "-":
                 walls[level][cells[0].split(" ")[0]] = float(re.search(r"\(([\d .e+]+) us\)", cell)[1].replace(" ", ""))
     assert all(len(walls[level]) >= 3 for level in LEVELS[:3])

@@ -247,7 +247,7 @@ HARD_HEADER = ("case", "method", "periods", "max abs(theta - theta_exact) (rad)"
 
 def hard_rows(runs: list[HardRun]) -> list[tuple[str, ...]]:
     """One row of :data:`HARD_HEADER` per run; a case is named on its first row only."""
-    rows = []
+    rows: list[tuple[str, ...]] = []
     for k, run in enumerate(runs):
         first = k == 0 or runs[k - 1].case != run.case
         wall = microseconds(run.wall_per_period)

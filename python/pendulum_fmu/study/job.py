@@ -10,10 +10,16 @@ from pathlib import Path
 from pendulum_fmu.fmu.runner import FmuRunner
 from pendulum_fmu.study.figures import plot_comparison_grid, plot_period_ratio, plot_solutions
 from pendulum_fmu.study.hard_cases import HARD_HEADER, hard_rows, hard_summary, run_hard_cases
-from pendulum_fmu.study.report import (SPEED_FIGURE, markdown_table, write_html, write_report,
-                                       write_speed_and_hard_cases)
-from pendulum_fmu.study.seed import SEED_AMPLITUDES_DEG, format_table, period_curve, run_study, table_rows, write_csv
-from pendulum_fmu.study.seed import POINTS_PER_PERIOD
+from pendulum_fmu.study.report import SPEED_FIGURE, markdown_table, write_html, write_report, write_speed_and_hard_cases
+from pendulum_fmu.study.seed import (
+    POINTS_PER_PERIOD,
+    SEED_AMPLITUDES_DEG,
+    format_table,
+    period_curve,
+    run_study,
+    table_rows,
+    write_csv,
+)
 from pendulum_fmu.study.speed import SPEED_HEADER, fastest_sentence, measure_speed, speed_rows
 from pendulum_fmu.study.speed_figure import plot_work_precision
 

@@ -7,11 +7,28 @@ from collections.abc import Sequence
 from pathlib import Path
 
 from pendulum_fmu.output.report_html import Figure, Section, write_html_report
-from pendulum_fmu.study.hard_cases import (CSV_COLUMNS, HARD_HEADER, LARGE_START_S, LONG_PERIODS, LONG_PERIODS_ME,
-                                           HardRun, hard_record, hard_rows, hard_summary)
+from pendulum_fmu.study.hard_cases import (
+    CSV_COLUMNS,
+    HARD_HEADER,
+    LARGE_START_S,
+    LONG_PERIODS,
+    LONG_PERIODS_ME,
+    HardRun,
+    hard_record,
+    hard_rows,
+    hard_summary,
+)
 from pendulum_fmu.study.seed import ME_TOLERANCE, SEED_AMPLITUDES_DEG, TABLE_HEADER
-from pendulum_fmu.study.speed import (CS_TOLERANCES, ME_TOLERANCES, POINT_COLUMNS, SPEED_HEADER, SpeedStudy,
-                                      fastest_sentence, point_record, speed_rows)
+from pendulum_fmu.study.speed import (
+    CS_TOLERANCES,
+    ME_TOLERANCES,
+    POINT_COLUMNS,
+    SPEED_HEADER,
+    SpeedStudy,
+    fastest_sentence,
+    point_record,
+    speed_rows,
+)
 
 SPEED_FIGURE = "speed_vs_error.png"
 """The work-precision figure's file."""
@@ -48,7 +65,8 @@ def speed_text(speed: SpeedStudy) -> list[str]:
          f"{ME_TOLERANCES[-1]:.0e}. Error: the largest max |theta - theta_exact| of the four runs. Cost: their "
          "right-hand-side evaluations (the FMU's stats.rhs_evaluations; CVODE's fmi2GetDerivatives calls, its "
          "Jacobian's included), machine-independent, and their wall time per simulated period on this machine "
-         "(Co-Simulation best of 3). A cell is the cost to reach the error level, read off the method's "
+         "(best of 3 runs in Co-Simulation, of 2 through CVODE). A cell is the cost to reach the error level, "
+         "read off the method's "
          "cheapest points by log-log interpolation; '-': not reached at any tolerance. The floor is the exact "
          "solution's own cost, the FMU's Jacobi-elliptic evaluation at the same points, which evaluates no "
          "right-hand side."),
@@ -117,6 +135,10 @@ def write_html(out: Path, rows: list[tuple[str, ...]], periods: float, speed: Sp
          "zero crossings of the numerical theta."),
         f"Largest error: {worst[-1]} rad ({worst[1]}, {worst[0]} deg).",
     ]
+    if speed is not None and hard is not None:
+        intro.append("After the figures: speed against error (every solver over a range of tolerances, with the "
+                     "fastest at each error level) and the hard cases (near and over the top, long, late), "
+                     "each solver's error, certificate and cost.")
     figures = [
         Figure("fig3_numeric.png", "Figure 3: the numerical solution theta (FMU, Co-Simulation, rkn), one row per "
                                    "amplitude on one time axis in small-angle periods T0; triangles mark the end of "

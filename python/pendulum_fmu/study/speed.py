@@ -6,9 +6,9 @@ amplitudes (75, 80, 85, 90 deg from rest) on the study's grid (50 points a perio
 is one method at one tolerance: its error is the largest max |theta - theta_exact| of the
 four runs, its cost the sum of their right-hand-side evaluations (machine-independent: the
 FMU's ``stats.rhs_evaluations``, CVODE's ``fmi2GetDerivatives`` calls) and their wall time
-per simulated period (this machine; a Co-Simulation run is timed best of
-:data:`CS_REPEATS`, since one takes about a millisecond). The floor is the exact solution's
-own cost: the FMU's Jacobi-elliptic evaluation at the same output points
+per simulated period (this machine; a Co-Simulation run is timed best of :data:`CS_REPEATS`,
+since one takes about a millisecond, a CVODE run best of :data:`ME_REPEATS`). The floor is the
+exact solution's own cost: the FMU's Jacobi-elliptic evaluation at the same output points
 (:func:`pendulum_fmu.fmu.library.exact`, best of :data:`FLOOR_REPEATS`), no right-hand side.
 """
 
@@ -35,6 +35,8 @@ LEVELS: tuple[float, ...] = (1e-4, 1e-6, 1e-8, 1e-10, 1e-12)
 """Error levels (rad) of the table and of the fastest-method sentence."""
 CS_REPEATS = 3
 """A Co-Simulation run's wall time is the best of this many runs."""
+ME_REPEATS = 2
+"""A CVODE run's wall time is the best of this many runs."""
 FLOOR_REPEATS = 5
 """The floor's wall time is the best of this many evaluations."""
 
@@ -111,7 +113,7 @@ def _run_point(runner: FmuRunner, method: str, tolerance: float, pendulums: list
                grid: TimeGrid) -> SpeedPoint:
     """One method at one tolerance over every amplitude (a failed run gives a NaN error and its reason)."""
     error, rhs, steps, wall, periods = 0.0, 0, 0, 0.0, 0.0
-    repeats = CS_REPEATS if method != "cvode" else 1
+    repeats = CS_REPEATS if method != "cvode" else ME_REPEATS
     for pendulum in pendulums:
         try:
             runs = [runner.run(pendulum, Method(method, tolerance), grid) for _ in range(repeats)]

@@ -75,7 +75,7 @@ def plot_work_precision(study: SpeedStudy, path: Path) -> None:
         handles, labels = ax_wall.get_legend_handles_labels()   # one legend for both, below them
         fig.legend(handles, labels, loc="outside lower center", ncol=3, fontsize=10)
         amplitudes = ", ".join(f"{a:g}" for a in study.amplitudes_deg)
-        fig.suptitle(f"Speed against error: {amplitudes} deg from rest, {study.periods:g} periods each; "
-                     "markers are tolerances (the loosest and tightest labelled on the left)")
+        fig.suptitle(f"Speed against error: {amplitudes} deg from rest, {study.periods:g} periods each\n"
+                     "one marker a tolerance (the loosest and the tightest labelled on the left)", fontsize=13)
         fig.savefig(path, dpi=110)
         plt.close(fig)

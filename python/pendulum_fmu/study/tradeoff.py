@@ -53,7 +53,7 @@ def cost_to_reach(front: list[tuple[float, float]], error: float) -> float:
         return math.inf
     if front[0][0] <= error:
         return front[0][1]
-    for (e0, c0), (e1, c1) in zip(front, front[1:]):
+    for (e0, c0), (e1, c1) in zip(front, front[1:], strict=False):   # neighbours
         if e1 <= error <= e0:
             w = math.log(e0 / error) / math.log(e0 / e1)
             return math.exp((1.0 - w) * math.log(c0) + w * math.log(c1))
