@@ -270,3 +270,27 @@ def test_both_fmi_versions_count_cvode_calls_and_start_late(fmu_any: Path) -> No
     truth = true_theta(pendulum, late.result["time"], 1e9)
     assert np.max(np.abs(late.result["theta_exact"] - truth)) <= 1e-12
     assert np.all(np.abs(late.result["theta"] - truth) <= 100 * 1e-8 * np.maximum(1.0, np.abs(truth)))
+
+
+def test_a_failed_or_silent_run_is_said_in_its_row() -> None:
+    """The verdicts' logic on made-up rows: a failure, a step beyond the bound with no warning, a
+    run that ended early and a Model Exchange run beyond 100 tol each say so in words."""
+    from pendulum_fmu.study.hard_cases import HardRun
+    from pendulum_fmu.study.speed import Floor, SpeedPoint, SpeedStudy, speed_rows
+
+    case = hard_cases()[0]
+    cs, me = Method("rkn"), Method("cvode", 1e-10)
+    assert HardRun(case, cs, 10, math.nan, 0, 0, 0, 0, "", 0, math.nan, "DoStep returned Error").verdict \
+        == "FAILED: DoStep returned Error"
+    assert HardRun(case, cs, 10, 1e-3, 3, 500, 0, 0, "", 9, 1e-5, asked_points=500).verdict.startswith(
+        "SILENT: 3 of 500 steps beyond the bound")
+    assert HardRun(case, cs, 10, 1e-3, 3, 500, 1, 0, "certificate: ...", 9, 1e-5, asked_points=500).verdict \
+        == "WARNED: 3 of 500 steps beyond the bound; 1 certificate message"
+    assert HardRun(case, me, 9, 1e-3, 450, 450, 0, 0, "", 9, 1e-5, asked_points=500).verdict == \
+        "ENDED EARLY after 450 of 500 points; UNCERTIFIED (ME): 450 of 450 points beyond 100 tol"
+    points = (SpeedPoint("rkn", 1e-6, 1e-9, 100, 5, 1e-5, 40.0),
+              SpeedPoint("rkn", 1e-8, math.nan, 0, None, math.nan, 0.0, "DoStep returned Error"))
+    rows = speed_rows(SpeedStudy(points, Floor(math.nan, 2004, "not measured: no library"), AMPLITUDES, 10.0))
+    rkn = next(row for row in rows if row[0] == "rkn (CS)")
+    assert rkn[-1] == "1.00e-09 at 1e-06 (failed at tol 1e-08)"
+    assert rows[-1][1] == "not measured: no library"

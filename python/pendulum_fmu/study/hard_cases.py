@@ -156,7 +156,8 @@ class HardRun:
             return f"certified: all {self.points} steps OK"
         parts = [f"WARNED: {self.steps_beyond} of {self.points} steps beyond the bound"]
         if self.certificate_warnings:
-            parts.append(f"{self.certificate_warnings} certificate messages")
+            plural = "s" if self.certificate_warnings != 1 else ""
+            parts.append(f"{self.certificate_warnings} certificate message{plural}")
         if self.hard_case_warnings:
             parts.append("hard case")
         return "; ".join(parts)
