@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The documentation's figures, docs/img/*.png, each drawn by the command the page names beside it:
-#   study_*.png        pendulum-fmu study (Figures 3-5 and the period ratio)
+#   study_*.png        pendulum-fmu study (Figures 3-5, the period ratio, speed against error)
 #   judge_cs_rk4.png   pendulum-fmu judge --plot, an rk4 run at tol 1e-6 (simulate) judged against the certificate
 #   judge_me_euler.png pendulum-fmu judge --interface ME --plot, fmpy's explicit Euler at h = 0.01 (a FAIL)
 #   bench_wp_P1.png    pendulum-fmu bench solvers --problems P1 --quick (the work-precision figure)
@@ -25,9 +25,9 @@ work="$(mktemp -d -t pendulum-docs-images-XXXXXX)"
 trap 'rm -rf "$work"' EXIT
 say() { echo "docs-images.sh: $*" >&2; }
 
-say "[1/5] the study's figures (pendulum-fmu study, about 15 s) ..."
+say "[1/5] the study's figures (pendulum-fmu study, about 30 s) ..."
 "$BIN/pendulum-fmu" study --fmu "$FMU" --out "$work/study" > /dev/null
-for figure in fig3_numeric fig4_exact fig5_overlay period_ratio; do
+for figure in fig3_numeric fig4_exact fig5_overlay period_ratio speed_vs_error; do
     cp "$work/study/$figure.png" "$work/study_$figure.png"
 done
 

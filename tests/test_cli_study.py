@@ -52,20 +52,21 @@ def study_dir(fmu_path: Path, tmp_path_factory: pytest.TempPathFactory) -> Path:
 
 
 def test_study_writes_the_seed_files_and_the_html_report(study_dir: Path) -> None:
-    for name in ("fig3_numeric.png", "fig4_exact.png", "fig5_overlay.png", "period_ratio.png"):
+    for name in ("fig3_numeric.png", "fig4_exact.png", "fig5_overlay.png", "period_ratio.png", "speed_vs_error.png"):
         with Image.open(study_dir / name) as image:
             assert image.format == "PNG" and image.size[0] > 800, name
     assert (study_dir / "runs.csv").read_text().startswith("interface,amplitude_deg,time_s,w0t,")
     assert "| 90 | ME |" in (study_dir / "report.md").read_text()
     parser = _Tables()
     parser.feed((study_dir / "report.html").read_text())
-    assert len(parser.images) == 4 and all(src.startswith("data:image/png;base64,") for src in parser.images)
+    # the seed's four figures and the speed-against-error figure
+    assert len(parser.images) == 5 and all(src.startswith("data:image/png;base64,") for src in parser.images)
 
 
 def test_html_table_matches_the_fmu_outputs(study_dir: Path, fmu_path: Path) -> None:
     parser = _Tables()
     parser.feed((study_dir / "report.html").read_text())
-    header, *rows = parser.rows
+    header, *rows = parser.rows[:9]   # the error table comes first (speed and hard cases follow)
     assert tuple(header) == TABLE_HEADER
     assert sorted((float(r[0]), r[1]) for r in rows) == sorted((a, i) for a in (75.0, 80.0, 85.0, 90.0)
                                                                 for i in ("CS", "ME"))

@@ -34,7 +34,7 @@ MATH_PAGES = {"index", "math", "certificate", "importers", "derivatives", "split
 # The figures each page must show (docs/img/, drawn by scripts/docs-images.sh).
 FIGURES = {
     "study": {"study_fig3_numeric.png", "study_fig4_exact.png", "study_fig5_overlay.png",
-              "study_period_ratio.png"},
+              "study_period_ratio.png", "study_speed_vs_error.png"},
     "index": {"study_fig5_overlay.png"},
     "math": {"study_period_ratio.png"},
     "certificate": {"judge_cs_rk4.png"},

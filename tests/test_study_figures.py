@@ -20,7 +20,7 @@ CONSTANTS = r"L = 1 m, g = 9.81 m/s$^2$, $T_0 = 2\pi\sqrt{L/g}$ = 2.006 s"
 
 @pytest.fixture(scope="module")
 def figures(fmu_path: Path, tmp_path_factory: pytest.TempPathFactory) -> list[Figure]:
-    """Figures 3, 4, 5 and the period ratio, in the order the study draws them."""
+    """Figures 3, 4, 5, the period ratio and speed against error, in the order the study draws them."""
     kept: list[Figure] = []
     close = plt.close
     patch = pytest.MonkeyPatch()
@@ -30,12 +30,12 @@ def figures(fmu_path: Path, tmp_path_factory: pytest.TempPathFactory) -> list[Fi
         assert main(["study", "--out", str(out), "--fmu", str(fmu_path), "--periods", "2"]) == 0
     finally:
         patch.undo()
-    assert len(kept) == 4
+    assert len(kept) == 5
     return kept
 
 
 def test_figures_3_to_5_share_t_over_t0_and_state_l_g_t0(figures: list[Figure]) -> None:
-    fig3, fig4, fig5, _ = figures
+    fig3, fig4, fig5, _, _ = figures
     for figure in (fig3, fig4):
         assert "$t / T_0$" in figure.axes[-1].get_xlabel() and CONSTANTS in figure.axes[-1].get_xlabel()
     assert CONSTANTS in fig5.get_suptitle()
@@ -72,3 +72,22 @@ def test_the_period_notes_sit_inside_the_axes_clear_of_the_curve(figures: list[F
     assert any(r"$\theta_0$ in rad" in str(line.get_label()) for line in left.get_lines())
     assert not any(tick.gridline.get_visible() for tick in right.xaxis.get_minor_ticks()), "a minor grid"
     assert any(tick.gridline.get_visible() for tick in right.xaxis.get_major_ticks())
+
+
+def test_speed_against_error_has_every_method_the_floor_and_the_error_axis_reversed(figures: list[Figure]) -> None:
+    """Both panels: log axes, the error growing to the left (more accurate to the right), the
+    five methods in their colours; the floor only where it means something, on wall time."""
+    figure = figures[4]
+    evaluations, wall = figure.axes
+    for ax in (evaluations, wall):
+        assert ax.get_xscale() == ax.get_yscale() == "log"
+        low, high = ax.get_xlim()
+        assert low > high, "the error axis is not reversed"
+        curves = {line.get_color() for line in ax.get_lines() if len(np.asarray(line.get_xdata())) >= 5}
+        assert {"tab:blue", "tab:red", "tab:green", "tab:purple", "tab:orange"} <= curves
+    floors = [line for line in wall.get_lines() if line.get_linestyle() == "-." and "floor" in str(line.get_label())]
+    assert len(floors) == 1 and float(np.asarray(floors[0].get_ydata())[0]) > 0
+    assert not [line for line in evaluations.get_lines() if "floor" in str(line.get_label())]
+    labels = [text.get_text() for text in figure.legends[0].get_texts()]
+    assert labels[:5] == ["dopri5 (CS, FMU)", "rk4 (CS, FMU)", "rkn (CS, FMU)", "symplectic (CS, FMU)",
+                          "CVODE (ME, fmpy)"]

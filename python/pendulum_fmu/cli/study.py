@@ -8,14 +8,20 @@ import sys
 from pendulum_fmu.cli.arguments import add_fmu_argument, output_folder, positive
 
 NAME = "study"
-HELP = "the seed's study: 75-90 deg, Figures 3-5, period ratio, error table, HTML report"
+HELP = "the seed's study: 75-90 deg, Figures 3-5, period ratio, error table, speed against error, hard cases"
 DESCRIPTION = """\
 The seed's study (the README's main job): build the FMU, release the pendulum from rest at
 75, 80, 85 and 90 deg, simulate it in Co-Simulation (the FMU's default solver, rkn, at its
 default tolerance 1e-8) and in Model Exchange (fmpy's CVODE at 1e-10), and write to --out:
 Figures 3-5 (theta against t/T0: numerical, exact, overlaid), the period ratio T/T0 against
-amplitude up to 179.999999 deg, runs.csv, report.md and report.html (table and figures in one
-page). The error table is printed.
+amplitude up to 179.999999 deg, runs.csv, report.md and report.html (tables and figures in one
+page). Then speed against error: every solver (dopri5, rk4, rkn, symplectic; CVODE) at the seed's
+amplitudes over a range of tolerances, its error and cost (right-hand-side evaluations, wall time
+per period) against the exact solution's cost (speed_vs_error.png, speed.csv); and the hard cases
+(releases at 179.9 and 179.9999 deg, a rotation just above the separatrix, a creep over the top,
+10,000 periods, a start at t0 = 1e9 s): each solver's error, whether every step was certified or
+which warned, and its cost (hard_cases.csv). The tables and the fastest method at each error
+level are printed.
 """
 EPILOG = """\
 examples:
@@ -48,6 +54,8 @@ def run(args: argparse.Namespace) -> int:
     with whole_folder(args.out) as partial:
         outcome = write_study(args.fmu, partial, args.periods, progress)
     print(outcome.table)
+    print(f"\nSpeed against error (10 periods at each amplitude):\n\n{outcome.speed_table}\n\n{outcome.fastest}")
+    print(f"\nHard cases:\n\n{outcome.hard_table}\n\n{outcome.hard_summary}")
     if outcome.warnings:
         print(f"warning: the FMU warned during the study (column fmu_warning of runs.csv): "
               f"{'; '.join(outcome.warnings)}", file=sys.stderr)

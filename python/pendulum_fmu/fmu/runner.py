@@ -77,6 +77,12 @@ class Trajectory:
         Seconds spent in the run (initialization to the last output).
     warnings : tuple of str
         The messages the FMU logged with status fmi2Warning during the run, in order.
+    derivative_calls : int or None
+        Model Exchange: the calls of ``fmi2GetDerivatives`` (``fmi3GetContinuousStateDerivatives``)
+        during the run, the importer's right-hand-side evaluations (CVODE's finite-difference
+        Jacobian's included); None in Co-Simulation.
+    start_time : float
+        The experiment's start time, s: the first output time (the grid's times are after it).
     """
 
     pendulum: Pendulum
@@ -89,6 +95,8 @@ class Trajectory:
     rhs_evaluations: int | None
     wall_time: float
     warnings: tuple[str, ...] = ()
+    derivative_calls: int | None = None
+    start_time: float = 0.0
 
     @property
     def theta_error(self) -> np.ndarray:
@@ -236,13 +244,13 @@ class FmuRunner:
         self._model_used = True
         return self._model
 
-    def _initialize(self, instance: Any, pendulum: Pendulum, method: Method) -> None:
-        """Experiment, start values, initialization."""
+    def _initialize(self, instance: Any, pendulum: Pendulum, method: Method, start_time: float = 0.0) -> None:
+        """Experiment (from ``start_time``, s), start values, initialization."""
         values = pendulum.start_values()
         references = [self.vr[name] for name in values]
         solver = [CS_SOLVERS.index(method.solver) + 1] if method.interface == "CS" else None
         if self.fmi_version == 2:
-            instance.setupExperiment(tolerance=method.effective_tolerance, startTime=0.0)
+            instance.setupExperiment(tolerance=method.effective_tolerance, startTime=start_time)
             instance.setReal(references, list(values.values()))
             if solver:
                 instance.setInteger([self.vr["solver"]], solver)
@@ -252,11 +260,11 @@ class FmuRunner:
         instance.setFloat64(references, list(values.values()))
         if solver:
             instance.setInt64([self.vr["solver"]], solver)   # an Enumeration is set as Int64 (FMI 3.0 2.2.6.1)
-        instance.enterInitializationMode(tolerance=method.effective_tolerance, startTime=0.0)
+        instance.enterInitializationMode(tolerance=method.effective_tolerance, startTime=start_time)
         instance.exitInitializationMode()
 
-    def _set_up(self, co_simulation: bool, pendulum: Pendulum, method: Method) -> Any:
-        """The runner's instance, fresh and initialized for ``pendulum`` and ``method``.
+    def _set_up(self, co_simulation: bool, pendulum: Pendulum, method: Method, start_time: float = 0.0) -> Any:
+        """The runner's instance, fresh and initialized for ``pendulum`` and ``method`` at ``start_time``.
 
         Raises
         ------
@@ -266,7 +274,7 @@ class FmuRunner:
         try:
             instance = self._fresh_slave() if co_simulation else self._fresh_model()
             self._log.clear()
-            self._initialize(instance, pendulum, method)
+            self._initialize(instance, pendulum, method, start_time)
         except Exception as error:  # fmpy raises FMICallException, ctypes may raise OSError
             raise SimulationError(f"the FMU failed to initialize {pendulum}: {self._reason(error)}") from error
         return instance
@@ -295,7 +303,7 @@ class FmuRunner:
         return value
 
     def run(self, pendulum: Pendulum, method: Method = DEFAULT_METHOD, grid: TimeGrid = DEFAULT_GRID,
-            plan: Callable[[float], object] | None = None) -> Trajectory:
+            plan: Callable[[float], object] | None = None, start_time: float = 0.0) -> Trajectory:
         """Simulate one problem.
 
         Parameters
@@ -310,6 +318,9 @@ class FmuRunner:
             Called with the period the grid counts in (:func:`reference_period`, s) once the
             FMU is initialized, before the first output point: a UsageError it raises stops
             the run (:func:`pendulum_fmu.sizing.planned_run` refuses a run too big there).
+        start_time : float
+            The experiment's start time, s (finite): the pendulum is at its initial state
+            then, and the grid's times count from it (``start_time + t``).
 
         Returns
         -------
@@ -325,11 +336,13 @@ class FmuRunner:
         RunInterrupted
             On Ctrl-C during a Co-Simulation run's output loop, with the points finished.
         """
+        if not math.isfinite(start_time):
+            raise UsageError("start_time", f"must be a finite number (s), got {start_time!r}")
         try:
             with deferred_interrupt():  # Ctrl-C inside a ctypes callback would be lost
                 if method.interface == "CS":
-                    return self._run_cs(pendulum, method, grid, plan)
-                return self._run_me(pendulum, method, grid, plan)
+                    return self._run_cs(pendulum, method, grid, plan, start_time)
+                return self._run_me(pendulum, method, grid, plan, start_time)
         except (SimulationError, UsageError):
             raise
         except MemoryError:
@@ -348,14 +361,16 @@ class FmuRunner:
         return " ".join(text.split())
 
     def _run_cs(self, pendulum: Pendulum, method: Method, grid: TimeGrid,
-                plan: Callable[[float], object] | None) -> Trajectory:
+                plan: Callable[[float], object] | None, start_time: float = 0.0) -> Trajectory:
         start = time.perf_counter()
-        slave = self._set_up(True, pendulum, method)
+        slave = self._set_up(True, pendulum, method, start_time)
         period = self._read(slave, "period")
         counted_in = reference_period(period, pendulum)
         if plan is not None:
             plan(counted_in)
         times = grid.times_array(counted_in)
+        if start_time != 0.0:
+            times = start_time + times
         result = np.empty(len(times), dtype=RESULT_DTYPE)
         result["time"] = times
         references = [self.vr[name] for name in RECORDED]
@@ -366,18 +381,20 @@ class FmuRunner:
         except driver.LoopInterrupted as interrupt:
             wall = time.perf_counter() - start
             raise RunInterrupted(Trajectory(pendulum, method, grid, period, result[:interrupt.done].copy(), None,
-                                            None, None, wall, self._log.warnings())) from None
+                                            None, None, wall, self._log.warnings(),
+                                            start_time=start_time)) from None
         steps, rejected, rhs = self._integers(slave, STATS)
         slave.terminate()
         wall = time.perf_counter() - start
-        return Trajectory(pendulum, method, grid, period, result, steps, rejected, rhs, wall, self._log.warnings())
+        return Trajectory(pendulum, method, grid, period, result, steps, rejected, rhs, wall, self._log.warnings(),
+                          start_time=start_time)
 
     def _run_me(self, pendulum: Pendulum, method: Method, grid: TimeGrid,
-                plan: Callable[[float], object] | None) -> Trajectory:
+                plan: Callable[[float], object] | None, start_time: float = 0.0) -> Trajectory:
         start = time.perf_counter()
         # The grid needs the period before the run, and fmpy's simulate_fmu initializes the
         # instance it is handed itself: ask the FMU, then start afresh.
-        model = self._set_up(False, pendulum, method)
+        model = self._set_up(False, pendulum, method, start_time)
         period = self._read(model, "period")
         model.terminate()
         model.reset()
@@ -386,15 +403,33 @@ class FmuRunner:
             plan(counted_in)
         times = grid.times(counted_in)
         interval = times[1] - times[0]
-        recorded = simulate_fmu(
-            self._unzipdir, model_description=self.model_description, fmu_instance=model,
-            fmi_type="ModelExchange", solver="CVode", start_time=0.0, stop_time=times[-1],
-            output_interval=interval, relative_tolerance=method.effective_tolerance,
-            start_values=pendulum.start_values(), output=list(RECORDED), validate=False,
-            record_events=False, step_finished=lambda *_: not interrupt_pending())
+        calls = [0]
+        derivatives = "getDerivatives" if self.fmi_version == 2 else "getContinuousStateDerivatives"
+        original = getattr(model, derivatives)
+
+        def counted(*args: Any) -> Any:   # fmpy's solver takes this attribute when the run starts
+            calls[0] += 1
+            return original(*args)
+
+        setattr(model, derivatives, counted)
+        try:
+            recorded = self._simulate_me(model, pendulum, method, start_time, times[-1], interval)
+        finally:
+            delattr(model, derivatives)   # the class's method again
         wall = time.perf_counter() - start
         result = np.empty(recorded.size, dtype=RESULT_DTYPE)
         for name in result.dtype.names or ():
             result[name] = recorded[name]
-        return Trajectory(pendulum, method, grid, period, result, None, None, None, wall, self._log.warnings())
+        return Trajectory(pendulum, method, grid, period, result, None, None, None, wall, self._log.warnings(),
+                          derivative_calls=calls[0], start_time=start_time)
+
+    def _simulate_me(self, model: Any, pendulum: Pendulum, method: Method, start_time: float, span: float,
+                     interval: float) -> Any:
+        """fmpy's ``simulate_fmu`` with CVODE on the initialized-once Model Exchange instance."""
+        return simulate_fmu(
+            self._unzipdir, model_description=self.model_description, fmu_instance=model,
+            fmi_type="ModelExchange", solver="CVode", start_time=start_time, stop_time=start_time + span,
+            output_interval=interval, relative_tolerance=method.effective_tolerance,
+            start_values=pendulum.start_values(), output=list(RECORDED), validate=False,
+            record_events=False, step_finished=lambda *_: not interrupt_pending())
 

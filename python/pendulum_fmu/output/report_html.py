@@ -29,6 +29,35 @@ class Figure:
     caption: str
 
 
+@dataclass(frozen=True)
+class Section:
+    """A further part of the page: a heading, paragraphs, a table and figures (each may be empty).
+
+    Attributes
+    ----------
+    title : str
+        The heading.
+    paragraphs : sequence of str
+        Plain text (escaped), above the table.
+    header, rows : sequences of str
+        The table, already formatted; no table when ``header`` is empty.
+    figures : sequence of Figure
+        PNGs below the table.
+    left_columns : sequence of int
+        Table columns of text, aligned left (0-based).
+    nowrap : bool
+        Keep every cell of the table on one line.
+    """
+
+    title: str
+    paragraphs: Sequence[str] = ()
+    header: Sequence[str] = ()
+    rows: Sequence[Sequence[str]] = ()
+    figures: Sequence[Figure] = ()
+    left_columns: Sequence[int] = ()
+    nowrap: bool = False
+
+
 def _figure_html(folder: Path, figure: Figure) -> str:
     data = base64.b64encode((folder / figure.file).read_bytes()).decode("ascii")
     caption = html.escape(figure.caption)
@@ -37,17 +66,23 @@ def _figure_html(folder: Path, figure: Figure) -> str:
             f'<figcaption>{caption} (<a href="{link}">{link}</a>)</figcaption></figure>')
 
 
-def table_html(header: Sequence[str], rows: Sequence[Sequence[str]]) -> str:
-    """An HTML table of strings, escaped."""
+def table_html(header: Sequence[str], rows: Sequence[Sequence[str]], left_columns: Sequence[int] = (),
+               nowrap: bool = False) -> str:
+    """An HTML table of strings, escaped; the cells of ``left_columns`` (0-based) aligned left
+    (text), the others right (numbers); ``nowrap`` keeps every cell on one line."""
     head = "".join(f"<th>{html.escape(cell)}</th>" for cell in header)
-    body = "\n".join("<tr>" + "".join(f"<td>{html.escape(cell)}</td>" for cell in row) + "</tr>" for row in rows)
-    return f'<table class="results">\n<thead><tr>{head}</tr></thead>\n<tbody>\n{body}\n</tbody>\n</table>'
+    left = ' style="text-align: left"'
+    body = "\n".join("<tr>" + "".join(f"<td{left if k in left_columns else ''}>{html.escape(cell)}</td>"
+                                       for k, cell in enumerate(row)) + "</tr>" for row in rows)
+    style = ' style="white-space: nowrap"' if nowrap else ""
+    return (f'<table class="results"{style}>\n<thead><tr>{head}</tr></thead>\n<tbody>\n{body}\n</tbody>\n'
+            "</table>")
 
 
 def write_html_report(path: Path, title: str, intro: Sequence[str], table_title: str, header: Sequence[str],
                       rows: Sequence[Sequence[str]], figures: Sequence[Figure],
-                      files: Sequence[tuple[str, str]] = ()) -> Path:
-    """Write one HTML page: the introduction, the table, then the figures.
+                      files: Sequence[tuple[str, str]] = (), sections: Sequence[Section] = ()) -> Path:
+    """Write one HTML page: the introduction, the table, the figures, then further sections.
 
     Parameters
     ----------
@@ -65,6 +100,8 @@ def write_html_report(path: Path, title: str, intro: Sequence[str], table_title:
         PNGs embedded in the page (so it stands alone) and linked to their files.
     files : sequence of (str, str)
         Other files of the folder to list with a description.
+    sections : sequence of Section
+        Parts after the figures, each with its heading, text, table and figures.
 
     Returns
     -------
@@ -78,6 +115,12 @@ def write_html_report(path: Path, title: str, intro: Sequence[str], table_title:
     parts += [f"<p>{html.escape(paragraph)}</p>" for paragraph in intro]
     parts += [f"<h2>{html.escape(table_title)}</h2>", table_html(header, rows), "<h2>Figures</h2>"]
     parts += [_figure_html(folder, figure) for figure in figures]
+    for section in sections:
+        parts.append(f"<h2>{html.escape(section.title)}</h2>")
+        parts += [f"<p>{html.escape(paragraph)}</p>" for paragraph in section.paragraphs]
+        if section.header:
+            parts.append(table_html(section.header, section.rows, section.left_columns, section.nowrap))
+        parts += [_figure_html(folder, figure) for figure in section.figures]
     if files:
         parts.append("<h2>Files</h2><ul>")
         parts += [f'<li><a href="{html.escape(name)}">{html.escape(name)}</a>: {html.escape(text)}</li>'

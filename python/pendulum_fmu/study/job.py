@@ -1,4 +1,5 @@
-"""The whole study in one call: runs, figures, runs.csv, report.md and report.html."""
+"""The whole study in one call: runs, figures, speed against error, hard cases, CSV files, report.md
+and report.html."""
 
 from __future__ import annotations
 
@@ -8,16 +9,50 @@ from pathlib import Path
 
 from pendulum_fmu.fmu.runner import FmuRunner
 from pendulum_fmu.study.figures import plot_comparison_grid, plot_period_ratio, plot_solutions
-from pendulum_fmu.study.report import write_html, write_report
-from pendulum_fmu.study.seed import SEED_AMPLITUDES_DEG, format_table, period_curve, run_study, table_rows, write_csv
+from pendulum_fmu.study.hard_cases import HARD_HEADER, hard_rows, hard_summary, run_hard_cases
+from pendulum_fmu.study.report import SPEED_FIGURE, markdown_table, write_html, write_report, write_speed_and_hard_cases
+from pendulum_fmu.study.seed import (
+    POINTS_PER_PERIOD,
+    SEED_AMPLITUDES_DEG,
+    format_table,
+    period_curve,
+    run_study,
+    table_rows,
+    write_csv,
+)
+from pendulum_fmu.study.speed import SPEED_HEADER, fastest_sentence, measure_speed, speed_rows
+from pendulum_fmu.study.speed_figure import plot_work_precision
+
+SPEED_PERIODS = 10.0
+"""Periods of each speed-against-error run, whatever ``--periods`` says: the added work stays the same."""
 
 
 @dataclass(frozen=True)
 class StudyOutcome:
-    """What the study found: the Markdown error table and the FMU's warnings, if any."""
+    """What the study found.
+
+    Attributes
+    ----------
+    table : str
+        The seed's error table (Markdown).
+    warnings : tuple of str
+        The distinct warnings the FMU logged during the seed's runs.
+    fastest : str
+        The sentence naming the fastest method at each error level.
+    speed_table : str
+        Speed against error (Markdown).
+    hard_summary : str
+        The hard cases in one sentence: certified, warned, silent, failed.
+    hard_table : str
+        The hard cases (Markdown).
+    """
 
     table: str
     warnings: tuple[str, ...]
+    fastest: str = ""
+    speed_table: str = ""
+    hard_summary: str = ""
+    hard_table: str = ""
 
 
 def write_study(fmu: Path, out: Path, periods: float = 10.0,
@@ -38,7 +73,8 @@ def write_study(fmu: Path, out: Path, periods: float = 10.0,
     Returns
     -------
     StudyOutcome
-        The error table and the distinct warnings the FMU logged during the runs.
+        The report's tables and sentences, and the distinct warnings the FMU logged during the
+        seed's runs (the hard cases' warnings are in their table).
     """
     with FmuRunner(fmu) as runner:
         runs = run_study(runner, periods, progress)
@@ -57,11 +93,18 @@ def write_study(fmu: Path, out: Path, periods: float = 10.0,
     plot_comparison_grid(cs_runs, me_runs, out / "fig5_overlay.png")
     say("the period ratio (period_ratio.png)")
     plot_period_ratio(curve, SEED_AMPLITUDES_DEG, out / "period_ratio.png")
+    with FmuRunner(fmu) as runner:
+        speed = measure_speed(runner, SEED_AMPLITUDES_DEG, SPEED_PERIODS, POINTS_PER_PERIOD, progress)
+        hard = run_hard_cases(runner, POINTS_PER_PERIOD, progress)
+    say(f"speed against error ({SPEED_FIGURE}), speed.csv and hard_cases.csv")
+    plot_work_precision(speed, out / SPEED_FIGURE)
+    write_speed_and_hard_cases(out, speed, hard)
     say("runs.csv, report.md and report.html")
     write_csv(runs, out / "runs.csv")
     rows = table_rows(runs)
     table = format_table(rows)
-    write_report(out, table, periods)
-    write_html(out, rows, periods)
+    write_report(out, table, periods, speed, hard)
+    write_html(out, rows, periods, speed, hard)
     warnings = tuple(dict.fromkeys(w for run in runs for w in run.warnings))
-    return StudyOutcome(table, warnings)
+    return StudyOutcome(table, warnings, fastest_sentence(speed), markdown_table(SPEED_HEADER, speed_rows(speed)),
+                        hard_summary(hard), markdown_table(HARD_HEADER, hard_rows(hard)))

@@ -17,6 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from pendulum_fmu.bench.workprecision.runs import Run
+from pendulum_fmu.study.tradeoff import cost_to_reach, pareto_front
 
 
 @dataclass(frozen=True)
@@ -141,14 +142,10 @@ def front(points: list[Point], cost: str = "rhs_evaluations") -> list[tuple[floa
     Returns
     -------
     list of (float, float)
-        Errors strictly decreasing as the cost increases.
+        Errors strictly decreasing as the cost increases
+        (:func:`pendulum_fmu.study.tradeoff.pareto_front`).
     """
-    pairs = sorted((float(getattr(p, cost)), p.max_err) for p in points)
-    kept: list[tuple[float, float]] = []
-    for c, e in pairs:
-        if e > 0.0 and (not kept or e < kept[-1][0]):
-            kept.append((e, c))
-    return kept
+    return pareto_front((float(getattr(p, cost)), p.max_err) for p in points)
 
 
 def cost_at(points: list[Point], error: float, cost: str = "rhs_evaluations") -> float:
@@ -168,16 +165,7 @@ def cost_at(points: list[Point], error: float, cost: str = "rhs_evaluations") ->
     float
         The interpolated cost; +inf if no point reaches ``error``.
     """
-    kept = front(points, cost)
-    if not kept or kept[-1][0] > error:
-        return math.inf
-    if kept[0][0] <= error:
-        return kept[0][1]
-    for (e0, c0), (e1, c1) in zip(kept, kept[1:]):
-        if e1 <= error <= e0:
-            w = math.log(e0 / error) / math.log(e0 / e1)
-            return math.exp((1.0 - w) * math.log(c0) + w * math.log(c1))
-    return math.inf  # not reached: the loop covers every e between the first and last
+    return cost_to_reach(front(points, cost), error)
 
 
 def log_slope(points: list[Point]) -> float:
