@@ -70,6 +70,12 @@ const char *split_model_initialize(SplitInstance *inst);
 void split_model_advance(SplitInstance *inst, double h);
 /* The order-th time derivative (1 <= order <= max) of output vr at the current time. */
 const char *split_model_output_derivative(SplitInstance *inst, ValueReference vr, int order, double *value);
+/* What an FMU state of this model is (instance.h): the shared instance's ModelData and the input
+ * polynomial, marked with the model's own magic, checked by split_check_state. */
+extern const StateModel SPLIT_STATE_MODEL;
+/* The model's part of split_check_state, for a state past the checks both FMUs share: NULL, or
+ * why the exact solution, the solver or a state variable is not one this model can have. */
+const char *split_model_check_state(const ModelData *data, const ModelData *reset);
 
 /* --- shared by both FMUs (split.c), for the layers ----------------------------------------- */
 /* NULL, or why an instantiation is refused (name, token). */
@@ -77,6 +83,9 @@ const char *split_refusal(const char *name, const char *token);
 /* instance_setup, then the input at its start value. 0, or -1 when out of memory. */
 int split_setup(SplitInstance *inst, const char *name, int fmi_version, int logging_on);
 Status split_exit_initialization(SplitInstance *inst, const char *function);
+/* StateModel.check of both FMUs: NULL, or why a state (an untrusted copy of ModelData and the
+ * input polynomial) is refused by `inst`. */
+const char *split_check_state(const Instance *inst, const ModelData *data, const void *extra);
 
 /* Whether the experiment's tolerance is passed on to the core: the split FMUs run no solver
  * (Body integrates its input in closed form), so a valid tolerance below the core's
@@ -94,38 +103,9 @@ Status split_set_input_derivatives(SplitInstance *inst, const char *function, co
 Status split_output_derivatives(SplitInstance *inst, const char *function, const ValueReference vr[], size_t nvr,
                                 const int order[], double value[]);
 Status split_do_step(SplitInstance *inst, const char *function, double point, double step);
-/* A refusal of a function the capability flags say the FMU does not provide (FMU states,
- * partial derivatives), after the calling-sequence check. */
+/* A refusal of a function the capability flags say the FMU does not provide (partial
+ * derivatives, ...), after the calling-sequence check. */
 Status split_not_provided(SplitInstance *inst, const char *function, const char *reason);
 
-
-/* The six FMU-state functions of a layer (FMI 2.0 or 3.0 names and types, as
- * fmu_state_calls.h's DEFINE_FMU_STATE_CALLS takes them), each refused with `reason`. */
-#define DEFINE_NO_FMU_STATE_CALLS(StatusT, InstanceT, StateT, ByteT, Get, Set, Free, Size, Serialize, Deserialize, \
-                                  reason)                                                                         \
-    StatusT Get(InstanceT instance, StateT *state) {                                                              \
-        (void)state;                                                                                              \
-        return (StatusT)split_not_provided(instance, #Get, reason);                                               \
-    }                                                                                                             \
-    StatusT Set(InstanceT instance, StateT state) {                                                               \
-        (void)state;                                                                                              \
-        return (StatusT)split_not_provided(instance, #Set, reason);                                               \
-    }                                                                                                             \
-    StatusT Free(InstanceT instance, StateT *state) {                                                             \
-        (void)state;                                                                                              \
-        return (StatusT)split_not_provided(instance, #Free, reason);                                              \
-    }                                                                                                             \
-    StatusT Size(InstanceT instance, StateT state, size_t *size) {                                                \
-        (void)state, (void)size;                                                                                  \
-        return (StatusT)split_not_provided(instance, #Size, reason);                                              \
-    }                                                                                                             \
-    StatusT Serialize(InstanceT instance, StateT state, ByteT bytes[], size_t size) {                             \
-        (void)state, (void)bytes, (void)size;                                                                     \
-        return (StatusT)split_not_provided(instance, #Serialize, reason);                                         \
-    }                                                                                                             \
-    StatusT Deserialize(InstanceT instance, const ByteT bytes[], size_t size, StateT *state) {                    \
-        (void)bytes, (void)size, (void)state;                                                                     \
-        return (StatusT)split_not_provided(instance, #Deserialize, reason);                                       \
-    }
 
 #endif
