@@ -38,7 +38,7 @@ fmi2Status fmi2SetupExperiment(fmi2Component c, fmi2Boolean toleranceDefined, fm
 }
 
 /* FMU states (canGetAndSetFMUstate, canSerializeFMUstate): ModelData and the input polynomial
- * (SPLIT_STATE_MODEL), through the shared instance/state.c as Pendulum.fmu's. */
+ * (split.c), through the shared instance/state.c as Pendulum.fmu's. */
 DEFINE_FMU_STATE_CALLS(fmi2Status, fmi2Component, fmi2FMUstate, fmi2Byte, fmi2GetFMUstate, fmi2SetFMUstate,
                        fmi2FreeFMUstate, fmi2SerializedFMUstateSize, fmi2SerializeFMUstate, fmi2DeSerializeFMUstate)
 

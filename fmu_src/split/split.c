@@ -4,6 +4,7 @@
 #include "split.h"
 
 #include <math.h>
+#include <stddef.h>
 #include <string.h>
 
 /* The shared instance of a split instance: its first member, so NULL stays NULL (every
@@ -26,11 +27,19 @@ static void input_reset(SplitInstance *inst) {
     inst->input.d2 = 0.0;
 }
 
+static const char *check_state(const Instance *inst, const ModelData *data, const void *extra);
+
+/* An FMU state of either FMU (instance.h): the shared instance's ModelData and the input
+ * polynomial, marked with the model's own magic. */
+static const StateModel STATE_MODEL = {SPLIT_STATE_MAGIC, sizeof(InputPolynomial), offsetof(SplitInstance, input),
+                                       check_state};
+typedef char input_fits_a_state[sizeof(InputPolynomial) <= STATE_EXTRA_MAX ? 1 : -1];
+
 int split_setup(SplitInstance *inst, const char *name, int fmi_version, int logging_on) {
     if (instance_setup(CORE(inst), name, INTERFACE_CO_SIMULATION, fmi_version, logging_on) != 0) {
         return -1;
     }
-    inst->core.state_model = &SPLIT_STATE_MODEL;
+    inst->core.state_model = &STATE_MODEL;
     input_reset(inst);
     return 0;
 }
@@ -38,7 +47,9 @@ int split_setup(SplitInstance *inst, const char *name, int fmi_version, int logg
 /* The modes a state is taken in (GetFMUstate is refused in Error). */
 #define STATE_MODES (MODE_INSTANTIATED | MODE_INITIALIZATION | MODE_STEP_COMPLETE | MODE_TERMINATED)
 
-const char *split_check_state(const Instance *inst, const ModelData *data, const void *extra) {
+/* NULL, or why a state (an untrusted copy of ModelData and the input polynomial) is refused by
+ * `inst`: the checks both FMUs share, then the model's own (split_model_check_state). */
+static const char *check_state(const Instance *inst, const ModelData *data, const void *extra) {
     InputPolynomial u;
     ModelData reset;
     const unsigned mode = (unsigned)data->mode;

@@ -70,11 +70,11 @@ const char *split_model_initialize(SplitInstance *inst);
 void split_model_advance(SplitInstance *inst, double h);
 /* The order-th time derivative (1 <= order <= max) of output vr at the current time. */
 const char *split_model_output_derivative(SplitInstance *inst, ValueReference vr, int order, double *value);
-/* What an FMU state of this model is (instance.h): the shared instance's ModelData and the input
- * polynomial, marked with the model's own magic, checked by split_check_state. */
-extern const StateModel SPLIT_STATE_MODEL;
-/* The model's part of split_check_state, for a state past the checks both FMUs share: NULL, or
- * why the exact solution, the solver or a state variable is not one this model can have. */
+/* The 8 characters that mark a serialized FMU state of this model (split.c's StateModel). */
+extern const char SPLIT_STATE_MAGIC[];
+/* The model's part of the check of an FMU state (split.c), for a state past the checks both
+ * FMUs share: NULL, or why the exact solution, the solver or a state variable is not one this
+ * model can have. */
 const char *split_model_check_state(const ModelData *data, const ModelData *reset);
 
 /* --- shared by both FMUs (split.c), for the layers ----------------------------------------- */
@@ -83,9 +83,6 @@ const char *split_refusal(const char *name, const char *token);
 /* instance_setup, then the input at its start value. 0, or -1 when out of memory. */
 int split_setup(SplitInstance *inst, const char *name, int fmi_version, int logging_on);
 Status split_exit_initialization(SplitInstance *inst, const char *function);
-/* StateModel.check of both FMUs: NULL, or why a state (an untrusted copy of ModelData and the
- * input polynomial) is refused by `inst`. */
-const char *split_check_state(const Instance *inst, const ModelData *data, const void *extra);
 
 /* Whether the experiment's tolerance is passed on to the core: the split FMUs run no solver
  * (Body integrates its input in closed form), so a valid tolerance below the core's
