@@ -235,8 +235,14 @@ Status instance_deserialize_state(Instance *inst, const char *function, const ch
     memcpy(&payload, bytes + sizeof header, sizeof payload);
     memcpy(extra, bytes + sizeof header + sizeof payload, model->extra_size);
     if (memcmp(header.magic, model->magic, sizeof header.magic) != 0) {
-        return instance_fail(inst, function, "the blob is not a state of this FMU (it is marked %.8s, a state of "
-                             "this FMU %.8s)", header.magic, model->magic);
+        char mark[sizeof header.magic + 1];
+        size_t i;
+        for (i = 0; i < sizeof header.magic; i++) { /* printable in the log, whatever the blob holds */
+            mark[i] = header.magic[i] >= ' ' && header.magic[i] <= '~' ? header.magic[i] : '?';
+        }
+        mark[sizeof header.magic] = '\0';
+        return instance_fail(inst, function, "the blob is not a state of this FMU (it is marked \"%s\", a state of "
+                             "this FMU \"%.8s\")", mark, model->magic);
     }
     if (header.format_version != STATE_FORMAT_VERSION || header.payload_size != payload_size(inst)) {
         return instance_fail(inst, function, "the blob is not a state of this build of the FMU (format version %u, "

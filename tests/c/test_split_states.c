@@ -339,7 +339,9 @@ static void test_bad_blobs(const Binary *b, const Binary *other) {
     refused(b, foreign, size, "not a state of this FMU", "the other model's blob");
     memcpy(bad, blob, size);
     memcpy(bad, "PNDLSTAT", 8);
-    refused(b, bad, size, "not a state of this FMU", "Pendulum.fmu's marker");
+    refused(b, bad, size, "marked \"PNDLSTAT\"", "Pendulum.fmu's marker");
+    memcpy(bad, "\n\0\x7f" "ABCDE", 8);
+    refused(b, bad, size, "marked \"???ABCDE\"", "a marker that is not text, printed as text");
     memcpy(bad, blob, size);
     bad[8] ^= 1u;
     refused(b, bad, size, "format version", "another format version");
