@@ -9,7 +9,8 @@
  * state of this FMU are refused with an error and a logged reason: a wrong size, another
  * model's blob of the same size (Body's in Gravity, Pendulum.fmu's marker), a flipped bit, a
  * wrong format version, and forged blobs whose checksum is recomputed (FNV-1a written here
- * from its definition) but whose contents no instance can have. */
+ * from its definition) but whose contents no instance can have; and 3000 blobs with random
+ * bits flipped, each refused or taken whole, never read out of bounds. */
 #include <dlfcn.h>
 #include <math.h>
 #include <stdarg.h>
@@ -398,6 +399,54 @@ static void test_bad_blobs(const Binary *b, const Binary *other) {
     }
 }
 
+/* A blob with random bits flipped (every other one with its checksum recomputed, so that the
+ * contents are parsed): each is refused with an error or taken; a state taken is set and read
+ * without complaint (SetFMUstate checks what DeSerializeFMUstate checked). Run under ASan,
+ * UBSan and valgrind, so that no flip reads or writes out of bounds. */
+static void test_random_blobs(const Binary *b) {
+    unsigned char blob[4096], bad[4096];
+    size_t size = 0, n_values, i;
+    uint64_t seed = 0x9E3779B97F4A7C15u;
+    int k, taken = 0, refused_count = 0;
+    double values[16];
+    void *state = NULL, *c = instance(b, 1.1, -0.3);
+    check(set_input(b, c, -0.5, 0.25, 0.125) && step(b, c, 0.25, 0.2) == 0 && get_state(b, c, &state) == 0 &&
+          state_size(b, c, state, &size) == 0 && size <= sizeof blob && serialize(b, c, state, blob, size) == 0,
+          "FMI %d %s: a blob", b->version, model(b));
+    free_state(b, c, &state);
+    for (k = 0; k < 3000; k++) {
+        int flips = 1 + k % 3, f, status;
+        memcpy(bad, blob, size);
+        for (f = 0; f < flips; f++) {
+            seed ^= seed << 13, seed ^= seed >> 7, seed ^= seed << 17; /* xorshift64 */
+            bad[(size_t)(seed >> 8) % size] ^= (unsigned char)(1u << (seed & 7u));
+        }
+        if (k % 2 == 1) {
+            reseal(bad, size);
+        }
+        state = NULL;
+        status = deserialize(b, c, bad, size, &state);
+        check(status == 0 || (status == 3 && state == NULL), "FMI %d %s: random blob %d: status %d", b->version,
+              model(b), k, status);
+        if (status != 0) {
+            refused_count++;
+            continue;
+        }
+        taken++;
+        check(set_state(b, c, state) == 0, "FMI %d %s: random blob %d taken, but SetFMUstate refuses it: %s",
+              b->version, model(b), k, last_message);
+        n_values = outputs(b, c, values);
+        for (i = 0; i < n_values; i++) {
+            check(isfinite(values[i]), "FMI %d %s: random blob %d: output %zu is not finite", b->version, model(b), k,
+                  i);
+        }
+        free_state(b, c, &state);
+    }
+    check(taken > 10 && refused_count > 1000, "FMI %d %s: of 3000 random blobs %d taken, %d refused", b->version,
+          model(b), taken, refused_count);
+    free_instance(b, c);
+}
+
 int main(int argc, char **argv) {
     const char *paths[4] = {SPLIT_BODY2, SPLIT_GRAVITY2, SPLIT_BODY3, SPLIT_GRAVITY3};
     Binary binaries[4];
@@ -416,6 +465,7 @@ int main(int argc, char **argv) {
     for (k = 0; k < 4; k++) {
         test_rollback(&binaries[k]);
         test_bad_blobs(&binaries[k], &binaries[k ^ 1]);
+        test_random_blobs(&binaries[k]);
     }
     for (k = 0; k < 4; k++) {
         dlclose(binaries[k].dll);
