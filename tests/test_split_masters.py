@@ -80,10 +80,11 @@ def test_strong_coupling_converges_in_a_few_passes_and_reports_them() -> None:
     Beyond H = sqrt(12 L / g) the iteration cannot converge, and the run says so."""
     master = master_named("iterated-interpolation")
     coarse, fine = run_master(master, 0.1, STOP), run_master(master, 0.01, STOP)
-    assert coarse.converged and fine.converged
+    assert coarse.converged and fine.converged and coarse.iterations is not None and fine.iterations is not None
     assert 2 <= fine.iterations.max() <= 5 < coarse.iterations.max() < 15, (coarse.iterations, fine.iterations)
     assert coarse.iterations.shape == (20,) and fine.iterations.shape == (200,)
-    assert np.all(run_master(master_named("gauss-seidel-zoh"), 0.1, STOP).iterations == 1)
+    one_pass = run_master(master_named("gauss-seidel-zoh"), 0.1, STOP).iterations
+    assert one_pass is not None and np.all(one_pass == 1)
     # the fixed point: each step is Body's closed form for the quadratic input through alpha_k,
     # alpha'_k = -(g/L) cos(theta_k) omega_k and alpha_(k+1) = -(g/L) sin(theta_(k+1)) of the step's own end
     H, k = 0.01, 9.81  # noqa: N806
@@ -94,7 +95,8 @@ def test_strong_coupling_converges_in_a_few_passes_and_reports_them() -> None:
     assert np.max(np.abs(theta[:-1] + omega[:-1] * H + alpha[:-1] * H ** 2 / 2 + slope * H ** 3 / 6
                          + c * H ** 4 / 24 - theta[1:])) < 1e-13
     diverging = run_master(master, 1.5, 3.0)
-    assert not diverging.converged and diverging.iterations.max() == ITERATION_CAP
+    assert not diverging.converged and diverging.iterations is not None
+    assert diverging.iterations.max() == ITERATION_CAP
 
 
 def test_gauss_seidel_beats_jacobi_and_interpolation_beats_hold() -> None:

@@ -114,9 +114,9 @@ class Coupled:
         Body's exact pendulum at the same points.
     seconds : float
         Wall time of the stepping loop.
-    iterations : numpy.ndarray
-        The passes each macro step took (1 for a master that does not iterate); a step that
-        reached :data:`ITERATION_CAP` did not converge.
+    iterations : numpy.ndarray or None
+        The passes each macro step took (1 for a master that does not iterate; None where
+        not recorded: one each); a step that reached :data:`ITERATION_CAP` did not converge.
     """
 
     time: np.ndarray
@@ -126,12 +126,12 @@ class Coupled:
     theta_exact: np.ndarray
     omega_exact: np.ndarray
     seconds: float
-    iterations: np.ndarray
+    iterations: np.ndarray | None = None
 
     @property
     def converged(self) -> bool:
         """Whether every macro step converged before :data:`ITERATION_CAP` passes."""
-        return bool(np.all(self.iterations < ITERATION_CAP))
+        return self.iterations is None or bool(np.all(self.iterations < ITERATION_CAP))
 
     @property
     def error(self) -> float:
