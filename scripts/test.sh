@@ -13,7 +13,7 @@ run_step "$CMAKE_STAGES" cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Debug -
 run_step "$CMAKE_STAGES" cmake --build build-sanitize --parallel "$jobs"
 ctest --test-dir build-sanitize --output-on-failure
 echo "== valgrind memcheck of the FMI harness"
-harnesses=(test_fmi_api test_fmi_threads test_fmi3_api test_fmi_conformance test_fmi3_conformance)
+harnesses=(test_fmi_api test_fmi_threads test_fmi3_api test_fmi_conformance test_fmi3_conformance test_split_states)
 if ! command -v valgrind > /dev/null; then
     # skipped with its install command, unless PENDULUM_NO_SKIP=1 (CI, whose install script provides it)
     say "skipped: valgrind not found, install it with: apt-get install valgrind"

@@ -72,6 +72,11 @@ def simulate(scheme: str, coupling: str, H: float, stop: float, theta0: float = 
             back = history[max(0, len(history) - 1 - (lag or 0))]
             alpha = -k * math.sin(theta0 if drop else back)
             body_in = Input(alpha)
+        elif scheme == "iterated":
+            grav_in = Input(theta, omega, body_in.value)
+            alpha, first, _ = gravity(k, grav_in)
+            body_in = Input(alpha, first, _converged_curvature(k, theta, omega, alpha, first, h))
+            grav_in = Input(theta)  # the last pass set Gravity's input to the new theta, held
         else:
             jacobi = scheme == "jacobi" or (alternate and step % 2 == 1)
             if not jacobi:
@@ -102,6 +107,20 @@ def simulate(scheme: str, coupling: str, H: float, stop: float, theta0: float = 
         if drift:
             h *= 1 + drift
     return run
+
+
+def _converged_curvature(k: float, theta: float, omega: float, alpha: float, first: float, h: float) -> float:
+    """Strong coupling: the input's second derivative c for which alpha + first s + c s^2 / 2 ends at
+    -k sin(theta(h)), by fixed-point iteration on the end value b, c = 2 (b - alpha - first h) / h^2,
+    to within 8 ulps of k (2 + |theta(h)|) or 50 passes."""
+    end = alpha + first * h
+    for _ in range(50):
+        c = 2 * (end - alpha - first * h) / h ** 2
+        theta_h = theta + omega * h + alpha * h ** 2 / 2 + first * h ** 3 / 6 + c * h ** 4 / 24
+        end, before = -k * math.sin(theta_h), end
+        if abs(end - before) <= 8 * 2.0 ** -52 * k * (2 + abs(theta_h)):
+            break
+    return c
 
 
 def exact_columns(run: Run, theta0: float, omega0: float, L: float, g: float,  # noqa: N803

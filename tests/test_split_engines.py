@@ -109,3 +109,21 @@ def test_engines_own_csv_writers_are_judged(engine: str, tmp_path: Path) -> None
     verdict = judge_split(written[0])
     assert verdict.master == "jacobi-zoh" and verdict.passed, verdict.lines
     assert "theta0 = 1.308996939 rad (75 deg)" in verdict.lines[1]
+
+
+def test_fmi2_messages_after_a_container_run(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    """fmpy's FMI 2.0 logging proxy has one target, which the container run's own logger takes:
+    after the run, a message of another FMI 2.0 FMU (a refused call through ``Pair``) still
+    reaches fmpy's logger, not freed memory (which crashed the process)."""
+    from fmpy.fmi1 import FMICallException
+
+    from pendulum_fmu.split.pair import ALPHA, Pair, Problem
+
+    _skip_unless_installed("fmucontainer")
+    run_engine("fmucontainer", 0.01, 0.2, tmp_path / "container.csv", 2)
+    import gc
+
+    gc.collect()
+    with Pair(Problem(), 2) as pair, pytest.raises(FMICallException, match="status 3"):
+        pair.set(pair.body, ALPHA, math.nan)
+    assert "alpha (value reference 16) = nan: must be a finite number" in capsys.readouterr().out

@@ -30,6 +30,20 @@ typedef enum {
 typedef struct Instance Instance;
 typedef struct StateNode StateNode; /* an FMU state handed out (instance/state.c) */
 
+/* What an FMU state of a model holds beyond the instance's ModelData, and how a state handed
+ * back is checked (instance/state.c). A state is ModelData followed by `extra_size` bytes that
+ * lie `extra_offset` bytes into the layer's instance (the split FMUs' input polynomial), and a
+ * serialized state starts with `magic`, so a blob of another model is refused. An Instance
+ * whose state_model is NULL is Pendulum.fmu's: ModelData alone, checked by model_check_state. */
+#define STATE_EXTRA_MAX 64
+typedef struct {
+    const char *magic;  /* 8 characters */
+    size_t extra_size;  /* at most STATE_EXTRA_MAX */
+    size_t extra_offset;
+    /* NULL, or why `inst` refuses the state: data and extra are untrusted copies */
+    const char *(*check)(const Instance *inst, const ModelData *data, const void *extra);
+} StateModel;
+
 /* What the FMI layer supplies: its host's logger and memory, behind one signature, and a
  * pointer to the host's callbacks, so that one set of these functions serves every layer of
  * an FMI version (fmi2/host2.h, fmi3/layer.h) whatever its instance type. */
@@ -49,6 +63,7 @@ struct Instance {
     int log_enabled[LOG_CATEGORY_COUNT];
     StateNode *states;       /* the FMU states this instance handed out and has not freed:
                                 the registry FreeFMUstate checks a pointer against */
+    const StateModel *state_model; /* what its FMU states hold; NULL: Pendulum.fmu's */
     ExactCache exact_now;    /* theta_exact, omega_exact at data.time, evaluated once (model.h):
                                 beside data, so no part of an FMU state; every call that changes
                                 the time, a value or the whole data drops it */

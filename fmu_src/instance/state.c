@@ -1,10 +1,12 @@
 /* instance/state.c: FMU states for rollback (FMI 2.0 section 2.1.8, FMI 3.0 section 2.2.6.4),
- * shared by both versions. A state is a copy of the
- * instance's ModelData (plain data); its serialized form is a header followed by those
- * bytes. The header carries a magic text, a format version, the payload size and an
- * FNV-1a checksum, so a blob from another build, a truncated or a corrupted one is refused.
- * Byte order and layout are the platform's: a blob moves between processes and instances
- * of the same binary, not between platforms.
+ * shared by both versions and by every FMU built on the instance. A state is a copy of the
+ * instance's ModelData (plain data) followed by the model's extra bytes (StateModel in
+ * instance.h: none for Pendulum.fmu, the input polynomial for the split FMUs), one contiguous
+ * payload; its serialized form is a header followed by those bytes. The header carries the
+ * model's magic text, a format version, the payload size and an FNV-1a checksum, so a blob of
+ * another model or build, a truncated or a corrupted one is refused. Byte order and layout are
+ * the platform's: a blob moves between processes and instances of the same binary, not
+ * between platforms.
  *
  * Every state an instance hands out is a node of its registry (a list through the nodes
  * themselves, so the registry costs no allocation of its own, and none in the step loop):
@@ -17,7 +19,6 @@
 
 #include "instance.h"
 
-#define STATE_MAGIC "PNDLSTAT"
 #define STATE_FORMAT_VERSION 4u /* 2: the solver state gained fields; 3: interface, hard-case
                                    flag, exact solution from g and L; 4: the certificate's last
                                    logged departure, the solver's omega scale */
@@ -43,8 +44,34 @@ static uint64_t fnv1a64(const unsigned char *bytes, size_t size) {
 
 struct StateNode {
     StateNode *next;
-    ModelData data; /* what the importer holds: the address of this member */
+    ModelData data; /* what the importer holds: the address of this member; the model's extra
+                       bytes follow it (a node is allocated with room for them) */
 };
+
+static const char *pendulum_check(const Instance *inst, const ModelData *data, const void *extra) {
+    (void)extra;
+    return model_check_state(data, inst->type);
+}
+
+/* Pendulum.fmu's states: ModelData alone. */
+static const StateModel PENDULUM_STATE = {"PNDLSTAT", 0, 0, pendulum_check};
+
+static const StateModel *model_of(const Instance *inst) {
+    return inst->state_model != NULL ? inst->state_model : &PENDULUM_STATE;
+}
+
+static size_t payload_size(const Instance *inst) {
+    return sizeof(ModelData) + model_of(inst)->extra_size;
+}
+
+/* Where the model's extra bytes lie in the instance, and in a state after its ModelData. */
+static unsigned char *instance_extra(Instance *inst) {
+    return (unsigned char *)inst + model_of(inst)->extra_offset;
+}
+
+static const unsigned char *state_extra(const void *state) {
+    return (const unsigned char *)state + sizeof(ModelData);
+}
 
 /* The live node whose data is at `state`, and the link that points to it; NULL if none. */
 static StateNode *find_live(Instance *inst, const void *state, StateNode ***link) {
@@ -79,7 +106,7 @@ static ModelData *state_to_write(Instance *inst, const char *function, void *con
         }
         return &node->data;
     }
-    node = inst->host.allocate(inst, sizeof *node);
+    node = inst->host.allocate(inst, sizeof *node + model_of(inst)->extra_size);
     if (node == NULL) {
         instance_fail(inst, function, "out of memory");
         return NULL;
@@ -110,6 +137,7 @@ Status instance_get_state(Instance *inst, const char *function, void **state) {
         return STATUS_ERROR;
     }
     memcpy(copy, &inst->data, sizeof *copy); /* bytewise, padding included: the checksum sees it */
+    memcpy((unsigned char *)copy + sizeof *copy, instance_extra(inst), model_of(inst)->extra_size);
     *state = copy;
     return STATUS_OK;
 }
@@ -123,11 +151,12 @@ Status instance_set_state(Instance *inst, const char *function, const void *stat
         return instance_fail(inst, function, "state is NULL");
     }
     /* a state is memory handed back by the master: checked like a deserialized one */
-    problem = model_check_state((const ModelData *)state, inst->type);
+    problem = model_of(inst)->check(inst, (const ModelData *)state, state_extra(state));
     if (problem != NULL) {
         return instance_fail(inst, function, "the state is refused: %s", problem);
     }
     memcpy(&inst->data, state, sizeof inst->data);
+    memcpy(instance_extra(inst), state_extra(state), model_of(inst)->extra_size);
     model_exact_forget(&inst->exact_now); /* not part of a state: evaluated again when needed */
     return STATUS_OK;
 }
@@ -159,7 +188,7 @@ Status instance_serialized_state_size(Instance *inst, const char *function, cons
     if (state == NULL || size == NULL) {
         return instance_fail(inst, function, "state or size is NULL");
     }
-    *size = sizeof(StateHeader) + sizeof(ModelData);
+    *size = sizeof(StateHeader) + payload_size(inst);
     return STATUS_OK;
 }
 
@@ -171,23 +200,25 @@ Status instance_serialize_state(Instance *inst, const char *function, const void
     if (state == NULL || bytes == NULL) {
         return instance_fail(inst, function, "state or bytes is NULL");
     }
-    if (size != sizeof header + sizeof(ModelData)) {
+    if (size != sizeof header + payload_size(inst)) {
         return instance_fail(inst, function, "size is %zu, the serialized state size is %zu",
-                             size, sizeof header + sizeof(ModelData));
+                             size, sizeof header + payload_size(inst));
     }
-    memcpy(header.magic, STATE_MAGIC, sizeof header.magic);
+    memcpy(header.magic, model_of(inst)->magic, sizeof header.magic);
     header.format_version = STATE_FORMAT_VERSION;
-    header.payload_size = (uint32_t)sizeof(ModelData);
-    header.checksum = fnv1a64((const unsigned char *)state, sizeof(ModelData));
+    header.payload_size = (uint32_t)payload_size(inst);
+    header.checksum = fnv1a64((const unsigned char *)state, payload_size(inst));
     memcpy(bytes, &header, sizeof header);
-    memcpy(bytes + sizeof header, state, sizeof(ModelData));
+    memcpy(bytes + sizeof header, state, payload_size(inst));
     return STATUS_OK;
 }
 
 Status instance_deserialize_state(Instance *inst, const char *function, const char bytes[], size_t size,
                                   void **state) {
+    const StateModel *model = model_of(inst);
     StateHeader header;
     ModelData payload;
+    double extra[STATE_EXTRA_MAX / sizeof(double)]; /* aligned for any model's extra bytes */
     ModelData *copy;
     const char *problem;
     if (!instance_allowed(inst, function, ANY_LIVE_MODE | MODE_ERROR)) {
@@ -196,22 +227,34 @@ Status instance_deserialize_state(Instance *inst, const char *function, const ch
     if (bytes == NULL || state == NULL) {
         return instance_fail(inst, function, "bytes or state is NULL");
     }
-    if (size != sizeof header + sizeof payload) {
+    if (size != sizeof header + payload_size(inst)) {
         return instance_fail(inst, function, "the blob has %zu bytes, a state of this FMU has %zu", size,
-                             sizeof header + sizeof payload);
+                             sizeof header + payload_size(inst));
     }
     memcpy(&header, bytes, sizeof header);
     memcpy(&payload, bytes + sizeof header, sizeof payload);
-    if (memcmp(header.magic, STATE_MAGIC, sizeof header.magic) != 0 || header.format_version != STATE_FORMAT_VERSION ||
-        header.payload_size != sizeof payload) {
-        return instance_fail(inst, function, "the blob is not a state of this FMU (magic, version or size differ)");
+    memcpy(extra, bytes + sizeof header + sizeof payload, model->extra_size);
+    if (memcmp(header.magic, model->magic, sizeof header.magic) != 0) {
+        char mark[sizeof header.magic + 1];
+        size_t i;
+        for (i = 0; i < sizeof header.magic; i++) { /* printable in the log, whatever the blob holds */
+            mark[i] = header.magic[i] >= ' ' && header.magic[i] <= '~' ? header.magic[i] : '?';
+        }
+        mark[sizeof header.magic] = '\0';
+        return instance_fail(inst, function, "the blob is not a state of this FMU (it is marked \"%s\", a state of "
+                             "this FMU \"%.8s\")", mark, model->magic);
     }
-    if (header.checksum != fnv1a64((const unsigned char *)&payload, sizeof payload)) {
+    if (header.format_version != STATE_FORMAT_VERSION || header.payload_size != payload_size(inst)) {
+        return instance_fail(inst, function, "the blob is not a state of this build of the FMU (format version %u, "
+                             "payload %u bytes; this build's are %u and %zu)", (unsigned)header.format_version,
+                             (unsigned)header.payload_size, STATE_FORMAT_VERSION, payload_size(inst));
+    }
+    if (header.checksum != fnv1a64((const unsigned char *)bytes + sizeof header, payload_size(inst))) {
         return instance_fail(inst, function, "the blob is corrupted (checksum or contents do not match)");
     }
     /* the checksum only catches accidents: a forged blob with a recomputed checksum is
      * parsed like any untrusted input, every field against its range */
-    problem = model_check_state(&payload, inst->type);
+    problem = model->check(inst, &payload, extra);
     if (problem != NULL) {
         return instance_fail(inst, function, "the blob is refused: %s", problem);
     }
@@ -220,6 +263,7 @@ Status instance_deserialize_state(Instance *inst, const char *function, const ch
         return STATUS_ERROR;
     }
     memcpy(copy, &payload, sizeof *copy);
+    memcpy((unsigned char *)copy + sizeof *copy, extra, model->extra_size);
     *state = copy;
     return STATUS_OK;
 }

@@ -7,6 +7,7 @@
  *     theta(h) = theta + omega h + a h^2 / 2 + b h^3 / 6 + c h^4 / 24
  * exact for that input, with no solver and no step inside. */
 #include <math.h>
+#include <string.h>
 
 #include "pendulum_vrs.h"
 #include "split.h"
@@ -21,6 +22,7 @@ const char *const SPLIT_MODEL_NAME = "PendulumBody";
 const char *const SPLIT_TOKEN = PENDULUM_BODY_TOKEN;
 const ValueReference SPLIT_INPUT_VR = SPLIT_VR_ALPHA;
 const double SPLIT_INPUT_START = 0.0;
+const char SPLIT_STATE_MAGIC[] = "PNDLBODY";
 
 /* theta, omega: orders 1..3 from omega and the input polynomial; theta_exact, omega_exact: from
  * the exact solution, as Pendulum.fmu. Both FMI versions. */
@@ -116,4 +118,27 @@ const char *split_model_output_derivative(SplitInstance *inst, ValueReference vr
     }
     default: return "is not a continuous output";
     }
+}
+
+/* Before initialization the exact solution and the solver are the reset ones; after it, what
+ * ExitInitializationMode made of the start values (model_initialize), the solver never
+ * stepped (Body integrates its input in closed form). */
+const char *split_model_check_state(const ModelData *data, const ModelData *reset) {
+    Integrator fresh;
+    if ((data->mode & (MODE_INSTANTIATED | MODE_INITIALIZATION)) != 0) {
+        if (memcmp(&reset->exact, &data->exact, sizeof reset->exact) != 0 ||
+            memcmp(&reset->integrator, &data->integrator, sizeof reset->integrator) != 0) {
+            return "the exact solution or the solver is not the one of a state before initialization";
+        }
+        return NULL;
+    }
+    if (!pendulum_exact_same(&data->exact) || !(data->exact.g == data->g) || !(data->exact.L == data->L) ||
+        !(data->exact.t0 == data->start_time)) {
+        return "the exact solution does not match its start values and parameters";
+    }
+    if (integrator_init_gl(&fresh, (SolverKind)data->solver, data->g, data->L, data->tolerance, data->start_time,
+                           data->exact.theta0, data->exact.omega0) != 0) {
+        return "the solver cannot be set up for the state's start values";
+    }
+    return integrator_check(&data->integrator, &fresh);
 }

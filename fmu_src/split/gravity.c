@@ -12,6 +12,7 @@
  * be 0, and the FMI 3.0 Gravity declares maxOutputDerivativeOrder 0 rather than hand out
  * zeros a master would extrapolate with. */
 #include <math.h>
+#include <string.h>
 
 #include "pendulum_vrs.h"
 #include "split.h"
@@ -23,6 +24,7 @@ const char *const SPLIT_MODEL_NAME = "PendulumGravity";
 const char *const SPLIT_TOKEN = PENDULUM_GRAVITY_TOKEN;
 const ValueReference SPLIT_INPUT_VR = SPLIT_VR_THETA;
 const double SPLIT_INPUT_START = START_THETA;
+const char SPLIT_STATE_MAGIC[] = "PNDLGRAV";
 
 int split_model_max_output_order(int fmi_version) {
     return fmi_version == 2 ? 2 : 0;
@@ -83,5 +85,18 @@ const char *split_model_output_derivative(SplitInstance *inst, ValueReference vr
         return "is not a continuous output";
     }
     *value = order == 1 ? -a * c * u->d1 : -a * (c * u->d2 - s * u->d1 * u->d1);
+    return NULL;
+}
+
+/* Gravity's initialization sets up neither the exact solution nor a solver, and nothing sets
+ * omega: each is its reset value in every mode. */
+const char *split_model_check_state(const ModelData *data, const ModelData *reset) {
+    if (memcmp(&reset->exact, &data->exact, sizeof reset->exact) != 0 ||
+        memcmp(&reset->integrator, &data->integrator, sizeof reset->integrator) != 0) {
+        return "the exact solution or the solver is not the reset one (Gravity sets up neither)";
+    }
+    if (!(data->omega == reset->omega)) {
+        return "omega is not its start value (Gravity has no state omega)";
+    }
     return NULL;
 }

@@ -1,9 +1,11 @@
 /* layer2.c: the FMI 2.0 Co-Simulation layer of PendulumBody and PendulumGravity (split.h):
  * it only translates FMI 2.0 types onto split.c and the shared instance (instance.h). The
- * FMUs have Co-Simulation only; FMU states and directional derivatives are not provided
- * (canGetAndSetFMUstate, providesDirectionalDerivative false) and are refused with a reason. */
+ * FMUs have Co-Simulation only, with FMU states for a master that rolls a step back;
+ * directional derivatives are not provided (providesDirectionalDerivative false) and are
+ * refused with a reason. */
 #include <stddef.h>
 
+#include "fmu_state_calls.h"
 #include "host2.h"
 #include "split.h"
 
@@ -35,9 +37,10 @@ fmi2Status fmi2SetupExperiment(fmi2Component c, fmi2Boolean toleranceDefined, fm
                                                  startTime, stopTimeDefined, stopTime);
 }
 
-DEFINE_NO_FMU_STATE_CALLS(fmi2Status, fmi2Component, fmi2FMUstate, fmi2Byte, fmi2GetFMUstate, fmi2SetFMUstate,
-                          fmi2FreeFMUstate, fmi2SerializedFMUstateSize, fmi2SerializeFMUstate, fmi2DeSerializeFMUstate,
-                          "canGetAndSetFMUstate is false: the FMU provides no FMU states")
+/* FMU states (canGetAndSetFMUstate, canSerializeFMUstate): ModelData and the input polynomial
+ * (split.c), through the shared instance/state.c as Pendulum.fmu's. */
+DEFINE_FMU_STATE_CALLS(fmi2Status, fmi2Component, fmi2FMUstate, fmi2Byte, fmi2GetFMUstate, fmi2SetFMUstate,
+                       fmi2FreeFMUstate, fmi2SerializedFMUstateSize, fmi2SerializeFMUstate, fmi2DeSerializeFMUstate)
 
 /* No Integer, Boolean or String variables. */
 DEFINE_FMI2_NO_VARIABLES_OF_TYPE(Integer, fmi2Integer)
@@ -66,7 +69,7 @@ fmi2Status fmi2GetRealOutputDerivatives(fmi2Component c, const fmi2ValueReferenc
 
 fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationPoint, fmi2Real communicationStepSize,
                       fmi2Boolean noSetFMUStatePriorToCurrentPoint) {
-    (void)noSetFMUStatePriorToCurrentPoint; /* no FMU states */
+    (void)noSetFMUStatePriorToCurrentPoint; /* a state is a copy: nothing kept for a rollback to free */
     return (fmi2Status)split_do_step(c, "fmi2DoStep", currentCommunicationPoint, communicationStepSize);
 }
 

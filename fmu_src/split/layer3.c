@@ -11,6 +11,7 @@
  * input is held over every FMI 3.0 step. Output derivatives are fmi3GetOutputDerivatives's. */
 #include <stddef.h>
 
+#include "fmu_state_calls.h"
 #include "layer.h"
 #include "split.h"
 
@@ -54,9 +55,9 @@ DEFINE_FMI3_ABSENT_TYPES
 DEFINE_FMI3_NO_VARIABLES_OF_TYPE(Int32, fmi3Int32)
 DEFINE_FMI3_NO_VARIABLES_OF_TYPE(Int64, fmi3Int64)
 
-DEFINE_NO_FMU_STATE_CALLS(fmi3Status, fmi3Instance, fmi3FMUState, fmi3Byte, fmi3GetFMUState, fmi3SetFMUState,
-                          fmi3FreeFMUState, fmi3SerializedFMUStateSize, fmi3SerializeFMUState, fmi3DeserializeFMUState,
-                          "canGetAndSetFMUState is false: the FMU provides no FMU states")
+/* FMU states (canGetAndSetFMUState, canSerializeFMUState), as the FMI 2.0 layer's. */
+DEFINE_FMU_STATE_CALLS(fmi3Status, fmi3Instance, fmi3FMUState, fmi3Byte, fmi3GetFMUState, fmi3SetFMUState,
+                       fmi3FreeFMUState, fmi3SerializedFMUStateSize, fmi3SerializeFMUState, fmi3DeserializeFMUState)
 
 fmi3Status fmi3GetDirectionalDerivative(fmi3Instance instance, const fmi3ValueReference unknowns[], size_t nUnknowns,
                                         const fmi3ValueReference knowns[], size_t nKnowns, const fmi3Float64 seed[],

@@ -4,6 +4,7 @@
 #include "split.h"
 
 #include <math.h>
+#include <stddef.h>
 #include <string.h>
 
 /* The shared instance of a split instance: its first member, so NULL stays NULL (every
@@ -26,12 +27,61 @@ static void input_reset(SplitInstance *inst) {
     inst->input.d2 = 0.0;
 }
 
+static const char *check_state(const Instance *inst, const ModelData *data, const void *extra);
+
+/* An FMU state of either FMU (instance.h): the shared instance's ModelData and the input
+ * polynomial, marked with the model's own magic. */
+static const StateModel STATE_MODEL = {SPLIT_STATE_MAGIC, sizeof(InputPolynomial), offsetof(SplitInstance, input),
+                                       check_state};
+typedef char input_fits_a_state[sizeof(InputPolynomial) <= STATE_EXTRA_MAX ? 1 : -1];
+
 int split_setup(SplitInstance *inst, const char *name, int fmi_version, int logging_on) {
     if (instance_setup(CORE(inst), name, INTERFACE_CO_SIMULATION, fmi_version, logging_on) != 0) {
         return -1;
     }
+    inst->core.state_model = &STATE_MODEL;
     input_reset(inst);
     return 0;
+}
+
+/* The modes a state is taken in (GetFMUstate is refused in Error). */
+#define STATE_MODES (MODE_INSTANTIATED | MODE_INITIALIZATION | MODE_STEP_COMPLETE | MODE_TERMINATED)
+
+/* NULL, or why a state (an untrusted copy of ModelData and the input polynomial) is refused by
+ * `inst`: the checks both FMUs share, then the model's own (split_model_check_state). */
+static const char *check_state(const Instance *inst, const ModelData *data, const void *extra) {
+    InputPolynomial u;
+    ModelData reset;
+    const unsigned mode = (unsigned)data->mode;
+    memcpy(&u, extra, sizeof u); /* the bytes after ModelData: no alignment assumed */
+    model_reset(&reset, INTERFACE_CO_SIMULATION);
+    if (data->interface != INTERFACE_CO_SIMULATION) {
+        return "the interface is not Co-Simulation";
+    }
+    if (mode == 0 || (mode & (mode - 1)) != 0 || (mode & STATE_MODES) == 0) {
+        return "the mode is not one a state of this FMU is taken in";
+    }
+    /* no call of these FMUs changes the solver, the hard-case flag or the certificate */
+    if (data->solver != reset.solver || data->hard_case_reported != 0 || data->certificate_logged != 0.0) {
+        return "the solver, the hard-case flag or the certificate is not its start value";
+    }
+    if (!(isfinite(data->L) && data->L > 0.0 && isfinite(data->g) && data->g > 0.0)) {
+        return "L or g out of range (finite, greater than 0)";
+    }
+    if (!(data->tolerance >= INTEGRATOR_TOLERANCE_FLOOR && data->tolerance < 1.0)) {
+        return "the tolerance is out of range [INTEGRATOR_TOLERANCE_FLOOR, 1)";
+    }
+    if (!isfinite(data->start_time) || !isfinite(data->time) || !(data->time >= data->start_time) ||
+        !isfinite(data->theta) || !isfinite(data->omega)) {
+        return "a time or a state is not finite, or the time is before the start time";
+    }
+    if (!isfinite(u.value) || !isfinite(u.d1) || !isfinite(u.d2)) {
+        return "the input or one of its derivatives is not finite";
+    }
+    if (inst->fmi_version == 3 && (u.d1 != 0.0 || u.d2 != 0.0)) {
+        return "the input has derivatives, which FMI 3.0 Co-Simulation does not set";
+    }
+    return split_model_check_state(data, &reset);
 }
 
 Status split_reset(SplitInstance *inst, const char *function) {

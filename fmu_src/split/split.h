@@ -70,6 +70,12 @@ const char *split_model_initialize(SplitInstance *inst);
 void split_model_advance(SplitInstance *inst, double h);
 /* The order-th time derivative (1 <= order <= max) of output vr at the current time. */
 const char *split_model_output_derivative(SplitInstance *inst, ValueReference vr, int order, double *value);
+/* The 8 characters that mark a serialized FMU state of this model (split.c's StateModel). */
+extern const char SPLIT_STATE_MAGIC[];
+/* The model's part of the check of an FMU state (split.c), for a state past the checks both
+ * FMUs share: NULL, or why the exact solution, the solver or a state variable is not one this
+ * model can have. */
+const char *split_model_check_state(const ModelData *data, const ModelData *reset);
 
 /* --- shared by both FMUs (split.c), for the layers ----------------------------------------- */
 /* NULL, or why an instantiation is refused (name, token). */
@@ -94,38 +100,9 @@ Status split_set_input_derivatives(SplitInstance *inst, const char *function, co
 Status split_output_derivatives(SplitInstance *inst, const char *function, const ValueReference vr[], size_t nvr,
                                 const int order[], double value[]);
 Status split_do_step(SplitInstance *inst, const char *function, double point, double step);
-/* A refusal of a function the capability flags say the FMU does not provide (FMU states,
- * partial derivatives), after the calling-sequence check. */
+/* A refusal of a function the capability flags say the FMU does not provide (partial
+ * derivatives, ...), after the calling-sequence check. */
 Status split_not_provided(SplitInstance *inst, const char *function, const char *reason);
 
-
-/* The six FMU-state functions of a layer (FMI 2.0 or 3.0 names and types, as
- * fmu_state_calls.h's DEFINE_FMU_STATE_CALLS takes them), each refused with `reason`. */
-#define DEFINE_NO_FMU_STATE_CALLS(StatusT, InstanceT, StateT, ByteT, Get, Set, Free, Size, Serialize, Deserialize, \
-                                  reason)                                                                         \
-    StatusT Get(InstanceT instance, StateT *state) {                                                              \
-        (void)state;                                                                                              \
-        return (StatusT)split_not_provided(instance, #Get, reason);                                               \
-    }                                                                                                             \
-    StatusT Set(InstanceT instance, StateT state) {                                                               \
-        (void)state;                                                                                              \
-        return (StatusT)split_not_provided(instance, #Set, reason);                                               \
-    }                                                                                                             \
-    StatusT Free(InstanceT instance, StateT *state) {                                                             \
-        (void)state;                                                                                              \
-        return (StatusT)split_not_provided(instance, #Free, reason);                                              \
-    }                                                                                                             \
-    StatusT Size(InstanceT instance, StateT state, size_t *size) {                                                \
-        (void)state, (void)size;                                                                                  \
-        return (StatusT)split_not_provided(instance, #Size, reason);                                              \
-    }                                                                                                             \
-    StatusT Serialize(InstanceT instance, StateT state, ByteT bytes[], size_t size) {                             \
-        (void)state, (void)bytes, (void)size;                                                                     \
-        return (StatusT)split_not_provided(instance, #Serialize, reason);                                         \
-    }                                                                                                             \
-    StatusT Deserialize(InstanceT instance, const ByteT bytes[], size_t size, StateT *state) {                    \
-        (void)bytes, (void)size, (void)state;                                                                     \
-        return (StatusT)split_not_provided(instance, #Deserialize, reason);                                       \
-    }
 
 #endif

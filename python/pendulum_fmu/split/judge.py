@@ -218,7 +218,9 @@ def _bound(named: Master | None, behaves: str | None, references: dict[str, tupl
         bound_master = named
     else:
         coupling = master_named(behaves).coupling if behaves else "zoh"
-        bound_master = min((master_named(n) for n in references if master_named(n).coupling == coupling),
+        # the best one-pass master of the coupling: strong coupling (iterated) is a yardstick, not the bound
+        bound_master = min((master_named(n) for n in references
+                            if master_named(n).coupling == coupling and master_named(n).scheme != "iterated"),
                            key=lambda m: references[m.name][1])
     best = references[bound_master.name][1]
     ratio = error / best if best > 0 else float("inf")

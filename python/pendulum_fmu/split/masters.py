@@ -1,4 +1,5 @@
-"""The reference masters: Jacobi and Gauss-Seidel, three ways to hand an input over, a fixed step H.
+"""The reference masters: Jacobi and Gauss-Seidel, three ways to hand an input over, a fixed step H,
+and strong coupling, each macro step iterated to convergence with rollback.
 
 The yardstick the judge measures a master by (docs/masters.md). At each communication point
 t_k = k H the master exchanges Body.theta -> Gravity.theta and Gravity.alpha -> Body.alpha,
@@ -26,6 +27,21 @@ Gravity's output derivatives need theta's derivatives, so both derivative coupli
 Body's output derivatives of theta (omega and alpha) on to Gravity as its input derivatives.
 The FMI 3.0 FMUs have no input derivatives and Gravity no output derivatives: for them only
 ``zoh`` exists.
+
+``iterated`` (strong coupling, with ``interpolation``): the exchange at t_k is Gauss-Seidel's
+(alpha_k and alpha'_k from Gravity), then the macro step is iterated on the coupling signal's
+value at its end, alpha_(k+1): Body interpolates the quadratic through alpha_k, alpha'_k and the
+guess b of alpha_(k+1),
+
+    u(s) = alpha_k + alpha'_k s + c s^2 / 2,   c = 2 (b - alpha_k - alpha'_k H) / H^2,
+
+both FMUs step, Gravity's alpha at Body's new theta is the next guess, and both FMUs go back
+to their states at t_k (``SetFMUstate``) for the next pass. The first guess is alpha_k +
+alpha'_k H. A guess moves theta_(k+1) by H^2 / 12 of its change, so each pass shrinks the
+change by (g/L) |cos theta| H^2 / 12 (8e-5 at H = 0.01): the iteration stops when the change is
+below :data:`ROUND_OFF` times (g/L)(2 + |theta_(k+1)|), what rounding alone moves alpha by, or
+after :data:`ITERATION_CAP` passes. The converged step is the implicit scheme of that
+quadratic input, order 3 like Gauss-Seidel's interpolation, with a third of its error.
 """
 
 from __future__ import annotations
@@ -38,10 +54,15 @@ import numpy as np
 
 from pendulum_fmu.split.pair import ALPHA, OMEGA, OMEGA_EXACT, THETA, THETA_EXACT, Pair, Problem
 
-SCHEMES: tuple[str, ...] = ("jacobi", "gauss-seidel")
+SCHEMES: tuple[str, ...] = ("jacobi", "gauss-seidel", "iterated")
 COUPLINGS: tuple[str, ...] = ("zoh", "extrapolation", "interpolation")
+SCHEME_WORDS = {"jacobi": "Jacobi", "gauss-seidel": "Gauss-Seidel", "iterated": "strong coupling"}
 COUPLING_WORDS = {"zoh": "zero-order hold", "extrapolation": "first-order extrapolation",
                   "interpolation": "input interpolation"}
+ITERATION_CAP = 50
+"""The most passes of one macro step of the iterated master."""
+ROUND_OFF = 8 * 2.0 ** -52
+"""The iterated master's tolerance, in units of (g/L)(2 + |theta|): a few roundings of alpha."""
 
 
 @dataclass(frozen=True)
@@ -57,13 +78,13 @@ class Master:
         return f"{self.scheme}-{self.coupling}"
 
     def describe(self) -> str:
-        """In words, e.g. "Gauss-Seidel with zero-order hold"."""
-        scheme = "Gauss-Seidel" if self.scheme == "gauss-seidel" else "Jacobi"
-        return f"{scheme} with {COUPLING_WORDS[self.coupling]}"
+        """In words, e.g. "Gauss-Seidel with zero-order hold", "strong coupling with input interpolation"."""
+        return f"{SCHEME_WORDS[self.scheme]} with {COUPLING_WORDS[self.coupling]}"
 
 
-MASTERS: tuple[Master, ...] = tuple(Master(s, c) for c in COUPLINGS for s in SCHEMES)
-"""Every reference master, zero-order hold first."""
+MASTERS: tuple[Master, ...] = (*(Master(s, c) for c in COUPLINGS for s in SCHEMES[:2]),
+                               Master("iterated", "interpolation"))
+"""Every reference master: Jacobi and Gauss-Seidel, zero-order hold first, then strong coupling."""
 
 
 def masters_for(fmi_version: int) -> tuple[Master, ...]:
@@ -93,6 +114,9 @@ class Coupled:
         Body's exact pendulum at the same points.
     seconds : float
         Wall time of the stepping loop.
+    iterations : numpy.ndarray or None
+        The passes each macro step took (1 for a master that does not iterate; None where
+        not recorded: one each); a step that reached :data:`ITERATION_CAP` did not converge.
     """
 
     time: np.ndarray
@@ -102,6 +126,12 @@ class Coupled:
     theta_exact: np.ndarray
     omega_exact: np.ndarray
     seconds: float
+    iterations: np.ndarray | None = None
+
+    @property
+    def converged(self) -> bool:
+        """Whether every macro step converged before :data:`ITERATION_CAP` passes."""
+        return self.iterations is None or bool(np.all(self.iterations < ITERATION_CAP))
 
     @property
     def error(self) -> float:
@@ -136,15 +166,21 @@ def run_master(master: Master, H: float, stop: float, problem: Problem = Problem
                          "Co-Simulation FMUs do not have")
     n = round(stop / H)
     rows = np.empty((n + 1, 6))
+    iterations = np.ones(n, dtype=int)
     with Pair(problem, fmi_version) as pair:
         began = time.perf_counter()
-        step = _STEPPERS[master.scheme]
-        for k in range(n):
-            rows[k] = step(pair, master.coupling, k * H, H)
+        if master.scheme == "iterated":
+            tolerance = ROUND_OFF * problem.g / problem.L
+            for k in range(n):
+                rows[k], iterations[k] = _step_iterated(pair, k * H, H, tolerance)
+        else:
+            step = _STEPPERS[master.scheme]
+            for k in range(n):
+                rows[k] = step(pair, master.coupling, k * H, H)
         rows[n] = _outputs(pair, _exchange_gauss_seidel(pair, master.coupling)[0])
         seconds = time.perf_counter() - began
     times = np.arange(n + 1) * H
-    return Coupled(times, rows[:, 0], rows[:, 1], rows[:, 2], rows[:, 3], rows[:, 4], seconds)
+    return Coupled(times, rows[:, 0], rows[:, 1], rows[:, 2], rows[:, 3], rows[:, 4], seconds, iterations)
 
 
 def _outputs(pair: Pair, alpha: float) -> tuple[float, ...]:
@@ -204,6 +240,33 @@ def _step_jacobi(pair: Pair, coupling: str, t: float, H: float) -> tuple[float, 
 
 
 _STEPPERS = {"gauss-seidel": _step_gauss_seidel, "jacobi": _step_jacobi}
+
+
+def _step_iterated(pair: Pair, t: float, H: float, tolerance: float) -> tuple[tuple[float, ...], int]:  # noqa: N803
+    """One macro step of strong coupling (module docstring): the row at t and the passes taken."""
+    body, gravity = pair.body, pair.gravity
+    alpha, first, _ = _exchange_gauss_seidel(pair, "interpolation")
+    row = _outputs(pair, alpha)
+    saved = pair.save()
+    end = alpha + first * H  # the first guess of alpha at t + H
+    passes = 0
+    try:
+        while passes < ITERATION_CAP:
+            if passes:
+                pair.restore(saved)
+            passes += 1
+            pair.set(body, ALPHA, alpha)
+            pair.set_derivatives(body, ALPHA, first, 2 * (end - alpha - first * H) / (H * H))
+            pair.step(body, t, H, rollback=True)
+            pair.step(gravity, t, H, rollback=True)
+            theta = pair.get(body, THETA)
+            pair.set(gravity, THETA, theta)
+            guess, end = end, pair.get(gravity, ALPHA)
+            if abs(end - guess) <= tolerance * (2 + abs(theta)):
+                break
+    finally:
+        pair.free(saved)
+    return row, passes
 
 
 def observed_orders(steps: list[float], errors: list[float]) -> list[float]:

@@ -112,15 +112,35 @@ class Pair:
         """The input's first and second time derivatives at this communication point (FMI 2.0 only)."""
         fmu.setRealInputDerivatives([vr, vr], [1, 2], [float(first), float(second)])
 
-    def step(self, fmu: Any, t: float, h: float) -> None:
-        """One communication step of one FMU."""
-        fmu.doStep(currentCommunicationPoint=t, communicationStepSize=h)
+    def step(self, fmu: Any, t: float, h: float, rollback: bool = False) -> None:
+        """One communication step of one FMU; ``rollback``: the master may set a state from before it."""
+        fmu.doStep(currentCommunicationPoint=t, communicationStepSize=h, noSetFMUStatePriorToCurrentPoint=not rollback)
+
+    def save(self) -> list[Any]:
+        """Both FMUs' states now (``GetFMUstate``), to :meth:`restore` and :meth:`free`."""
+        return [fmu.getFMUState() for fmu in self.instances]
+
+    def restore(self, states: list[Any]) -> None:
+        """Both FMUs back to the states :meth:`save` took (``SetFMUstate``)."""
+        for fmu, state in zip(self.instances, states, strict=True):
+            fmu.setFMUState(state)
+
+    def free(self, states: list[Any]) -> None:
+        """Free the states :meth:`save` took (``FreeFMUstate``)."""
+        for fmu, state in zip(self.instances, states, strict=True):
+            fmu.freeFMUState(state)
 
     def close(self) -> None:
-        """Terminate and free both instances."""
+        """Terminate and free both instances (one in the Error state, which cannot terminate, is freed)."""
+        from fmpy.fmi1 import FMICallException
+
         for fmu in self.instances:
-            fmu.terminate()
-            fmu.freeInstance()
+            try:
+                fmu.terminate()
+            except FMICallException:
+                pass
+            finally:
+                fmu.freeInstance()
         self.instances = []
 
     def __enter__(self) -> Pair:
