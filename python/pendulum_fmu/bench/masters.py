@@ -19,7 +19,7 @@ from pathlib import Path
 
 import numpy as np
 
-from pendulum_fmu.split.diagnosis import label_finding
+from pendulum_fmu.split.diagnosis import label_shift
 from pendulum_fmu.split.engines import EngineError, engine_names, engine_version, missing, run_engine
 from pendulum_fmu.split.masters import MASTERS, observed_orders, run_master
 from pendulum_fmu.split.pair import Problem
@@ -65,10 +65,8 @@ def engine_error(path: Path, H: float) -> float:  # noqa: N803
     from pendulum_fmu import exact
 
     result = read_coupled(path)
-    time = result.time
     problem = Problem()
-    if "theta_exact" in result.values and label_finding(time, result.values["theta_exact"], problem, H):
-        time = time + H
+    time = result.time + label_shift(result.time, result.values, result.resolution, problem, H) * H
     theta = exact(problem.theta0, problem.omega0, problem.L, problem.g, time)[0]
     return float(np.max(np.abs(result.values["theta"] - theta)))
 
@@ -77,9 +75,7 @@ def _judged(path: Path) -> str:
     from pendulum_fmu.split.judge import judge_split
 
     verdict = judge_split(path)
-    if verdict.master:
-        return f"behaves as {verdict.master}"
-    return ", ".join(f.kind for f in verdict.findings)
+    return verdict.summary.rsplit("; error", 1)[0]
 
 
 def measure(steps: tuple[float, ...] = STEPS, stop: float = STOP, engines: bool = True,
