@@ -47,8 +47,9 @@ class Accuracy:
     reference_errors: dict[str, float] = field(default_factory=dict)
 
 
-def rank(error: float, references: dict[str, float]) -> str:
-    """Where ``error`` sits among the reference masters' errors, in words."""
+def rank(error: float, references: dict[str, float], identified: str | None = None) -> str:
+    """Where ``error`` sits among the reference masters' errors, in words (the ``identified``
+    master's place when the run reproduces one)."""
     from pendulum_fmu.split.masters import master_named
 
     if not references:
@@ -56,9 +57,10 @@ def rank(error: float, references: dict[str, float]) -> str:
     ordered = sorted(references.items(), key=lambda item: item[1])
     count = len(ordered)
     described = [(master_named(name).describe(), value) for name, value in ordered]
-    same = [text for text, value in described if abs(value - error) <= SAME * max(error, value)]
+    same = [master_named(identified).describe()] if identified in references else \
+        [text for text, value in described if abs(value - error) <= SAME * max(error, value)]
     if same:
-        return f"as {same[0]} ({error:.3g}), rank {[t for t, _ in described].index(same[0]) + 1} of {count}"
+        return f"as {same[0]} ({error:.3g}): rank {[t for t, _ in described].index(same[0]) + 1} of {count}"
     if error < ordered[0][1]:
         return f"better than all {count} reference masters (best: {described[0][0]}, {ordered[0][1]:.3g})"
     if error > ordered[-1][1]:
@@ -69,9 +71,9 @@ def rank(error: float, references: dict[str, float]) -> str:
 
 
 def accuracy(time: np.ndarray, theta: np.ndarray, exact_theta: np.ndarray, within: np.ndarray | None = None,
-             references: dict[str, float] | None = None) -> Accuracy:
+             references: dict[str, float] | None = None, identified: str | None = None) -> Accuracy:
     """The error of a run (see the module's docstring); ``within`` marks the rows the reference
-    masters were compared on."""
+    masters were compared on; ``identified``, the master the run reproduces."""
     errors = np.abs(theta - exact_theta)
     worst = int(np.nanargmax(errors))
     error = float(errors[worst])
@@ -81,7 +83,7 @@ def accuracy(time: np.ndarray, theta: np.ndarray, exact_theta: np.ndarray, withi
     if not references or within is None:
         return Accuracy(error, float(time[worst]), growth)
     compared = float(np.nanmax(errors[within]))
-    return Accuracy(error, float(time[worst]), growth, rank(compared, references), compared, dict(references))
+    return Accuracy(error, float(time[worst]), growth, rank(compared, references, identified), compared, dict(references))
 
 
 @dataclass(frozen=True)

@@ -79,6 +79,7 @@ def _rerun(H: float, index: np.ndarray, theta: np.ndarray, problem: Problem,  # 
     last = int(index[within][-1])
     differences: dict[str, float] = {}
     errors: dict[str, float] = {}
+    fits: list[str] = []
     for master in masters_for(2):
         try:
             run = run_master(master, H, last * H, problem)
@@ -87,9 +88,11 @@ def _rerun(H: float, index: np.ndarray, theta: np.ndarray, problem: Problem,  # 
         if run.theta.size <= last:
             continue
         picked = run.theta[index[within]]
-        differences[master.name] = float(np.max(np.abs(theta[within] - picked)))
+        apart = np.abs(theta[within] - picked)
+        differences[master.name] = float(np.max(apart))
+        if np.all(apart <= allowed[within]):  # each row within its own print
+            fits.append(master.name)
         errors[master.name] = float(np.max(np.abs(picked - run.theta_exact[index[within]])))
-    fits = [name for name, diff in differences.items() if diff <= float(np.max(allowed[within]))]
     match = min(fits, key=lambda name: differences[name]) if fits else None
     return differences, errors, last * H, rows, match
 

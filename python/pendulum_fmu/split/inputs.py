@@ -59,6 +59,9 @@ class Law:
         Fitted to round-off with a lag per step (else on average).
     share : float
         Share of the steps the fit explains (held) or its relative residual (on average).
+    precision : float
+        How far the ratio may sit from the truth (the print's and round-off's share in a held
+        fit; :data:`RATIO_SLACK` or :data:`RESIDUAL_FACTOR` times the residual on average).
     lags : numpy.ndarray or None
         Per step: the lag (>= 0), -1 none, -2 an input of 0 (held fits only).
     """
@@ -68,6 +71,7 @@ class Law:
     held: bool
     share: float
     lags: np.ndarray | None = None
+    precision: float = 1e-9
 
 
 def _gravity(k: float, s: np.ndarray) -> np.ndarray:
@@ -106,15 +110,16 @@ def held_fit(a: np.ndarray, tol: np.ndarray, signals: dict[str, np.ndarray], k: 
             ratios = a[lag:][usable] / base[usable]
             bins, counts = np.unique(np.round(ratios, 7), return_counts=True)
             ratio = float(np.median(ratios[np.round(ratios, 7) == bins[np.argmax(counts)]]))
+            precision = 1e-9 + 3 * float(np.median(tol[lag:][usable] / np.abs(base[usable])))
             for snap in (1.0, -1.0):
-                if abs(ratio - snap) <= 1e-9:
+                if abs(ratio - snap) <= precision:
                     ratio = snap
             matched = np.zeros(a.size, dtype=bool)
             for other in range(MAX_LAG + 1):
                 matched |= _lag_match(a, ratio * F, tol, other)
             share = float(np.mean(matched[lag:]))
             if share >= HELD_SHARE and (best is None or share > best.share + 1e-12):
-                best = Law(name, ratio, True, share)
+                best = Law(name, ratio, True, share, None, precision)
     if best is None:
         return None
     F = best.ratio * _gravity(k, signals[best.signal])  # noqa: N806
@@ -122,7 +127,7 @@ def held_fit(a: np.ndarray, tol: np.ndarray, signals: dict[str, np.ndarray], k: 
     for lag in range(MAX_LAG, -1, -1):  # the smallest lag that fits wins
         lags[_lag_match(a, F, tol, lag)] = lag
     lags[(lags == -1) & (np.abs(a) <= tol)] = -2
-    return Law(best.signal, best.ratio, True, best.share, lags)
+    return Law(best.signal, best.ratio, True, best.share, lags, best.precision)
 
 
 def mean_fit(a: np.ndarray, h: np.ndarray, signals: dict[str, np.ndarray], omega: np.ndarray,
@@ -150,8 +155,9 @@ def mean_fit(a: np.ndarray, h: np.ndarray, signals: dict[str, np.ndarray], omega
         if norm <= 0:
             continue
         residual = float(np.sqrt(np.sum(weight ** 2 * (a - design @ coef) ** 2) / norm))
-        if best is None or residual < best.share:
-            best = Law(name, ratio, False, residual)
+        # theta, the right signal, is tried first; another wins only by fitting ten times better
+        if best is None or residual < (0.1 if best.signal == "theta" else 1.0) * best.share:
+            best = Law(name, ratio, False, residual, None, max(RATIO_SLACK, RESIDUAL_FACTOR * residual))
     if best is None or best.share > FIT_RESIDUAL:
         return None
     return best
@@ -232,12 +238,13 @@ def law_findings(law: Law, k: float, exact_signal_ok: bool = True) -> tuple[list
         findings.append(Finding("connection", f"wrong connection: Gravity's input theta is fed Body's {law.signal} "
                                               f"(Body's alpha = {law.ratio:.6g} * -(g/L) sin({law.signal}) "
                                               f"{how} {'%.0f %% of the steps' % (100 * law.share) if law.held else 'the run'})"))
-    slack = 1e-9 if law.held else max(RATIO_SLACK, RESIDUAL_FACTOR * law.share)
+    slack = law.precision
     if law.ratio < 0:
         findings.append(Finding("sign", f"wrong sign: Body's input is +(g/L) sin({law.signal}) (alpha = "
                                         f"{law.ratio:.6g} * -(g/L) sin): Gravity's alpha enters Body negated"))
     size = abs(law.ratio)
-    if abs(size - 1) > slack:
+    # on average, a wrong signal's ratio carries the fit's bias (its midpoint has no Hermite term)
+    if abs(size - 1) > slack and (law.held or law.signal == "theta"):
         findings.append(Finding("parameter", f"parameter mismatch: Gravity computes g/L = {size * k:.6g} 1/s2 where "
                                              f"Body's pendulum has {k:.6g} (ratio {size:.6g}): Gravity's g = "
                                              f"{size * k:.6g} m/s2 for L = 1 m, or Gravity's L = {1 / size:.6g} "

@@ -291,7 +291,7 @@ def judge_split(data: Any, start: Sequence[str] = (), master: str | None = None,
                    decimated)
     reference = exact(problem.theta0, problem.omega0, problem.L, problem.g, times)[0]
     within = np.arange(times.size) < who.rows if who.rows else None
-    acc = accuracy(times, values["theta"], reference, within, who.reference_errors)
+    acc = accuracy(times, values["theta"], reference, within, who.reference_errors, who.master)
     criteria = []
     if max_error is not None:
         ok = acc.error <= max_error
