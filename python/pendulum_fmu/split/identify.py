@@ -9,8 +9,8 @@ the FMUs and a closed form in numpy; allowed: 2e-13 max(1, |theta|) sqrt(n)) plu
 print's resolution of theta. A file that holds every m-th communication point only is tried at
 H / m for m in :data:`DECIMATIONS` when no master reproduces it at H (over the first
 :data:`DECIMATION_STEPS` macro steps; or at ``step``, given).
-Long files are rerun over their first :data:`RERUN_STEPS` macro steps (the identification and
-the rank then say so).
+Long files are rerun over their first :data:`RERUN_BUDGET` / (number of masters) macro steps
+(the identification and the rank then say so).
 """
 
 from __future__ import annotations
@@ -22,8 +22,9 @@ import numpy as np
 
 from pendulum_fmu.split.pair import Problem
 
-RERUN_STEPS = 10_000
-"""Most macro steps each reference master is rerun over."""
+RERUN_BUDGET = 36_000
+"""Most macro steps of all reference masters together (6,000 each for six: a judge call on 1e5 rows
+stays under 5 s, ``pendulum-fmu bench masters --judge-rows 100000``)."""
 DECIMATIONS: tuple[int, ...] = (2, 4, 5, 10)
 """Every m-th point written, tried when no master reproduces the file at its own H."""
 DECIMATION_STEPS = 1_000
@@ -49,7 +50,7 @@ class Identification:
     span : float
         The reruns' end time (s); the file's rows up to it were compared.
     truncated : bool
-        The reruns stopped before the file's end (:data:`RERUN_STEPS`).
+        The reruns stopped before the file's end (:func:`rerun_steps`).
     differences : dict of str to float
         Largest |theta_file - theta_master| per master over the compared rows.
     reference_errors : dict of str to float
@@ -67,6 +68,13 @@ class Identification:
     differences: dict[str, float] = field(default_factory=dict)
     reference_errors: dict[str, float] = field(default_factory=dict)
     rows: int = 0
+
+
+def rerun_steps() -> int:
+    """Most macro steps each reference master is rerun over: :data:`RERUN_BUDGET` shared."""
+    from pendulum_fmu.split.masters import masters_for
+
+    return RERUN_BUDGET // max(1, len(masters_for(2)))
 
 
 def _rerun(H: float, index: np.ndarray, theta: np.ndarray, problem: Problem,  # noqa: N803
@@ -130,7 +138,7 @@ def identify(index: np.ndarray | None, H: float | None, theta: np.ndarray,  # no
     tried: Identification | None = None
     for every in ratios + (list(DECIMATIONS) if step is None and decimated else []):
         macro = H / every
-        limit = RERUN_STEPS if every == ratios[0] else DECIMATION_STEPS
+        limit = rerun_steps() if every == ratios[0] else DECIMATION_STEPS
         if index[0] * every > limit:
             break
         differences, errors, span, rows, match = _rerun(macro, index * every, theta, problem, allowed, limit)

@@ -123,9 +123,12 @@ def held_fit(a: np.ndarray, tol: np.ndarray, signals: dict[str, np.ndarray], k: 
     if best is None:
         return None
     F = best.ratio * _gravity(k, signals[best.signal])  # noqa: N806
-    lags = np.full(a.size, -1)
-    for lag in range(MAX_LAG, -1, -1):  # the smallest lag that fits wins
-        lags[_lag_match(a, F, tol, lag)] = lag
+    matches = np.array([_lag_match(a, F, tol, lag) for lag in range(MAX_LAG + 1)])
+    # the exchange's own lag (Gauss-Seidel 0, Jacobi 1) wins where several fit (near a turning
+    # point theta barely moves over a step); elsewhere the smallest lag that fits
+    base = 0 if np.count_nonzero(matches[0]) >= np.count_nonzero(matches[1]) else 1
+    lags = np.where(matches.any(axis=0), np.argmax(matches, axis=0), -1)
+    lags[matches[base]] = base
     lags[(lags == -1) & (np.abs(a) <= tol)] = -2
     return Law(best.signal, best.ratio, True, best.share, lags, best.precision)
 
