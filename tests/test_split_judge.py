@@ -194,7 +194,7 @@ def test_accuracy_decides_only_on_a_stated_criterion(tmp_path: Path) -> None:
     assert not judge_split(paths[1], master="gauss-seidel-zoh").passed
     runs = judge_runs(paths, order=1.0)
     assert runs.order is not None and runs.order.runs == 4 and 0.8 < runs.order.order < 1.3, runs.lines
-    assert runs.passed and runs.summary.endswith(f"(order {runs.order.order:.2g} over 4 runs)"), runs.summary
+    assert runs.passed and runs.summary.endswith(f"(order {runs.order.order:.1f} over 4 runs)"), runs.summary
     assert not judge_runs(paths, order=2.0).passed
 
 

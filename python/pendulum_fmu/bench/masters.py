@@ -185,10 +185,11 @@ def figure(points: list[Point], path: Path) -> Path:
     return path
 
 
-def judge_seconds(rows: int) -> tuple[float, str]:
+def judge_seconds(rows: int) -> tuple[float, float, str]:
     """Wall time of one judge call on a file of ``rows`` macro steps (``rows`` + 1 rows:
     Gauss-Seidel with interpolation at H = 10 / rows, 0..10 s, every output in full precision),
-    warm: a small file is judged first. Returns (seconds, the summary line)."""
+    warm: a small file is judged first. Returns (wall seconds, CPU seconds of this process, the
+    summary line): on a shared machine the CPU time is the call's own cost."""
     import time
 
     from pendulum_fmu.split.columns import write_columns
@@ -206,6 +207,6 @@ def judge_seconds(rows: int) -> tuple[float, str]:
             write_columns(path, list(run.time), {k: list(v) for k, v in columns.items()})
             paths.append(path)
         judge_split(paths[0])
-        began = time.perf_counter()
+        began, cpu = time.perf_counter(), time.process_time()
         verdict = judge_split(paths[1])
-        return time.perf_counter() - began, verdict.summary
+        return time.perf_counter() - began, time.process_time() - cpu, verdict.summary

@@ -327,7 +327,7 @@ def summary(verdict: SplitVerdict, order: Order | None = None) -> str:
     identity = f"behaves as {who.text}" if who.master else who.text.split(";")[0]
     text = f"{conformance}; {identity}; error {verdict.error:.3g} rad at {_h_text(verdict)}"
     if order is not None:
-        text += f" (order {order.order:.2g} over {order.runs} runs)"
+        text += f" (order {order.order:.1f} over {order.runs} runs)"
     return text
 
 

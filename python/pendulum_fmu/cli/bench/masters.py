@@ -50,6 +50,7 @@ def run(args: argparse.Namespace) -> int:
         bench.figure(points, args.plot)
         print(f"figure: {args.plot}")
     if args.judge_rows:
-        seconds, verdict = bench.judge_seconds(args.judge_rows)
-        print(f"judge --system split on {args.judge_rows + 1} rows: {seconds:.2f} s (target 5 s): {verdict}")
+        seconds, cpu, verdict = bench.judge_seconds(args.judge_rows)
+        print(f"judge --system split on {args.judge_rows + 1} rows: {seconds:.2f} s wall, {cpu:.2f} s CPU "
+              f"(target 5 s): {verdict}")
     return 0
