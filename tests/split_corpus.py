@@ -159,7 +159,8 @@ def write(path: Path, times: list[float], theta: list[float], omega: list[float]
     """The rows in one of :data:`LAYOUTS`, printed as ``fmt``; with ``exact`` = (theta0, omega0,
     shift) Body's theta_exact too (the exact pendulum at each row's time + shift, as Body's own
     column moves with its values when the rows are relabelled)."""
-    names, sep = LAYOUTS[layout]
+    layout_names, sep = LAYOUTS[layout]
+    names: tuple[str, ...] = layout_names
 
     def show(v: float) -> str:
         return repr(v) if fmt == "repr" else fmt % v

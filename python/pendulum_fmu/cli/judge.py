@@ -35,7 +35,9 @@ examples:
   pendulum-fmu judge result.csv --interface ME --start tolerance=1e-6
   pendulum-fmu judge ecos.csv --start theta=80deg --start L=2 --json verdict.json --plot errors.png
   pendulum-fmu judge container.csv --instance pend2
-  pendulum-fmu judge coupled.csv --system split --master gauss-seidel-zoh
+  pendulum-fmu judge coupled.csv --system split
+  pendulum-fmu judge runs/ --system split --order 1 --json runs.json --plot runs.png
+  pendulum-fmu judge coupled.csv --system split --max-error 1e-3 --master gauss-seidel-zoh
   pendulum-fmu judge results/2.0/me/linux64/MyTool/1.0/PendulumFMU/0.1.0/Pendulum/Pendulum_out.csv \
       --cross-check-verdict results/2.0/me/linux64/MyTool/1.0/PendulumFMU/0.1.0/Pendulum
 """

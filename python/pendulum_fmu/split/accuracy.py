@@ -83,7 +83,8 @@ def accuracy(time: np.ndarray, theta: np.ndarray, exact_theta: np.ndarray, withi
     if not references or within is None:
         return Accuracy(error, float(time[worst]), growth)
     compared = float(np.nanmax(errors[within]))
-    return Accuracy(error, float(time[worst]), growth, rank(compared, references, identified), compared, dict(references))
+    return Accuracy(error, float(time[worst]), growth, rank(compared, references, identified), compared,
+                    dict(references))
 
 
 @dataclass(frozen=True)
@@ -110,7 +111,7 @@ class Order:
 
 def observed_order(steps: list[float], errors: list[float]) -> Order | None:
     """The order and constant over runs at ``steps`` with ``errors`` (None under two distinct H)."""
-    pairs = sorted((h, e) for h, e in zip(steps, errors) if h > 0 and e > 0 and math.isfinite(e))
+    pairs = sorted((h, e) for h, e in zip(steps, errors, strict=True) if h > 0 and e > 0 and math.isfinite(e))
     if len({h for h, _ in pairs}) < 2:
         return None
     x = np.log([h for h, _ in pairs])

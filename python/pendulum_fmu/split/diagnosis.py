@@ -86,10 +86,12 @@ def start_finding(time: np.ndarray, values: dict[str, np.ndarray], resolution: d
     off = []
     for name, value in (("theta", problem.theta0), ("omega", problem.omega0)):
         if name in values and abs(values[name][0] - value) > 2 * resolution[name][0] + 1e-12 * max(1.0, abs(value)):
-            shown = f"{values[name][0]:.10g}" + (f" ({math.degrees(values[name][0]):.6g} deg)" if name == "theta" else "")
+            shown = f"{values[name][0]:.10g}"
+            if name == "theta":
+                shown += f" ({math.degrees(values[name][0]):.6g} deg)"
             off.append(f"{name}(0) = {shown} where {'--start gives' if stated else 'the SSP starts at'} {value:.10g}")
     if not off:
         return None
-    return Finding("start", f"start values other than {'the stated' if stated else 'the SSP' + chr(39) + 's'}: "
-                            f"{'; '.join(off)} (the error is against the {'stated' if stated else 'SSP' + chr(39) + 's'} "
+    whose = "the stated" if stated else "the SSP's"
+    return Finding("start", f"start values other than {whose}: {'; '.join(off)} (the error is against {whose} "
                             "start; give --start when the run changed it)")

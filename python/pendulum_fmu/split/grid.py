@@ -95,9 +95,8 @@ def _order_findings(time: np.ndarray, resolution: np.ndarray) -> tuple[np.ndarra
     same = np.diff(sorted_time) <= resolution[order][1:] + resolution[order][:-1]
     if np.any(same):
         twice = sorted_time[1:][same]
-        findings.append(Finding("doubled", f"{twice.size} row(s) doubled: t = "
-                                           f"{', '.join(f'{t:.9g}' for t in twice[:5])}{' ...' if twice.size > 5 else ''}"
-                                           " s written twice"))
+        shown = ", ".join(f"{t:.9g}" for t in twice[:5]) + (" ..." if twice.size > 5 else "")
+        findings.append(Finding("doubled", f"{twice.size} row(s) doubled: t = {shown} s written twice"))
     keep = order[np.concatenate(([True], ~same))]
     return keep, findings
 
@@ -128,7 +127,8 @@ def read_grid(time: np.ndarray, resolution: np.ndarray, step: float | None = Non
             gaps = np.flatnonzero(np.diff(index) > 1)
             lost = int(np.sum(np.diff(index)[gaps] - 1))
             where = ", ".join(f"{t[0] + k * H:.9g}" for g in gaps[:5] for k in range(index[g] + 1, index[g + 1]))
-            findings.append(Finding("missing", f"{lost} row(s) missing: no row at t = {where}"
-                                               f"{' ...' if gaps.size > 5 else ''} s (the grid is t0 + k H, H = {H:.9g} s)"))
+            where += " ..." if gaps.size > 5 else ""
+            findings.append(Finding("missing", f"{lost} row(s) missing: no row at t = {where} s "
+                                               f"(the grid is t0 + k H, H = {H:.9g} s)"))
             return Grid(keep, t, H, index, findings)
     return Grid(keep, t, None, None, findings)

@@ -126,9 +126,9 @@ def held_fit(a: np.ndarray, tol: np.ndarray, signals: dict[str, np.ndarray], k: 
     matches = np.array([_lag_match(a, F, tol, lag) for lag in range(MAX_LAG + 1)])
     # the exchange's own lag (Gauss-Seidel 0, Jacobi 1) wins where several fit (near a turning
     # point theta barely moves over a step); elsewhere the smallest lag that fits
-    base = 0 if np.count_nonzero(matches[0]) >= np.count_nonzero(matches[1]) else 1
+    own = 0 if np.count_nonzero(matches[0]) >= np.count_nonzero(matches[1]) else 1
     lags = np.where(matches.any(axis=0), np.argmax(matches, axis=0), -1)
-    lags[matches[base]] = base
+    lags[matches[own]] = own
     lags[(lags == -1) & (np.abs(a) <= tol)] = -2
     return Law(best.signal, best.ratio, True, best.share, lags, best.precision)
 
@@ -236,11 +236,11 @@ def law_findings(law: Law, k: float, exact_signal_ok: bool = True) -> tuple[list
         findings.append(Finding("dropped", f"a connection dropped: Body's input alpha stayed {what} over every step "
                                            "(Gravity's alpha never reached Body, or Body's theta never Gravity)"))
         return findings, None
-    how = "to round-off at" if law.held else "on average over"
+    how = f"to round-off at {100 * law.share:.0f} % of the steps" if law.held else "on average over the run"
     if law.signal != "theta":
         findings.append(Finding("connection", f"wrong connection: Gravity's input theta is fed Body's {law.signal} "
                                               f"(Body's alpha = {law.ratio:.6g} * -(g/L) sin({law.signal}) "
-                                              f"{how} {'%.0f %% of the steps' % (100 * law.share) if law.held else 'the run'})"))
+                                              f"{how})"))
     slack = law.precision
     if law.ratio < 0:
         findings.append(Finding("sign", f"wrong sign: Body's input is +(g/L) sin({law.signal}) (alpha = "
@@ -280,7 +280,7 @@ def _lag_findings(lags: np.ndarray) -> tuple[list[Finding], Schedule | None]:
     # held over a step = one lag more than the step before: the value was not refreshed
     refreshed = np.concatenate(([True], ~((lags[1:] == lags[:-1] + 1) & (lags[1:] > base))))
     period = _period(refreshed)
-    if period is not None and np.all((lags[refreshed][1:] == base)):
+    if period is not None and np.all(lags[refreshed][1:] == base):
         return findings, Schedule(base, period)
     stale = lags - base
     late = stale[(stale > 0) & (lags >= 0)]
@@ -288,7 +288,8 @@ def _lag_findings(lags: np.ndarray) -> tuple[list[Finding], Schedule | None]:
         first = int(np.flatnonzero((stale > 0) & (lags >= 0))[0])
         counts = ", ".join(f"by {j} at {np.count_nonzero(late == j)}" for j in range(1, MAX_LAG + 1)
                            if np.count_nonzero(late == j))
-        findings.append(Finding("stale", f"inputs stale: Body's alpha was {'one exchange' if late.max() == 1 else 'several exchanges'} "
+        old = "one exchange" if late.max() == 1 else "several exchanges"
+        findings.append(Finding("stale", f"inputs stale: Body's alpha was {old} "
                                          f"old at {late.size} of {total} steps "
                                          f"({100 * late.size / total:.3g} %; {counts}; first at step {first})"))
     return findings, Schedule(base)

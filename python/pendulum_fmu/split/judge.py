@@ -25,9 +25,10 @@ from __future__ import annotations
 
 import math
 import re
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any, Sequence
+from typing import Any
 
 import numpy as np
 
@@ -188,7 +189,7 @@ def reported_seconds(data: Any) -> float | None:
         return None
     try:
         with open(data, encoding="utf-8", errors="replace") as stream:
-            for _, line in zip(range(50), stream):
+            for _, line in zip(range(50), stream, strict=False):
                 match = _WALL.match(line)
                 if match:
                     try:
@@ -344,7 +345,8 @@ def verdict_lines(verdict: SplitVerdict, order: Order | None = None) -> list[str
     who = verdict.identification
     if who.master:
         every = f", one row every {who.every} macro steps" if who.every > 1 else ""
-        span = f" over the first {who.rows} rows (to t = {who.span:.6g} s)" if who.truncated else f" over all {who.rows} rows"
+        span = (f" over the first {who.rows} rows (to t = {who.span:.6g} s)" if who.truncated
+                else f" over all {who.rows} rows")
         text = (f"behaves as {who.text} at H = {who.H:.6g}{every}: the two differ by "
                 f"{who.differences[who.master]:.2g} rad{span}")
     else:

@@ -76,7 +76,7 @@ def write_plot(sources: list[Any], verdicts: list[SplitVerdict], path: Path) -> 
     several = len(verdicts) > 1
     fig, axes = plt.subplots(1, 2 if several else 1, figsize=(12 if several else 8, 5), squeeze=False)
     ax = axes[0][0]
-    for source, verdict in zip(sources, verdicts):
+    for source, verdict in zip(sources, verdicts, strict=True):
         result = read_coupled(source)
         grid = read_grid(result.time, result.resolution["time"])
         theta = result.values["theta"][grid.keep]
