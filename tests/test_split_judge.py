@@ -65,10 +65,10 @@ def test_the_macro_step_is_read_exactly() -> None:
 
 
 def test_a_short_print_is_judged_to_its_resolution(tmp_path: Path) -> None:
-    """Gauss-Seidel with interpolation printed with %.7g: identified (the print's rounding is in
-    the match), conformant."""
-    r = simulate("gauss-seidel", "interpolation", 0.01, 3.0)
-    path = write(tmp_path / "short.csv", r.time, r.theta, r.omega, 0, "%.7g")
+    """Gauss-Seidel with interpolation at H = 0.01 over 10 s printed with %.6g: identified (the
+    print's rounding is in the match), conformant."""
+    r = simulate("gauss-seidel", "interpolation", 0.01, 10.0)
+    path = write(tmp_path / "short.csv", r.time, r.theta, r.omega, 0, "%.6g")
     verdict = judge_split(path)
     assert verdict.master == "gauss-seidel-interpolation" and verdict.conformance.passed, verdict.lines
 
@@ -140,6 +140,16 @@ def test_rows_out_of_order_doubled_missing_or_shifted(tmp_path: Path) -> None:
     assert _kinds(write(tmp_path / "e.csv", *early, 0, "repr")) == ["labels"]
     late = (times[1:], theta[:-1], omega[:-1])
     assert _kinds(write(tmp_path / "l.csv", *late, 0, "repr")) == ["labels"]
+
+
+def test_a_value_that_is_not_a_number_is_a_finding(tmp_path: Path) -> None:
+    times, theta, omega = run(Setup("gs-zoh", 0.01, 1.0))
+    theta[50] = math.nan
+    verdict = judge_split(write(tmp_path / "nan.csv", times, theta, omega, 0, "repr"))
+    assert [f.kind for f in verdict.findings] == ["not-finite"] and "t = 0.5 s" in verdict.findings[0].line
+    assert math.isfinite(verdict.error)
+    at_rest = run(Setup("gs-zoh", 0.01, 1.0, theta0=0.0))  # Gravity's alpha is 0 throughout: not a dropped input
+    assert judge_split(write(tmp_path / "rest.csv", *at_rest, 0, "repr"), start=["theta=0"]).conformance.passed
 
 
 def test_another_start_is_a_finding_never_a_silent_new_start(tmp_path: Path) -> None:

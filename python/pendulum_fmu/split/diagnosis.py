@@ -24,9 +24,9 @@ EXACT_AGREEMENT = 1e-9
 class Finding:
     """One defect: a short kind and the line that explains it, with its evidence.
 
-    Kinds: ``out-of-order``, ``doubled``, ``missing`` (rows), ``labels`` (rows labelled early or
-    late), ``start`` (start values), ``sign``, ``connection``, ``parameter``, ``stale``,
-    ``dropped``, ``start-dropped`` (inputs)."""
+    Kinds: ``out-of-order``, ``doubled``, ``missing``, ``not-finite`` (rows), ``labels`` (rows
+    labelled early or late), ``start`` (start values), ``sign``, ``connection``, ``parameter``,
+    ``stale``, ``dropped``, ``start-dropped`` (inputs)."""
 
     kind: str
     line: str

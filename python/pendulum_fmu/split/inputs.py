@@ -186,6 +186,9 @@ def read_law(time: np.ndarray, values: dict[str, np.ndarray], resolution: dict[s
     a = np.diff(omega) / h
     tol = _tolerance(a, h, omega, resolution["omega"], k, resolution["theta"])
     if np.all(np.abs(a - a[0]) <= tol):
+        gravity = _gravity(k, values["theta"][:-1])
+        if np.all(np.abs(a - gravity) <= tol):  # at rest at theta = 0 (or pi): Gravity's alpha is constant too
+            return Law("theta", 1.0, True, 1.0, np.zeros(a.size, dtype=int))
         return Law("constant", float(a[0]), True, 1.0, np.full(a.size, -1))
     signals = {"theta": values["theta"], "omega": omega}
     if "theta_exact" in values:

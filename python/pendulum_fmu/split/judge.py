@@ -263,6 +263,20 @@ def judge_split(data: Any, start: Sequence[str] = (), master: str | None = None,
     index = grid.index
     if grid.H is not None and index is not None:
         index = index + int(round(times[0] / grid.H)) - int(index[0])
+    finite = np.ones(times.size, dtype=bool)
+    for name in ("theta", "omega"):
+        if name in values:
+            finite &= np.isfinite(values[name])
+    if not np.all(finite):
+        bad = grid.time[~finite]
+        shown = ", ".join(f"{t:.9g}" for t in bad[:5]) + (" ..." if bad.size > 5 else "")
+        findings.append(Finding("not-finite", f"{bad.size} row(s) with theta or omega not a number: t = {shown} s"))
+        if np.count_nonzero(finite) < 3:
+            raise ReadError(f"{result.source}: fewer than 3 rows with finite theta and omega")
+        values = {name: column[finite] for name, column in values.items()}
+        resolution = {name: column[finite] for name, column in resolution.items()}
+        times = times[finite]
+        index = index[finite] if index is not None else None
     shift = label_shift(times, values, resolution, problem, H) if grid.H is not None else 0
     if shift:
         findings.append(label_finding(shift, H, "theta_exact" in values))
