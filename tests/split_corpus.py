@@ -295,8 +295,8 @@ def generate(folder: Path, part: str) -> list[Case]:  # noqa: C901
 @dataclass(frozen=True)
 class Outcome:
     """A case and what the judge said: ``ok``, ``honest-failed``, ``wrong-passed``, ``wrong-cause``
-    or ``misidentified`` (an honest run of a reference master named otherwise, or another master
-    named as one)."""
+    (the planted defect not named, or another named beside it) or ``misidentified`` (an honest
+    run of a reference master named otherwise, or another master named as one)."""
 
     case: Case
     status: str
@@ -319,7 +319,7 @@ def judge(case: Case) -> Outcome:
             status = "ok"
     elif verdict.conformance.passed:
         status = "wrong-passed"
-    elif case.kind not in kinds:
+    elif set(kinds) != {case.kind}:  # the planted defect, and nothing else
         status = "wrong-cause"
     else:
         status = "ok"

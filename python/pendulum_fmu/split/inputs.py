@@ -105,11 +105,13 @@ def held_fit(a: np.ndarray, tol: np.ndarray, signals: dict[str, np.ndarray], k: 
                 continue
             base = F[: a.size - lag]
             usable = np.abs(base) > 0.05 * k
-            if np.count_nonzero(usable) < 2:
+            if np.count_nonzero(usable) < max(3, 0.05 * usable.size):
                 continue
             ratios = a[lag:][usable] / base[usable]
             bins, counts = np.unique(np.round(ratios, 7), return_counts=True)
             ratio = float(np.median(ratios[np.round(ratios, 7) == bins[np.argmax(counts)]]))
+            if abs(ratio) < 1e-3:  # an input of 0 against a Gravity that is not: no law of Gravity's
+                continue
             precision = 1e-9 + 3 * float(np.median(tol[lag:][usable] / np.abs(base[usable])))
             for snap in (1.0, -1.0):
                 if abs(ratio - snap) <= precision:
@@ -117,7 +119,8 @@ def held_fit(a: np.ndarray, tol: np.ndarray, signals: dict[str, np.ndarray], k: 
             matched = np.zeros(a.size, dtype=bool)
             for other in range(MAX_LAG + 1):
                 matched |= _lag_match(a, ratio * F, tol, other)
-            share = float(np.mean(matched[lag:]))
+            # steps where F is near 0 fit any ratio: the share counts the others only
+            share = float(np.mean(matched[lag:][usable]))
             if share >= HELD_SHARE and (best is None or share > best.share + 1e-12):
                 best = Law(name, ratio, True, share, None, precision)
     if best is None:
