@@ -105,7 +105,11 @@ def write_plot(sources: list[Any], verdicts: list[SplitVerdict], path: Path) -> 
             top.loglog(seconds, [v.error for v in verdicts], "--s", color="C1", label="error against wall time")
             top.set_xlabel("wall time as reported (s)")
         right.grid(True, which="both", alpha=0.3)
-        right.set_title("order over the runs", fontsize=9)
+        from pendulum_fmu.split.accuracy import observed_order
+
+        fit = observed_order(steps, [v.error for v in verdicts])
+        right.set_title("order over the runs" + (f": error = {fit.constant:.3g} H^{fit.order:.2f}" if fit else ""),
+                        fontsize=9)
     fig.tight_layout()
     fig.savefig(path, dpi=110)
     plt.close(fig)
