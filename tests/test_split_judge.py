@@ -175,6 +175,7 @@ def test_honest_masters_of_their_own_are_conformant(tmp_path: Path, setup: Setup
     verdict = judge_split(write(tmp_path / "own.csv", *run(setup), 1, "%.12g"))
     assert verdict.conformance.passed and verdict.passed, verdict.lines
     assert verdict.master is None and own in verdict.identification.text
+    assert ("not ranked" in verdict.lines[-2]) == setup.variable, verdict.lines
 
 
 def test_the_strong_coupling_master_ranks_better_than_all(tmp_path: Path) -> None:
@@ -202,7 +203,11 @@ def test_accuracy_decides_only_on_a_stated_criterion(tmp_path: Path) -> None:
     assert not judge_split(paths[1], max_error=single.error / 2).passed
     assert judge_split(paths[1], max_error=single.error * 2).passed
     assert not judge_split(paths[1], master="gauss-seidel-zoh").passed
+    for path, seconds in zip(paths, (0.5, 1.1, 2.3, 4.4), strict=True):  # an engine's wall time, in its header
+        path.write_text(f"# engine X, wall time = {seconds}\n" + path.read_text())
     runs = judge_runs(paths, order=1.0)
+    assert [v.seconds for v in runs.verdicts] == [0.5, 1.1, 2.3, 4.4]
+    assert "H = 0.01: " in runs.lines[-4] and " rad in 1.1 s" in runs.lines[-4], runs.lines
     assert runs.order is not None and runs.order.runs == 4 and 0.8 < runs.order.order < 1.3, runs.lines
     assert runs.passed and runs.summary.endswith(f"(order {runs.order.order:.1f} over 4 runs)"), runs.summary
     assert not judge_runs(paths, order=2.0).passed

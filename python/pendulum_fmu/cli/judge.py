@@ -64,8 +64,8 @@ def configure(parser: argparse.ArgumentParser) -> None:
                              "(default: as for simulate)")
     parser.add_argument("--system", choices=("pendulum", "split"), default="pendulum",
                         help="pendulum: a run of Pendulum.fmu (default); split: a coupled run of PendulumBody and "
-                             "PendulumGravity (PendulumSplit.ssp), judged against the reference masters "
-                             "(docs/masters.md)")
+                             "PendulumGravity (PendulumSplit.ssp): conformance (each defect named), which reference "
+                             "master it reproduces, its accuracy (docs/masters.md)")
     parser.add_argument("--master", metavar="NAME",
                         help="with --system split: the reference master the run implements, e.g. gauss-seidel-zoh "
                              "(jacobi|gauss-seidel)-(zoh|extrapolation|interpolation): fail unless the run reproduces "

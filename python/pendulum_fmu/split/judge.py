@@ -372,6 +372,8 @@ def verdict_lines(verdict: SplitVerdict, order: Order | None = None) -> list[str
     if acc.rank:
         span = f" over the first {who.rows} rows" if who.truncated else ""
         text += f"; {acc.rank} at H = {who.H:.6g}{span}"
+    elif not verdict.uniform:
+        text += "; not ranked (a variable macro step: the reference masters run at a fixed H)"
     lines.append(_row("accuracy", "INFO", text))
     if verdict.seconds is not None:
         lines.append(_row("wall time", "INFO", f"{verdict.seconds:.6g} s as the engine reports"))
