@@ -29,10 +29,13 @@ THETA0 = math.radians(120)
 OMEGA0 = 0.5
 L = 2.0
 SSP_THETA0 = 1.3089969389957472
+SIX = [m for m in MASTERS if m.coupling in ("zoh", "extrapolation", "interpolation")]
+"""The masters tests/split_closed_form.py writes again (a master added to the registry is judged,
+but not written again here)."""
 
 
 @pytest.mark.parametrize("H", [0.02, 0.005])
-@pytest.mark.parametrize("master", MASTERS, ids=lambda m: m.name)
+@pytest.mark.parametrize("master", SIX, ids=lambda m: m.name)
 def test_names_each_master(master: Master, H: float, tmp_path: Path) -> None:  # noqa: N803
     """120 deg, omega0 0.5 rad/s, L = 2 (given with --start), 1.5 s: conformant, named, and its
     error is that master's on the same rows (the rank says so)."""
@@ -180,8 +183,10 @@ def test_honest_masters_of_their_own_are_conformant(tmp_path: Path, setup: Setup
 
 def test_the_strong_coupling_master_ranks_better_than_all(tmp_path: Path) -> None:
     verdict = judge_split(write(tmp_path / "strong.csv", *run(Setup("strong", 0.01, 10.0)), 0, "repr"))
-    assert verdict.accuracy.rank.startswith("better than all 6 reference masters"), verdict.lines
-    assert verdict.error < min(verdict.reference_errors.values())
+    six = [verdict.reference_errors[m.name] for m in SIX]
+    assert verdict.error == pytest.approx(2.15e-5, rel=0.01) and verdict.error < min(six) / 3, verdict.lines
+    if len(verdict.reference_errors) == len(SIX):
+        assert verdict.accuracy.rank.startswith("better than all 6 reference masters"), verdict.lines
 
 
 def test_decimated_output_is_identified_at_its_macro_step(tmp_path: Path) -> None:
