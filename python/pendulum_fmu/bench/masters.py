@@ -1,13 +1,18 @@
 """Speed against error for co-simulation masters on the split pendulum (``pendulum-fmu bench masters``).
 
-For each macro step H (default 1e-1 to 1e-4 s) and the pendulum from 75 deg over 10 s: each
+For each macro step H (default 1e-3, 5e-4, 2.5e-4 and 1.25e-4 s: where every reference master's
+error means something, 0.29 rad for Jacobi with hold at 1e-3 down to 8e-12 for Gauss-Seidel with
+interpolation at 1.25e-4; at the SSP's H = 0.01 Jacobi with hold is 3.56 rad off, a phase lost,
+and at 1e-5 the best master is at round-off) and the pendulum from 75 deg over 10 s: each
 reference master of :mod:`pendulum_fmu.split.masters` (FMI 2.0 FMUs through fmpy; the wall
 time is its stepping loop) and each engine of :mod:`pendulum_fmu.split.engines` that runs here
 (the wall time is the engine's whole run: unpacking, a child process for libcosim and Ecos,
 writing its CSV). The error is the largest |theta - theta_exact| at the communication points
 (for a file whose rows are labelled one step early, at the times they belong to); the observed
-order compares consecutive H; a work-precision figure draws error against wall time, one line
-per master or engine.
+order compares consecutive H; each engine's file is judged (conformance and which master it
+behaves as; a reference master is the yardstick, conformant by construction); a work-precision
+figure draws error against wall time, one line per master or engine. ``--judge-rows N`` also
+times one judge call on a file of N macro steps (Gauss-Seidel with interpolation at H = 10 / N).
 """
 
 from __future__ import annotations
@@ -19,17 +24,14 @@ from pathlib import Path
 
 import numpy as np
 
-from pendulum_fmu.split.diagnosis import label_finding
+from pendulum_fmu.split.diagnosis import label_shift
 from pendulum_fmu.split.engines import EngineError, engine_names, engine_version, missing, run_engine
 from pendulum_fmu.split.masters import MASTERS, observed_orders, run_master
 from pendulum_fmu.split.pair import Problem
 from pendulum_fmu.split.reading import read_coupled
 
-STEPS: tuple[float, ...] = (1e-1, 1e-2, 1e-3, 1e-4)
+STEPS: tuple[float, ...] = (1e-3, 5e-4, 2.5e-4, 1.25e-4)
 STOP = 10.0
-JUDGED_FROM = 1e-2
-"""Engines' files are judged (which master they behave as) for H at least this (the judge reruns
-every reference master at the file's H)."""
 
 
 @dataclass(frozen=True)
@@ -49,7 +51,7 @@ class Point:
     seconds : float
         Wall time (s).
     note : str
-        For an engine: the master it behaves as, its defects, or why it could not run.
+        For an engine: the judge's conformance and identification, or why it could not run.
     """
 
     name: str
@@ -65,10 +67,8 @@ def engine_error(path: Path, H: float) -> float:  # noqa: N803
     from pendulum_fmu import exact
 
     result = read_coupled(path)
-    time = result.time
     problem = Problem()
-    if "theta_exact" in result.values and label_finding(time, result.values["theta_exact"], problem, H):
-        time = time + H
+    time = result.time + label_shift(result.time, result.values, result.resolution, problem, H) * H
     theta = exact(problem.theta0, problem.omega0, problem.L, problem.g, time)[0]
     return float(np.max(np.abs(result.values["theta"] - theta)))
 
@@ -77,9 +77,7 @@ def _judged(path: Path) -> str:
     from pendulum_fmu.split.judge import judge_split
 
     verdict = judge_split(path)
-    if verdict.master:
-        return f"behaves as {verdict.master}"
-    return ", ".join(f.kind for f in verdict.findings)
+    return verdict.summary.rsplit("; error", 1)[0]
 
 
 def measure(steps: tuple[float, ...] = STEPS, stop: float = STOP, engines: bool = True,
@@ -121,7 +119,7 @@ def measure(steps: tuple[float, ...] = STEPS, stop: float = STOP, engines: bool 
                     except (EngineError, Exception) as error:  # noqa: BLE001 (any engine's own failure)
                         points.append(Point(name, "engine", H, math.nan, math.nan, f"cannot: {error}"))
                         break
-                    note = _judged(path) if H >= JUDGED_FROM else ""
+                    note = _judged(path)
                     points.append(Point(name, "engine", H, engine_error(path, H), run.seconds, note))
     return points
 
@@ -137,9 +135,10 @@ def orders(points: list[Point]) -> dict[str, list[float]]:
 
 
 def table(points: list[Point]) -> list[str]:
-    """The Markdown table: one row per master or engine and H."""
+    """The Markdown table: one row per master or engine and H: conformance, error, order, wall time."""
     found = orders(points)
-    lines = ["| master or engine | H (s) | error in theta (rad) | wall s | order | note |", "|---|---:|---:|---:|---:|---|"]
+    lines = ["| master or engine | H (s) | conformance; identification | error in theta (rad) | order | wall s |",
+             "|---|---:|---|---:|---:|---:|"]
     position: dict[str, int] = {}
     for p in points:
         index = position.get(p.name, 0)
@@ -148,9 +147,10 @@ def table(points: list[Point]) -> list[str]:
         shown = f"{order[index - 1]:.2f}" if 0 < index <= len(order) else ""
         if math.isnan(p.error):
             note = p.note if len(p.note) <= 140 else p.note[:137] + "..."
-            lines.append(f"| {p.name} | {p.H:g} | | | | {note} |")
+            lines.append(f"| {p.name} | {p.H:g} | {note} | | | |")
             continue
-        lines.append(f"| {p.name} | {p.H:g} | {p.error:.3g} | {p.seconds:.3g} | {shown} | {p.note} |")
+        note = p.note or ("reference master" if p.kind == "master" else "")
+        lines.append(f"| {p.name} | {p.H:g} | {note} | {p.error:.3g} | {shown} | {p.seconds:.3g} |")
     return lines
 
 
@@ -183,3 +183,30 @@ def figure(points: list[Point], path: Path) -> Path:
     fig.savefig(path, dpi=120)
     plt.close(fig)
     return path
+
+
+def judge_seconds(rows: int) -> tuple[float, float, str]:
+    """Wall time of one judge call on a file of ``rows`` macro steps (``rows`` + 1 rows:
+    Gauss-Seidel with interpolation at H = 10 / rows, 0..10 s, every output in full precision),
+    warm: a small file is judged first. Returns (wall seconds, CPU seconds of this process, the
+    summary line): on a shared machine the CPU time is the call's own cost."""
+    import time
+
+    from pendulum_fmu.split.columns import write_columns
+    from pendulum_fmu.split.judge import judge_split
+    from pendulum_fmu.split.masters import master_named
+
+    H = STOP / rows  # noqa: N806
+    with tempfile.TemporaryDirectory(prefix="pendulum-bench-split-judge-") as folder:
+        paths = []
+        for name, step in (("small", 0.01), ("large", H)):
+            run = run_master(master_named("gauss-seidel-interpolation"), step, STOP)
+            columns = {"Body.theta": run.theta, "Body.omega": run.omega, "Body.theta_exact": run.theta_exact,
+                       "Body.omega_exact": run.omega_exact, "Gravity.alpha": run.alpha}
+            path = Path(folder) / f"{name}.csv"
+            write_columns(path, list(run.time), {k: list(v) for k, v in columns.items()})
+            paths.append(path)
+        judge_split(paths[0])
+        began, cpu = time.perf_counter(), time.process_time()
+        verdict = judge_split(paths[1])
+        return time.perf_counter() - began, time.process_time() - cpu, verdict.summary

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 import sys
+from pathlib import Path
 
 from pendulum_fmu.cli.arguments import fmu_file, output_file, output_folder, positive
 
@@ -34,7 +35,9 @@ examples:
   pendulum-fmu judge result.csv --interface ME --start tolerance=1e-6
   pendulum-fmu judge ecos.csv --start theta=80deg --start L=2 --json verdict.json --plot errors.png
   pendulum-fmu judge container.csv --instance pend2
-  pendulum-fmu judge coupled.csv --system split --master gauss-seidel-zoh
+  pendulum-fmu judge coupled.csv --system split
+  pendulum-fmu judge runs/ --system split --order 1 --json runs.json --plot runs.png
+  pendulum-fmu judge coupled.csv --system split --max-error 1e-3 --master gauss-seidel-zoh
   pendulum-fmu judge results/2.0/me/linux64/MyTool/1.0/PendulumFMU/0.1.0/Pendulum/Pendulum_out.csv \
       --cross-check-verdict results/2.0/me/linux64/MyTool/1.0/PendulumFMU/0.1.0/Pendulum
 """
@@ -42,7 +45,9 @@ examples:
 
 def configure(parser: argparse.ArgumentParser) -> None:
     """Add the options of ``judge``."""
-    parser.add_argument("result", metavar="RESULT", help="the result file: CSV or Parquet")
+    parser.add_argument("result", metavar="RESULT", nargs="+",
+                        help="the result file: CSV or Parquet; with --system split several files or folders of "
+                             "CSV files: runs of one master at different H (the observed order over them)")
     parser.add_argument("--start", action="append", default=[], metavar="NAME=VALUE",
                         help="a value the run set: theta (rad, or e.g. 80deg), omega, L, g, solver, tolerance; "
                              "repeat for several (the rest: the model description's defaults)")
@@ -59,11 +64,17 @@ def configure(parser: argparse.ArgumentParser) -> None:
                              "(default: as for simulate)")
     parser.add_argument("--system", choices=("pendulum", "split"), default="pendulum",
                         help="pendulum: a run of Pendulum.fmu (default); split: a coupled run of PendulumBody and "
-                             "PendulumGravity (PendulumSplit.ssp), judged against the reference masters "
-                             "(docs/masters.md)")
+                             "PendulumGravity (PendulumSplit.ssp): conformance (each defect named), which reference "
+                             "master it reproduces, its accuracy (docs/masters.md)")
     parser.add_argument("--master", metavar="NAME",
                         help="with --system split: the reference master the run implements, e.g. gauss-seidel-zoh "
-                             "(jacobi|gauss-seidel)-(zoh|extrapolation|interpolation); the bound is 4 times its error")
+                             "(jacobi|gauss-seidel)-(zoh|extrapolation|interpolation): fail unless the run reproduces "
+                             "it")
+    parser.add_argument("--max-error", type=positive("rad"), metavar="E",
+                        help="with --system split: fail when the largest |theta - theta_exact| is above E")
+    parser.add_argument("--order", type=positive(""), metavar="P",
+                        help="with --system split and runs at two H or more: fail when the observed order is below "
+                             "P - 0.2")
     parser.add_argument("--cross-check-verdict", type=output_folder, metavar="DIR",
                         help="also write DIR/passed, DIR/failed or DIR/rejected (empty, the cross-check "
                              "rules' verdict file; the other two are removed)")
@@ -71,17 +82,13 @@ def configure(parser: argparse.ArgumentParser) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Run ``judge`` with parsed arguments: print the checks and the verdict, return 0/1/2."""
-    if args.system == "split" or args.master:
-        from pendulum_fmu.judge import ReadError
-        from pendulum_fmu.split.judge import judge_split
-
-        try:
-            split = judge_split(args.result, start=args.start, master=args.master, instance=args.instance)
-        except (ReadError, ValueError) as error:
-            print(f"pendulum-fmu judge: {'unreadable: ' if isinstance(error, ReadError) else ''}{error}", file=sys.stderr)
-            return 2
-        print("\n".join(split.lines))
-        return split.exit_code
+    if args.system == "split" or args.master or args.max_error is not None or args.order is not None:
+        return _run_split(args)
+    if len(args.result) > 1:
+        print(f"pendulum-fmu judge: {len(args.result)} results given: judge one at a time (several only with "
+              "--system split)", file=sys.stderr)
+        return 2
+    args.result = args.result[0]
     from pendulum_fmu.judge import ReadError
     from pendulum_fmu.judge.report import lines, write_json, write_plot
     from pendulum_fmu.judge.standard_files import judge_with_experiment, outcome, write_verdict_file
@@ -104,3 +111,51 @@ def run(args: argparse.Namespace) -> int:
     if args.plot:
         write_plot(verdict, args.result, args.plot)
     return verdict.exit_code
+
+
+def _split_sources(items: list[str]) -> list[Path]:
+    """The files named, a folder standing for its CSV files (sorted); ValueError when none."""
+    sources: list[Path] = []
+    for item in items:
+        path = Path(item)
+        if path.is_dir():
+            found = sorted(p for p in path.iterdir() if p.suffix.lower() in (".csv", ".parquet"))
+            if not found:
+                raise ValueError(f"{item}: a folder without CSV or Parquet files")
+            sources += found
+        else:
+            sources.append(path)
+    return sources
+
+
+def _run_split(args: argparse.Namespace) -> int:
+    """``judge --system split``: one run or several; print the three answers, write JSON and figure."""
+    from pendulum_fmu.judge import ReadError
+    from pendulum_fmu.split.judge import judge_runs, judge_split
+    from pendulum_fmu.split.report import runs_dict, verdict_dict, write_json, write_plot
+
+    for name in ("interface", "fmu", "cross_check_verdict"):
+        if getattr(args, name):
+            print(f"pendulum-fmu judge: --{name.replace('_', '-')} is for --system pendulum; the split system has "
+                  "its SSP", file=sys.stderr)
+            return 2
+    try:
+        sources = _split_sources(args.result)
+        if len(sources) == 1 and args.order is None:
+            verdict = judge_split(sources[0], start=args.start, master=args.master, instance=args.instance,
+                                  step=args.step, max_error=args.max_error)
+            print("\n".join(verdict.lines))
+            verdicts, data, code = [verdict], verdict_dict(verdict), verdict.exit_code
+        else:
+            runs = judge_runs(sources, start=args.start, master=args.master, instance=args.instance,
+                              step=args.step, max_error=args.max_error, order=args.order)
+            print("\n".join(runs.lines))
+            verdicts, data, code = runs.verdicts, runs_dict(runs), runs.exit_code
+    except (ReadError, ValueError) as error:
+        print(f"pendulum-fmu judge: {'unreadable: ' if isinstance(error, ReadError) else ''}{error}", file=sys.stderr)
+        return 2
+    if args.json:
+        write_json(data, args.json)
+    if args.plot:
+        write_plot([v.source for v in verdicts], verdicts, args.plot)
+    return code

@@ -8,7 +8,11 @@ coupled by a master are the pendulum, so a master's error is measured exactly:
 - :mod:`~pendulum_fmu.split.masters`: the reference masters (Jacobi, Gauss-Seidel; zero-order
   hold, extrapolation, input interpolation) and their measured orders;
 - :mod:`~pendulum_fmu.split.reading`: a coupled result file, as engines write it;
-- :mod:`~pendulum_fmu.split.judge`: which master a file behaves as, what is wrong, the verdict;
+- :mod:`~pendulum_fmu.split.judge`: three answers for a coupled result: conformance (the defects
+  found, :mod:`~pendulum_fmu.split.grid`, :mod:`~pendulum_fmu.split.diagnosis`,
+  :mod:`~pendulum_fmu.split.inputs`), identification (:mod:`~pendulum_fmu.split.identify`) and
+  accuracy (:mod:`~pendulum_fmu.split.accuracy`); :mod:`~pendulum_fmu.split.report` writes
+  them as JSON and a figure;
 - :mod:`~pendulum_fmu.split.engines`: the SSP in the engines that install here.
 """
 
@@ -18,7 +22,7 @@ import importlib
 from typing import Any
 
 _EXPORTS: dict[str, str] = {
-    "judge_split": "judge", "SplitVerdict": "judge", "MASTERS": "masters", "Master": "masters",
+    "judge_split": "judge", "judge_runs": "judge", "SplitVerdict": "judge", "MASTERS": "masters", "Master": "masters",
     "run_master": "masters", "Problem": "pair", "split_path": "locate", "run_engine": "engines",
 }
 

@@ -1,109 +1,97 @@
-"""What is wrong with a coupled result that no reference master reproduces.
+"""Findings a coupled result shows without a rerun: rows labelled early or late, start values.
 
-Two readings of the file, neither needing a rerun:
-
-- the time grid: a macro step that drifts (the communication points leave t_0 + k H), and rows
-  labelled one step early (Body's own ``theta_exact`` is the exact pendulum one step later
-  than the row's time);
-- the input Body got over each step: with the input held, omega_(k+1) - omega_k = a_k h_k, and
-  a_k is Gravity's -(g/L) sin(theta) at some communication point: the same one (Gauss-Seidel,
-  lag 0), the one before (Jacobi, lag 1), two before (an input held one step too long, lag
-  2), or a constant (a connection dropped), or 0 (an input never set).
+- Rows labelled one step early (late): Body's ``theta_exact``, when written, is the exact
+  pendulum at t + H (t - H) instead of t; without it, the first row at t = 0 holds the state one
+  step after the start (early), or the first row is at t = H and holds the start (late).
+- Start values: the row at the start time is not the SSP's start state (or the one ``--start``
+  gives) beyond the print's resolution. That is reported, never taken as a new start.
 """
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
 
 from pendulum_fmu.split.pair import Problem
 
-DRIFT_TOLERANCE = 1e-6
-"""Largest |t_k - (t_0 + k H)| / H before the grid counts as drifting (an engine that adds H
-in binary drifts by about 1e-11 H in 1,000 steps)."""
-LAG_TOLERANCE = 1e-7
-"""Relative agreement of a step's input with a lag's value for the step to count as that lag."""
+EXACT_AGREEMENT = 1e-9
+"""Body's theta_exact agrees with pendulum_fmu.exact to this (rad), plus the print."""
 
 
 @dataclass(frozen=True)
 class Finding:
-    """One defect: a short kind (``drift``, ``labels``, ``held-too-long``, ``dropped``,
-    ``out-of-order``, ``start-dropped``) and the line that explains it."""
+    """One defect: a short kind and the line that explains it, with its evidence.
+
+    Kinds: ``out-of-order``, ``doubled``, ``missing``, ``not-finite`` (rows), ``labels`` (rows
+    labelled early or late), ``start`` (start values), ``sign``, ``connection``, ``parameter``,
+    ``stale``, ``dropped``, ``start-dropped`` (inputs)."""
 
     kind: str
     line: str
 
 
-def grid_findings(time: np.ndarray, H: float, resolution: float) -> list[Finding]:  # noqa: N803
-    """Drift of the communication points from t_0 + k H (H the median step)."""
-    k = np.arange(time.size)
-    off = time - (time[0] + k * H)
-    worst = int(np.argmax(np.abs(off)))
-    steps = np.diff(time)
-    if abs(off[worst]) <= DRIFT_TOLERANCE * H + 2 * resolution:
-        return []
-    return [Finding("drift", f"the macro step drifts: steps from {steps.min():.9g} to {steps.max():.9g} s, "
-                             f"t = {time[worst]:.9g} s is {off[worst]:+.3g} s off t0 + k H (H = {H:.6g} s)")]
-
-
-def label_finding(time: np.ndarray, theta_exact: np.ndarray, problem: Problem, H: float) -> Finding | None:  # noqa: N803
-    """Rows labelled one step early: Body's ``theta_exact`` is the exact pendulum at t + H."""
+def _exact(problem: Problem, time: np.ndarray) -> np.ndarray:
     from pendulum_fmu.fmu.library import exact
 
-    at_time = np.nanmax(np.abs(theta_exact - exact(problem.theta0, problem.omega0, problem.L, problem.g, time)[0]))
-    later = np.nanmax(np.abs(theta_exact - exact(problem.theta0, problem.omega0, problem.L, problem.g,
-                                                 time + H)[0]))
-    if at_time > 1e-8 and later <= 1e-9:
-        return Finding("labels", f"rows labelled one step early: the values at t + H are written at t "
-                                 f"(Body.theta_exact is the exact pendulum at t + H to {later:.1g}, off "
-                                 f"{at_time:.2g} at t)")
-    return None
+    return exact(problem.theta0, problem.omega0, problem.L, problem.g, time)[0]
 
 
-def step_lags(time: np.ndarray, theta: np.ndarray, omega: np.ndarray, problem: Problem) -> list[str]:
-    """For each step between rows: which input Body held (``"0"``, ``"1"``, ``"2"``: Gravity's
-    alpha from the row that many before; ``"zero"``; ``"?"``: none of those)."""
-    a = np.diff(omega) / np.diff(time)
-    f = problem.alpha(theta)
-    labels = []
-    for k, value in enumerate(a):
-        tol = LAG_TOLERANCE * max(1.0, abs(value))
-        found = "?"
-        for lag in (0, 1, 2):
-            if k - lag >= 0 and abs(value - f[k - lag]) <= tol:
-                found = str(lag)
-                break
-        if found == "?" and abs(value) <= tol:
-            found = "zero"
-        labels.append(found)
-    return labels
+def label_shift(time: np.ndarray, values: dict[str, np.ndarray], resolution: dict[str, np.ndarray],
+                problem: Problem, H: float) -> int:  # noqa: N803
+    """+1 when the rows are labelled one step early (the values at t + H are written at t), -1
+    late, 0 neither (see the module's docstring)."""
+    if "theta_exact" in values:
+        column = values["theta_exact"]
+        allowed = EXACT_AGREEMENT + 2 * resolution["theta_exact"]
+        if np.all(np.abs(column - _exact(problem, time)) <= allowed + np.abs(column) * 1e-12):
+            return 0
+        for shift in (1, -1):
+            if np.all(np.abs(column - _exact(problem, time + shift * H)) <= allowed + np.abs(column) * 1e-12):
+                return shift
+        return 0
+    if "omega" not in values or time.size < 3:
+        return 0
+    theta, omega = values["theta"][0], values["omega"][0]
+    start = abs(theta - problem.theta0) + abs(omega - problem.omega0) * H
+    slack = resolution["theta"][0] + resolution["omega"][0] * H + 1e-15
+    if abs(time[0]) <= resolution["time"][0] + 1e-15 and start > slack:
+        one = _exact(problem, np.array([H]))[0]
+        from pendulum_fmu.fmu.library import exact
+
+        one_omega = exact(problem.theta0, problem.omega0, problem.L, problem.g, np.array([H]))[1][0]
+        later = abs(theta - one) + abs(omega - one_omega) * H
+        if later < 0.1 * start:
+            return 1
+    if abs(time[0] - H) <= 1e-9 * H + resolution["time"][0] and start <= slack:
+        return -1
+    return 0
 
 
-def input_findings(time: np.ndarray, theta: np.ndarray, omega: np.ndarray, problem: Problem) -> list[Finding]:
-    """The defects the inputs Body held show (see the module's docstring); [] when none."""
-    a = np.diff(omega) / np.diff(time)
-    if a.size >= 3 and np.all(np.abs(a - a[0]) <= LAG_TOLERANCE * max(1.0, abs(a[0]))):
-        return [Finding("dropped", f"a connection dropped: Body's input alpha stayed {a[0]:.6g} rad/s2 over "
-                                   f"all {a.size} steps (Gravity's alpha never reached Body, or Body's theta "
-                                   "never Gravity)")]
-    labels = step_lags(time, theta, omega, problem)
-    total = len(labels)
-    leading = next((i for i, name in enumerate(labels) if name != "zero"), total)
-    # the first two steps have no lag 2 (and the first no lag 1): count from the third
-    counts = {name: labels[max(2, leading):].count(name) for name in ("0", "1", "2", "zero", "?")}
-    if counts["?"] > total // 10:
-        return []
-    if counts["2"] > 0 and counts["2"] >= total - max(2, leading) - counts["?"]:
-        return [Finding("held-too-long", f"an input held one step too long: at {counts['2']} of {total} steps "
-                                         "Body got Gravity's alpha from theta two communication points back "
-                                         "(Jacobi's is one back, Gauss-Seidel's the same point)")]
-    if counts["0"] > 0 and counts["1"] > 0:
-        return [Finding("out-of-order", f"the FMUs stepped out of order: Body got Gravity's alpha of the same "
-                                        f"communication point at {counts['0']} steps and of the one before at "
-                                        f"{counts['1']} (Gravity stepped before Body at some steps, after at others)")]
-    if 0 < leading < total:
-        lag = "Gauss-Seidel's (same point)" if counts["0"] else "Jacobi's (one point back)"
-        return [Finding("start-dropped", f"an input's start value dropped: Body's alpha was 0 over the first "
-                                         f"{leading} step(s) instead of Gravity's, then {lag}")]
-    return []
+def label_finding(shift: int, H: float, has_exact: bool) -> Finding:  # noqa: N803
+    """The finding for rows labelled early (``shift`` 1) or late (-1)."""
+    word, sign = ("early", "+") if shift > 0 else ("late", "-")
+    evidence = (f"Body.theta_exact is the exact pendulum at t {sign} H" if has_exact else
+                ("the row at t = 0 holds the state one step after the start" if shift > 0 else
+                 f"the first row, at t = {H:.6g} s, holds the start state"))
+    return Finding("labels", f"rows labelled one step {word}: the values at t {sign} H are written at t ({evidence})")
+
+
+def start_finding(time: np.ndarray, values: dict[str, np.ndarray], resolution: dict[str, np.ndarray],
+                  problem: Problem, stated: bool) -> Finding | None:
+    """The row at t = 0 is not the start state (the SSP's, or ``--start``'s when ``stated``)."""
+    if abs(time[0]) > resolution["time"][0] + 1e-12:
+        return None
+    off = []
+    for name, value in (("theta", problem.theta0), ("omega", problem.omega0)):
+        if name in values and abs(values[name][0] - value) > 2 * resolution[name][0] + 1e-12 * max(1.0, abs(value)):
+            shown = f"{values[name][0]:.10g}"
+            if name == "theta":
+                shown += f" ({math.degrees(values[name][0]):.6g} deg)"
+            off.append(f"{name}(0) = {shown} where {'--start gives' if stated else 'the SSP starts at'} {value:.10g}")
+    if not off:
+        return None
+    whose = "the stated" if stated else "the SSP's"
+    return Finding("start", f"start values other than {whose}: {'; '.join(off)} (the error is against {whose} "
+                            "start; give --start when the run changed it)")

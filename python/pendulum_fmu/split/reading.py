@@ -14,7 +14,7 @@ from typing import Any
 
 from pendulum_fmu.judge.reading import ReadError, Result, read_result
 
-_OMEGA = re.compile(r"^\s*[\"']?(?P<instance>[^\"']*?)(?:::|\.|/)omega\b")
+_OMEGA = re.compile(r"^\s*[\"']?(?:(?P<instance>[^\"']*?)(?:::|\.|/))?omega\b")
 
 
 def _instance_with_omega(path: Path) -> str | None:
@@ -27,7 +27,7 @@ def _instance_with_omega(path: Path) -> str | None:
     for cell in re.split(r"[,;\t]", header):
         match = _OMEGA.match(cell)
         if match:
-            return match.group("instance").strip("{}")
+            return (match.group("instance") or "").strip("{}")
     return None
 
 

@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 import sys
 
-from pendulum_fmu.cli.arguments import output_file, plain_text, positive
+from pendulum_fmu.cli.arguments import integer, output_file, plain_text, positive
 from pendulum_fmu.cli.extras import module_docstring
 
 NAME = "masters"
@@ -15,16 +15,20 @@ EPILOG = """\
 examples:
   pendulum-fmu bench masters --plot masters.png
   pendulum-fmu bench masters --steps 0.01 0.005 --stop 2 --no-engines
+  pendulum-fmu bench masters --steps 0.001 --no-engines --judge-rows 100000
 """
 
 
 def configure(parser: argparse.ArgumentParser) -> None:
     """Add the options of ``bench masters``."""
-    parser.add_argument("--steps", type=positive("s", 1.0), nargs="+", default=[1e-1, 1e-2, 1e-3, 1e-4],
-                        metavar="H", help="macro steps in s, each in (0, 1] (default: 0.1 0.01 0.001 0.0001)")
+    parser.add_argument("--steps", type=positive("s", 1.0), nargs="+", default=[1e-3, 5e-4, 2.5e-4, 1.25e-4],
+                        metavar="H", help="macro steps in s, each in (0, 1] (default: 0.001 0.0005 0.00025 0.000125, "
+                                          "where every reference master's error means something)")
     parser.add_argument("--stop", type=positive("s", 1000.0), default=10.0, metavar="T",
                         help="end time in s (default 10)")
     parser.add_argument("--no-engines", action="store_true", help="the reference masters only")
+    parser.add_argument("--judge-rows", type=integer(3, 2_000_001), metavar="N",
+                        help="also time one judge call (--system split) on a file of N macro steps (N + 1 rows)")
     parser.add_argument("--plot", type=output_file(".png"), metavar="FILE.png",
                         help="also draw the work-precision figure (error against wall time)")
 
@@ -45,4 +49,8 @@ def run(args: argparse.Namespace) -> int:
     if args.plot:
         bench.figure(points, args.plot)
         print(f"figure: {args.plot}")
+    if args.judge_rows:
+        seconds, cpu, verdict = bench.judge_seconds(args.judge_rows)
+        print(f"judge --system split on {args.judge_rows + 1} rows: {seconds:.2f} s wall, {cpu:.2f} s CPU "
+              f"(target 5 s): {verdict}")
     return 0
