@@ -186,7 +186,7 @@ def write(path: Path, times: list[float], theta: list[float], omega: list[float]
 
 HONEST = {  # master -> the reference master it reproduces
     "gs-zoh": "gauss-seidel-zoh", "jacobi-zoh": "jacobi-zoh", "gs-interp1": None, "gs-taylor2": None,
-    "jacobi-past2": None, "gs-ramp": None, "strong": None,
+    "jacobi-past2": None, "gs-ramp": None, "strong": "iterated-interpolation",
 }
 DEFECTS = ("sign", "connection", "parameter", "stale", "out-of-order", "labels", "missing", "doubled", "start",
            "dropped")
