@@ -98,34 +98,4 @@ Status split_do_step(SplitInstance *inst, const char *function, double point, do
  * partial derivatives), after the calling-sequence check. */
 Status split_not_provided(SplitInstance *inst, const char *function, const char *reason);
 
-
-/* The six FMU-state functions of a layer (FMI 2.0 or 3.0 names and types, as
- * fmu_state_calls.h's DEFINE_FMU_STATE_CALLS takes them), each refused with `reason`. */
-#define DEFINE_NO_FMU_STATE_CALLS(StatusT, InstanceT, StateT, ByteT, Get, Set, Free, Size, Serialize, Deserialize, \
-                                  reason)                                                                         \
-    StatusT Get(InstanceT instance, StateT *state) {                                                              \
-        (void)state;                                                                                              \
-        return (StatusT)split_not_provided(instance, #Get, reason);                                               \
-    }                                                                                                             \
-    StatusT Set(InstanceT instance, StateT state) {                                                               \
-        (void)state;                                                                                              \
-        return (StatusT)split_not_provided(instance, #Set, reason);                                               \
-    }                                                                                                             \
-    StatusT Free(InstanceT instance, StateT *state) {                                                             \
-        (void)state;                                                                                              \
-        return (StatusT)split_not_provided(instance, #Free, reason);                                              \
-    }                                                                                                             \
-    StatusT Size(InstanceT instance, StateT state, size_t *size) {                                                \
-        (void)state, (void)size;                                                                                  \
-        return (StatusT)split_not_provided(instance, #Size, reason);                                              \
-    }                                                                                                             \
-    StatusT Serialize(InstanceT instance, StateT state, ByteT bytes[], size_t size) {                             \
-        (void)state, (void)bytes, (void)size;                                                                     \
-        return (StatusT)split_not_provided(instance, #Serialize, reason);                                         \
-    }                                                                                                             \
-    StatusT Deserialize(InstanceT instance, const ByteT bytes[], size_t size, StateT *state) {                    \
-        (void)bytes, (void)size, (void)state;                                                                     \
-        return (StatusT)split_not_provided(instance, #Deserialize, reason);                                       \
-    }
-
 #endif
