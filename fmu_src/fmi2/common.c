@@ -82,7 +82,7 @@ fmi2Status fmi2SetupExperiment(fmi2Component c, fmi2Boolean toleranceDefined, fm
 /* Integer and Enumeration variables share fmi2Integer (FMI 2.0 2.1.7). */
 fmi2Status fmi2GetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2Integer value[]) {
     size_t i;
-    if (!instance_arrays_allowed(c, "fmi2GetInteger", GET_MODES, vr, nvr, value)) {
+    if (!instance_arrays_allowed(c, "fmi2GetInteger", CALL_GET_VARIABLES, vr, nvr, value)) {
         return fmi2Error;
     }
     for (i = 0; i < nvr; i++) {
@@ -97,7 +97,7 @@ fmi2Status fmi2GetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t
 
 fmi2Status fmi2SetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const fmi2Integer value[]) {
     size_t i;
-    if (!instance_arrays_allowed(c, "fmi2SetInteger", SET_MODES, vr, nvr, value)) {
+    if (!instance_arrays_allowed(c, "fmi2SetInteger", CALL_SET_VARIABLES, vr, nvr, value)) {
         return fmi2Error;
     }
     for (i = 0; i < nvr; i++) {
@@ -110,19 +110,19 @@ fmi2Status fmi2SetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t
 
 /* The model has no Boolean or String variables: any value reference is unknown. */
 fmi2Status fmi2GetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2Boolean value[]) {
-    return (fmi2Status)instance_no_variables(c, "fmi2GetBoolean", GET_MODES, vr, nvr, value);
+    return (fmi2Status)instance_no_variables(c, "fmi2GetBoolean", CALL_GET_VARIABLES, vr, nvr, value);
 }
 
 fmi2Status fmi2SetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const fmi2Boolean value[]) {
-    return (fmi2Status)instance_no_variables(c, "fmi2SetBoolean", SET_MODES, vr, nvr, value);
+    return (fmi2Status)instance_no_variables(c, "fmi2SetBoolean", CALL_SET_VARIABLES, vr, nvr, value);
 }
 
 fmi2Status fmi2GetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2String value[]) {
-    return (fmi2Status)instance_no_variables(c, "fmi2GetString", GET_MODES, vr, nvr, value);
+    return (fmi2Status)instance_no_variables(c, "fmi2GetString", CALL_GET_VARIABLES, vr, nvr, value);
 }
 
 fmi2Status fmi2SetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const fmi2String value[]) {
-    return (fmi2Status)instance_no_variables(c, "fmi2SetString", SET_MODES, vr, nvr, value);
+    return (fmi2Status)instance_no_variables(c, "fmi2SetString", CALL_SET_VARIABLES, vr, nvr, value);
 }
 
 fmi2Status fmi2GetFMUstate(fmi2Component c, fmi2FMUstate *state) {

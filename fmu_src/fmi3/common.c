@@ -95,11 +95,11 @@ static int of_type(fmi3Instance instance, const char *function, fmi3ValueReferen
 }
 
 /* The shared checks of the integer calls: counts, arrays, and each value reference's type. */
-static int integers_allowed(fmi3Instance instance, const char *function, unsigned modes, const fmi3ValueReference vr[],
+static int integers_allowed(fmi3Instance instance, const char *function, FmiCall call, const fmi3ValueReference vr[],
                             size_t nvr, const void *values, size_t n_values, int enumeration) {
     size_t i;
     if (!fmi3_scalar_counts(instance, function, nvr, n_values) ||
-        !instance_arrays_allowed(instance, function, modes, vr, nvr, values)) {
+        !instance_arrays_allowed(instance, function, call, vr, nvr, values)) {
         return 0;
     }
     for (i = 0; i < nvr; i++) {
@@ -115,7 +115,7 @@ static fmi3Status get_integers(fmi3Instance instance, const char *function, cons
                                void *values, size_t n_values, int enumeration) {
     size_t i;
     long got = 0;
-    if (!integers_allowed(instance, function, GET_MODES, vr, nvr, values, n_values, enumeration)) {
+    if (!integers_allowed(instance, function, CALL_GET_VARIABLES, vr, nvr, values, n_values, enumeration)) {
         return fmi3Error;
     }
     for (i = 0; i < nvr; i++) {
@@ -134,7 +134,7 @@ static fmi3Status get_integers(fmi3Instance instance, const char *function, cons
 static fmi3Status set_integers(fmi3Instance instance, const char *function, const fmi3ValueReference vr[], size_t nvr,
                                const void *values, size_t n_values, int enumeration) {
     size_t i;
-    if (!integers_allowed(instance, function, SET_MODES, vr, nvr, values, n_values, enumeration)) {
+    if (!integers_allowed(instance, function, CALL_SET_VARIABLES, vr, nvr, values, n_values, enumeration)) {
         return fmi3Error;
     }
     for (i = 0; i < nvr; i++) {

@@ -18,7 +18,7 @@ fmi3Instance fmi3InstantiateCoSimulation(fmi3String instanceName, fmi3String ins
 }
 
 fmi3Status fmi3EnterStepMode(fmi3Instance instance) {
-    if (!instance_allowed_for(instance, "fmi3EnterStepMode", INTERFACE_CO_SIMULATION, 0)) {
+    if (!instance_call_allowed(instance, "fmi3EnterStepMode", CALL_ENTER_STEP_MODE)) {
         return fmi3Error;
     }
     return fmi3OK;

@@ -116,27 +116,27 @@ fmi2Status fmi2DeSerializeFMUstate(fmi2Component c, const fmi2Byte serializedSta
 
 /* No Integer, Boolean or String variables: any value reference is unknown. */
 fmi2Status fmi2GetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2Integer value[]) {
-    return (fmi2Status)instance_no_variables(c, "fmi2GetInteger", GET_MODES, vr, nvr, value);
+    return (fmi2Status)instance_no_variables(c, "fmi2GetInteger", CALL_GET_VARIABLES, vr, nvr, value);
 }
 
 fmi2Status fmi2SetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const fmi2Integer value[]) {
-    return (fmi2Status)instance_no_variables(c, "fmi2SetInteger", SET_MODES, vr, nvr, value);
+    return (fmi2Status)instance_no_variables(c, "fmi2SetInteger", CALL_SET_VARIABLES, vr, nvr, value);
 }
 
 fmi2Status fmi2GetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2Boolean value[]) {
-    return (fmi2Status)instance_no_variables(c, "fmi2GetBoolean", GET_MODES, vr, nvr, value);
+    return (fmi2Status)instance_no_variables(c, "fmi2GetBoolean", CALL_GET_VARIABLES, vr, nvr, value);
 }
 
 fmi2Status fmi2SetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const fmi2Boolean value[]) {
-    return (fmi2Status)instance_no_variables(c, "fmi2SetBoolean", SET_MODES, vr, nvr, value);
+    return (fmi2Status)instance_no_variables(c, "fmi2SetBoolean", CALL_SET_VARIABLES, vr, nvr, value);
 }
 
 fmi2Status fmi2GetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2String value[]) {
-    return (fmi2Status)instance_no_variables(c, "fmi2GetString", GET_MODES, vr, nvr, value);
+    return (fmi2Status)instance_no_variables(c, "fmi2GetString", CALL_GET_VARIABLES, vr, nvr, value);
 }
 
 fmi2Status fmi2SetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const fmi2String value[]) {
-    return (fmi2Status)instance_no_variables(c, "fmi2SetString", SET_MODES, vr, nvr, value);
+    return (fmi2Status)instance_no_variables(c, "fmi2SetString", CALL_SET_VARIABLES, vr, nvr, value);
 }
 
 fmi2Status fmi2GetDirectionalDerivative(fmi2Component c, const fmi2ValueReference vUnknown_ref[], size_t nUnknown,
@@ -169,11 +169,9 @@ fmi2Status fmi2CancelStep(fmi2Component c) {
     return (fmi2Status)split_not_provided(c, "fmi2CancelStep", "fmi2DoStep never returns fmi2Pending: nothing to cancel");
 }
 
-#define STATUS_MODES (MODE_STEP_COMPLETE | MODE_TERMINATED | MODE_ERROR)
-
 /* 4.2.3: a status kind the FMU does not provide is answered with fmi2Discard. */
 static fmi2Status status_call(fmi2Component c, const char *function, const void *value) {
-    if (!instance_allowed(c, function, STATUS_MODES)) {
+    if (!instance_call_allowed(c, function, CALL_GET_STATUS)) {
         return fmi2Error;
     }
     if (value == NULL) {

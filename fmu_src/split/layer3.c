@@ -115,25 +115,25 @@ fmi3Status fmi3EnterInitializationMode(fmi3Instance instance, fmi3Boolean tolera
 fmi3Status fmi3GetInt32(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr, fmi3Int32 values[],
                         size_t nValues) {
     (void)nValues;
-    return (fmi3Status)instance_no_variables(instance, "fmi3GetInt32", GET_MODES, vr, nvr, values);
+    return (fmi3Status)instance_no_variables(instance, "fmi3GetInt32", CALL_GET_VARIABLES, vr, nvr, values);
 }
 
 fmi3Status fmi3SetInt32(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr, const fmi3Int32 values[],
                         size_t nValues) {
     (void)nValues;
-    return (fmi3Status)instance_no_variables(instance, "fmi3SetInt32", SET_MODES, vr, nvr, values);
+    return (fmi3Status)instance_no_variables(instance, "fmi3SetInt32", CALL_SET_VARIABLES, vr, nvr, values);
 }
 
 fmi3Status fmi3GetInt64(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr, fmi3Int64 values[],
                         size_t nValues) {
     (void)nValues;
-    return (fmi3Status)instance_no_variables(instance, "fmi3GetInt64", GET_MODES, vr, nvr, values);
+    return (fmi3Status)instance_no_variables(instance, "fmi3GetInt64", CALL_GET_VARIABLES, vr, nvr, values);
 }
 
 fmi3Status fmi3SetInt64(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr, const fmi3Int64 values[],
                         size_t nValues) {
     (void)nValues;
-    return (fmi3Status)instance_no_variables(instance, "fmi3SetInt64", SET_MODES, vr, nvr, values);
+    return (fmi3Status)instance_no_variables(instance, "fmi3SetInt64", CALL_SET_VARIABLES, vr, nvr, values);
 }
 
 /* canGetAndSetFMUState is false: each FMU-state function is refused with this reason. */
