@@ -39,15 +39,17 @@ typedef struct {
                             least INTEGRATOR_MIN_TOL */
     int always_projects; /* 1: every accepted point is projected onto the initial energy; 0: only near
                             the separatrix, closeness < INTEGRATOR_PROJECT_CLOSENESS */
-    double tol_closeness_factor; /* > 0: the local tolerance is tol closeness factor; 0: tol itself */
+    double tol_closeness_factor; /* > 0: the local tolerance is tol * closeness * this factor (closer
+                                    to the separatrix, tighter); 0: tol itself */
     double reach;        /* smallest tol |1 - m| / max(1, m) at which it holds 100 tol over ten
                             periods (integrator.h, measured in tests/c/test_certificate.c) */
 } SolverMethod;
 
 /* The solvers, indexed by SolverKind (the value of the item in the model descriptions).
  *
- * Adding a solver: a SOLVER_* value in integrator.h and a row here. Its three functions live in
- * its own file (declared in methods.h) and keep this contract:
+ * Adding a solver: a SOLVER_* value in integrator.h and a row here (then its item in both model
+ * descriptions and the rest of CONTRIBUTING.md's "Adding a solver"). Its three functions live
+ * in its own file (declared in methods.h) and keep this contract:
  *   start(it):        called once by integrator_init after the common fields are set (it->f
  *                     holds y' at t0, already counted in the statistics; it->rtol, atol, hmax
  *                     and project_energy follow from this row); sets it->h > 0, finite.
