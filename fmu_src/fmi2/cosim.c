@@ -13,7 +13,7 @@ fmi2Status fmi2SetRealInputDerivatives(fmi2Component c, const fmi2ValueReference
                                        const fmi2Integer order[], const fmi2Real value[]) {
     Instance *inst = c;
     (void)vr, (void)nvr, (void)order, (void)value;
-    if (!instance_allowed_for(inst, "fmi2SetRealInputDerivatives", INTERFACE_CO_SIMULATION, MODE_INITIALIZATION | MODE_STEP_COMPLETE)) {
+    if (!instance_call_allowed(inst, "fmi2SetRealInputDerivatives", CALL_SET_INPUT_DERIVATIVES)) {
         return fmi2Error;
     }
     return (fmi2Status)instance_fail(inst, "fmi2SetRealInputDerivatives", "the model has no inputs");
@@ -26,13 +26,11 @@ fmi2Status fmi2GetRealOutputDerivatives(fmi2Component c, const fmi2ValueReferenc
 
 fmi2Status fmi2CancelStep(fmi2Component c) {
     Instance *inst = c;
-    if (!instance_allowed_for(inst, "fmi2CancelStep", INTERFACE_CO_SIMULATION, MODE_STEP_COMPLETE)) {
+    if (!instance_call_allowed(inst, "fmi2CancelStep", CALL_CANCEL_STEP)) {
         return fmi2Error;
     }
     return (fmi2Status)instance_fail(inst, "fmi2CancelStep", "fmi2DoStep never returns fmi2Pending: nothing to cancel");
 }
-
-#define STATUS_MODES (MODE_STEP_COMPLETE | MODE_TERMINATED | MODE_ERROR)
 
 /* 4.2.3: a status that the FMU does not provide is answered with fmi2Discard. */
 static fmi2Status status_not_provided(Instance *inst, const char *function, fmi2StatusKind kind) {
@@ -42,7 +40,7 @@ static fmi2Status status_not_provided(Instance *inst, const char *function, fmi2
 
 fmi2Status fmi2GetStatus(fmi2Component c, const fmi2StatusKind s, fmi2Status *value) {
     Instance *inst = c;
-    if (!instance_allowed_for(inst, "fmi2GetStatus", INTERFACE_CO_SIMULATION, STATUS_MODES)) {
+    if (!instance_call_allowed(inst, "fmi2GetStatus", CALL_GET_STATUS)) {
         return fmi2Error;
     }
     if (value == NULL) {
@@ -57,7 +55,7 @@ fmi2Status fmi2GetStatus(fmi2Component c, const fmi2StatusKind s, fmi2Status *va
 
 fmi2Status fmi2GetRealStatus(fmi2Component c, const fmi2StatusKind s, fmi2Real *value) {
     Instance *inst = c;
-    if (!instance_allowed_for(inst, "fmi2GetRealStatus", INTERFACE_CO_SIMULATION, STATUS_MODES)) {
+    if (!instance_call_allowed(inst, "fmi2GetRealStatus", CALL_GET_STATUS)) {
         return fmi2Error;
     }
     if (value == NULL) {
@@ -73,7 +71,7 @@ fmi2Status fmi2GetRealStatus(fmi2Component c, const fmi2StatusKind s, fmi2Real *
 fmi2Status fmi2GetIntegerStatus(fmi2Component c, const fmi2StatusKind s, fmi2Integer *value) {
     Instance *inst = c;
     (void)value;
-    if (!instance_allowed_for(inst, "fmi2GetIntegerStatus", INTERFACE_CO_SIMULATION, STATUS_MODES)) {
+    if (!instance_call_allowed(inst, "fmi2GetIntegerStatus", CALL_GET_STATUS)) {
         return fmi2Error;
     }
     return status_not_provided(inst, "fmi2GetIntegerStatus", s);
@@ -81,7 +79,7 @@ fmi2Status fmi2GetIntegerStatus(fmi2Component c, const fmi2StatusKind s, fmi2Int
 
 fmi2Status fmi2GetBooleanStatus(fmi2Component c, const fmi2StatusKind s, fmi2Boolean *value) {
     Instance *inst = c;
-    if (!instance_allowed_for(inst, "fmi2GetBooleanStatus", INTERFACE_CO_SIMULATION, STATUS_MODES)) {
+    if (!instance_call_allowed(inst, "fmi2GetBooleanStatus", CALL_GET_STATUS)) {
         return fmi2Error;
     }
     if (value == NULL) {
@@ -97,7 +95,7 @@ fmi2Status fmi2GetBooleanStatus(fmi2Component c, const fmi2StatusKind s, fmi2Boo
 fmi2Status fmi2GetStringStatus(fmi2Component c, const fmi2StatusKind s, fmi2String *value) {
     Instance *inst = c;
     (void)value;
-    if (!instance_allowed_for(inst, "fmi2GetStringStatus", INTERFACE_CO_SIMULATION, STATUS_MODES)) {
+    if (!instance_call_allowed(inst, "fmi2GetStringStatus", CALL_GET_STATUS)) {
         return fmi2Error;
     }
     return status_not_provided(inst, "fmi2GetStringStatus", s);

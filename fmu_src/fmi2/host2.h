@@ -1,8 +1,9 @@
 /* host2.h: what every FMI 2.0 layer of the project shares, Pendulum's (fmi2/common.c) and the
  * split FMUs' (split/layer2.c): the host's callbacks behind InstanceHost, fmi2Instantiate's
- * checks and allocation, and the FMI 2.0 functions that only pass a call on to the model's
- * core. A layer's instance starts with an Instance and holds a copy of the host's callbacks,
- * which InstanceHost.context points at. Included by one source of each FMU. */
+ * checks and allocation, and fmi2FreeInstance's work; each layer writes out its FMI functions
+ * itself, each defined by its name. A layer's instance starts with an Instance and holds a
+ * copy of the host's callbacks, which InstanceHost.context points at. Included by one source
+ * of each FMU. */
 #ifndef PENDULUM_FMI2_HOST2_H
 #define PENDULUM_FMI2_HOST2_H
 
@@ -71,18 +72,6 @@ static inline fmi2Component host2_instantiate(const char *refusal, const char *m
     return inst;
 }
 
-/* fmi2Instantiate of a layer whose instance type InstanceT starts with an Instance and holds
- * the host's callbacks in its member `callbacks`; the layer's refusal (name, GUID, fmuType:
- * NULL, or why not) and setup (as host2_instantiate takes it). */
-#define DEFINE_FMI2_INSTANTIATE(InstanceT, model_name, refusal, setup)                                           \
-    fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2String fmuGUID,                 \
-                                  fmi2String fmuResourceLocation, const fmi2CallbackFunctions *functions,        \
-                                  fmi2Boolean visible, fmi2Boolean loggingOn) {                                  \
-        (void)fmuResourceLocation, (void)visible; /* the models need no resources and show nothing */           \
-        return host2_instantiate(refusal(instanceName, fmuGUID, fmuType), model_name, instanceName, fmuType,     \
-                                 functions, loggingOn, sizeof(InstanceT), offsetof(InstanceT, callbacks), setup); \
-    }
-
 /* fmi2FreeInstance: the core's release, then the instance itself, with the host's freeMemory
  * read before its copy inside the instance is freed. */
 static inline void host2_free(Instance *inst) {
@@ -92,42 +81,5 @@ static inline void host2_free(Instance *inst) {
         release(inst);
     }
 }
-
-/* The FMI 2.0 functions that only pass a call on: to the shared instance (instance.h), or to
- * the model's own exit_initialization, reset, get_reals and set_reals (Pendulum's are the
- * instance's, the split FMUs' those of split.h). */
-#define DEFINE_FMI2_PASSING_CALLS(exit_initialization, reset, get_reals, set_reals)                          \
-    const char *fmi2GetTypesPlatform(void) { return fmi2TypesPlatform; }                                     \
-    const char *fmi2GetVersion(void) { return fmi2Version; }                                                 \
-    void fmi2FreeInstance(fmi2Component c) { host2_free(c); }                                                \
-    fmi2Status fmi2SetDebugLogging(fmi2Component c, fmi2Boolean loggingOn, size_t nCategories,               \
-                                   const fmi2String categories[]) {                                          \
-        return (fmi2Status)instance_set_debug_logging(c, "fmi2SetDebugLogging", loggingOn, nCategories,      \
-                                                      categories);                                           \
-    }                                                                                                        \
-    fmi2Status fmi2EnterInitializationMode(fmi2Component c) {                                                \
-        return (fmi2Status)instance_enter_initialization(c, "fmi2EnterInitializationMode");                  \
-    }                                                                                                        \
-    fmi2Status fmi2ExitInitializationMode(fmi2Component c) {                                                 \
-        return (fmi2Status)exit_initialization(c, "fmi2ExitInitializationMode");                             \
-    }                                                                                                        \
-    fmi2Status fmi2Terminate(fmi2Component c) { return (fmi2Status)instance_terminate(c, "fmi2Terminate"); } \
-    fmi2Status fmi2Reset(fmi2Component c) { return (fmi2Status)reset(c, "fmi2Reset"); }                      \
-    fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2Real value[]) {   \
-        return (fmi2Status)get_reals(c, "fmi2GetReal", vr, nvr, value);                                      \
-    }                                                                                                        \
-    fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,                       \
-                           const fmi2Real value[]) {                                                         \
-        return (fmi2Status)set_reals(c, "fmi2SetReal", vr, nvr, value);                                      \
-    }
-
-/* Get and Set of a type the model has no variable of: any value reference is unknown. */
-#define DEFINE_FMI2_NO_VARIABLES_OF_TYPE(Name, Type)                                                           \
-    fmi2Status fmi2Get##Name(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, Type value[]) {       \
-        return (fmi2Status)instance_no_variables(c, "fmi2Get" #Name, GET_MODES, vr, nvr, value);              \
-    }                                                                                                          \
-    fmi2Status fmi2Set##Name(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const Type value[]) { \
-        return (fmi2Status)instance_no_variables(c, "fmi2Set" #Name, SET_MODES, vr, nvr, value);              \
-    }
 
 #endif

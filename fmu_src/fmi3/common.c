@@ -1,12 +1,12 @@
 /* fmi3/common.c: the FMI 3.0 functions of every interface (FMI 3.0 section 2.3), translated
  * onto the shared instance (instance.h): instantiation, life cycle, variables of each type,
- * FMU states, directional and adjoint derivatives, and the refusals of what this model
- * does not have (clocks, Configuration Mode, variable dependencies at run time).
+ * FMU states, directional and adjoint derivatives. The refusals of what this model does not
+ * have (variables of the other types, clocks, Configuration Mode, variable dependencies at
+ * run time) are in fmi3/absent.c.
  * The FMI 3.0 declarations are the project's own, written from the standard (fmi3_api.h). */
 #include <stddef.h>
 
 #include "layer.h"
-#include "fmu_state_calls.h"
 #include "pendulum_vrs.h"
 
 static int setup(Instance *inst, const char *name, InterfaceType type, int logging_on) {
@@ -22,8 +22,58 @@ fmi3Instance fmi3_instantiate(const char *function, fmi3String instanceName, fmi
                              logMessage, NULL);
 }
 
-DEFINE_FMI3_PASSING_CALLS(instance_exit_initialization, instance_reset, instance_get_reals, instance_set_reals,
-                          "the FMU has no Scheduled Execution interface")
+const char *fmi3GetVersion(void) {
+    return fmi3Version;
+}
+
+fmi3Instance fmi3InstantiateScheduledExecution(fmi3String instanceName, fmi3String instantiationToken,
+                                               fmi3String resourcePath, fmi3Boolean visible, fmi3Boolean loggingOn,
+                                               fmi3InstanceEnvironment instanceEnvironment,
+                                               fmi3LogMessageCallback logMessage, fmi3ClockUpdateCallback clockUpdate,
+                                               fmi3LockPreemptionCallback lockPreemption,
+                                               fmi3UnlockPreemptionCallback unlockPreemption) {
+    (void)instanceName, (void)instantiationToken, (void)resourcePath, (void)visible, (void)loggingOn;
+    (void)clockUpdate, (void)lockPreemption, (void)unlockPreemption;
+    fmi3_refuse(instanceEnvironment, logMessage, "fmi3InstantiateScheduledExecution", "the FMU has no Scheduled Execution interface");
+    return NULL;
+}
+
+void fmi3FreeInstance(fmi3Instance instance) {
+    fmi3_free_instance(instance);
+}
+
+fmi3Status fmi3SetDebugLogging(fmi3Instance instance, fmi3Boolean loggingOn, size_t nCategories,
+                               const fmi3String categories[]) {
+    return (fmi3Status)instance_set_debug_logging(instance, "fmi3SetDebugLogging", loggingOn, nCategories, categories);
+}
+
+fmi3Status fmi3ExitInitializationMode(fmi3Instance instance) {
+    return (fmi3Status)instance_exit_initialization(instance, "fmi3ExitInitializationMode");
+}
+
+fmi3Status fmi3Terminate(fmi3Instance instance) {
+    return (fmi3Status)instance_terminate(instance, "fmi3Terminate");
+}
+
+fmi3Status fmi3Reset(fmi3Instance instance) {
+    return (fmi3Status)instance_reset(instance, "fmi3Reset");
+}
+
+fmi3Status fmi3GetFloat64(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr, fmi3Float64 values[],
+                          size_t nValues) {
+    if (!fmi3_scalar_counts(instance, "fmi3GetFloat64", nvr, nValues)) {
+        return fmi3Error;
+    }
+    return (fmi3Status)instance_get_reals(instance, "fmi3GetFloat64", vr, nvr, values);
+}
+
+fmi3Status fmi3SetFloat64(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr, const fmi3Float64 values[],
+                          size_t nValues) {
+    if (!fmi3_scalar_counts(instance, "fmi3SetFloat64", nvr, nValues)) {
+        return fmi3Error;
+    }
+    return (fmi3Status)instance_set_reals(instance, "fmi3SetFloat64", vr, nvr, values);
+}
 
 /* FMI 3.0 folds 2.0's fmi2SetupExperiment into fmi3EnterInitializationMode: one call, one check. */
 fmi3Status fmi3EnterInitializationMode(fmi3Instance instance, fmi3Boolean toleranceDefined, fmi3Float64 tolerance,
@@ -45,11 +95,11 @@ static int of_type(fmi3Instance instance, const char *function, fmi3ValueReferen
 }
 
 /* The shared checks of the integer calls: counts, arrays, and each value reference's type. */
-static int integers_allowed(fmi3Instance instance, const char *function, unsigned modes, const fmi3ValueReference vr[],
+static int integers_allowed(fmi3Instance instance, const char *function, FmiCall call, const fmi3ValueReference vr[],
                             size_t nvr, const void *values, size_t n_values, int enumeration) {
     size_t i;
     if (!fmi3_scalar_counts(instance, function, nvr, n_values) ||
-        !instance_arrays_allowed(instance, function, modes, vr, nvr, values)) {
+        !instance_arrays_allowed(instance, function, call, vr, nvr, values)) {
         return 0;
     }
     for (i = 0; i < nvr; i++) {
@@ -65,7 +115,7 @@ static fmi3Status get_integers(fmi3Instance instance, const char *function, cons
                                void *values, size_t n_values, int enumeration) {
     size_t i;
     long got = 0;
-    if (!integers_allowed(instance, function, GET_MODES, vr, nvr, values, n_values, enumeration)) {
+    if (!integers_allowed(instance, function, CALL_GET_VARIABLES, vr, nvr, values, n_values, enumeration)) {
         return fmi3Error;
     }
     for (i = 0; i < nvr; i++) {
@@ -84,7 +134,7 @@ static fmi3Status get_integers(fmi3Instance instance, const char *function, cons
 static fmi3Status set_integers(fmi3Instance instance, const char *function, const fmi3ValueReference vr[], size_t nvr,
                                const void *values, size_t n_values, int enumeration) {
     size_t i;
-    if (!integers_allowed(instance, function, SET_MODES, vr, nvr, values, n_values, enumeration)) {
+    if (!integers_allowed(instance, function, CALL_SET_VARIABLES, vr, nvr, values, n_values, enumeration)) {
         return fmi3Error;
     }
     for (i = 0; i < nvr; i++) {
@@ -118,10 +168,32 @@ fmi3Status fmi3SetInt64(fmi3Instance instance, const fmi3ValueReference vr[], si
     return set_integers(instance, "fmi3SetInt64", vr, nvr, values, nValues, 1);
 }
 
-DEFINE_FMI3_ABSENT_TYPES
+fmi3Status fmi3GetFMUState(fmi3Instance instance, fmi3FMUState *state) {
+    return (fmi3Status)instance_get_state(instance, "fmi3GetFMUState", state);
+}
 
-DEFINE_FMU_STATE_CALLS(fmi3Status, fmi3Instance, fmi3FMUState, fmi3Byte, fmi3GetFMUState, fmi3SetFMUState,
-                       fmi3FreeFMUState, fmi3SerializedFMUStateSize, fmi3SerializeFMUState, fmi3DeserializeFMUState)
+fmi3Status fmi3SetFMUState(fmi3Instance instance, fmi3FMUState state) {
+    return (fmi3Status)instance_set_state(instance, "fmi3SetFMUState", state);
+}
+
+fmi3Status fmi3FreeFMUState(fmi3Instance instance, fmi3FMUState *state) {
+    return (fmi3Status)instance_free_state(instance, "fmi3FreeFMUState", state);
+}
+
+fmi3Status fmi3SerializedFMUStateSize(fmi3Instance instance, fmi3FMUState state, size_t *size) {
+    return (fmi3Status)instance_serialized_state_size(instance, "fmi3SerializedFMUStateSize", state, size);
+}
+
+fmi3Status fmi3SerializeFMUState(fmi3Instance instance, fmi3FMUState state, fmi3Byte serializedState[], size_t size) {
+    return (fmi3Status)instance_serialize_state(instance, "fmi3SerializeFMUState", state, (char *)serializedState,
+                                                size);
+}
+
+fmi3Status fmi3DeserializeFMUState(fmi3Instance instance, const fmi3Byte serializedState[], size_t size,
+                                   fmi3FMUState *state) {
+    return (fmi3Status)instance_deserialize_state(instance, "fmi3DeserializeFMUState", (const char *)serializedState,
+                                                  size, state);
+}
 
 /* Seed and sensitivity lengths: one entry per known (directional: per unknown) and back. */
 static fmi3Status partials(fmi3Instance instance, const char *function, int adjoint, const fmi3ValueReference u[],

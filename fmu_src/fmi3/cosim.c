@@ -3,10 +3,22 @@
  * Co-Simulation, no intermediate update and no early return (README, FMI 3.0). */
 #include "layer.h"
 
-DEFINE_FMI3_INSTANTIATE_CO_SIMULATION
+fmi3Instance fmi3InstantiateCoSimulation(fmi3String instanceName, fmi3String instantiationToken,
+                                         fmi3String resourcePath, fmi3Boolean visible, fmi3Boolean loggingOn,
+                                         fmi3Boolean eventModeUsed, fmi3Boolean earlyReturnAllowed,
+                                         const fmi3ValueReference requiredIntermediateVariables[],
+                                         size_t nRequiredIntermediateVariables,
+                                         fmi3InstanceEnvironment instanceEnvironment,
+                                         fmi3LogMessageCallback logMessage,
+                                         fmi3IntermediateUpdateCallback intermediateUpdate) {
+    (void)resourcePath, (void)visible, (void)earlyReturnAllowed, (void)requiredIntermediateVariables;
+    (void)intermediateUpdate; /* providesIntermediateUpdate="false": never called */
+    return fmi3_instantiate_co_simulation(instanceName, instantiationToken, loggingOn, eventModeUsed,
+                                          nRequiredIntermediateVariables, instanceEnvironment, logMessage);
+}
 
 fmi3Status fmi3EnterStepMode(fmi3Instance instance) {
-    if (!instance_allowed_for(instance, "fmi3EnterStepMode", INTERFACE_CO_SIMULATION, 0)) {
+    if (!instance_call_allowed(instance, "fmi3EnterStepMode", CALL_ENTER_STEP_MODE)) {
         return fmi3Error;
     }
     return fmi3OK;
@@ -23,4 +35,17 @@ fmi3Status fmi3GetOutputDerivatives(fmi3Instance instance, const fmi3ValueRefere
                                                    nValueReferences, orders, values);
 }
 
-DEFINE_FMI3_DO_STEP(instance_do_step)
+fmi3Status fmi3DoStep(fmi3Instance instance, fmi3Float64 currentCommunicationPoint,
+                      fmi3Float64 communicationStepSize, fmi3Boolean noSetFMUStatePriorToCurrentPoint,
+                      fmi3Boolean *eventHandlingNeeded, fmi3Boolean *terminateSimulation, fmi3Boolean *earlyReturn,
+                      fmi3Float64 *lastSuccessfulTime) {
+    Status status;
+    (void)noSetFMUStatePriorToCurrentPoint; /* the solver state is plain data: nothing to drop */
+    if (fmi3_step_outputs_missing(instance, eventHandlingNeeded, terminateSimulation, earlyReturn,
+                                  lastSuccessfulTime)) {
+        return fmi3Error;
+    }
+    status = instance_do_step(instance, "fmi3DoStep", currentCommunicationPoint, communicationStepSize);
+    fmi3_step_outputs(instance, status, eventHandlingNeeded, terminateSimulation, earlyReturn, lastSuccessfulTime);
+    return (fmi3Status)status;
+}

@@ -1,8 +1,8 @@
 /* fmi3/layer.h: the FMI 3.0 instance, the shared one (instance.h) plus the host's logger, the
  * instantiation shared by Model Exchange and Co-Simulation, and what every FMI 3.0 layer of
  * the project shares, Pendulum's (fmi3/) and the split FMUs' (split/layer3.c): the host's
- * logger behind InstanceHost, the instantiation's refusals and allocation, and the FMI 3.0
- * functions that only pass a call on to the model's core. */
+ * logger behind InstanceHost, the instantiation's refusals and allocation, and the work of the
+ * FMI 3.0 functions that every layer writes out itself, each defined by its name. */
 #ifndef PENDULUM_FMI3_LAYER_H
 #define PENDULUM_FMI3_LAYER_H
 
@@ -110,142 +110,55 @@ static inline int fmi3_scalar_counts(fmi3Instance instance, const char *function
     return 1;
 }
 
-/* fmi3DoStep over the model's do_step (instance_do_step, split_do_step): the output
- * arguments refused if one is NULL, before the step; set after a step that succeeded. No FMU
- * of the project has an event mode or returns early; noSetFMUStatePriorToCurrentPoint
- * changes nothing, as an FMU state (where there are any) is plain data. */
-#define DEFINE_FMI3_DO_STEP(do_step)                                                                                  \
-    fmi3Status fmi3DoStep(fmi3Instance instance, fmi3Float64 currentCommunicationPoint,                               \
-                          fmi3Float64 communicationStepSize, fmi3Boolean noSetFMUStatePriorToCurrentPoint,            \
-                          fmi3Boolean *eventHandlingNeeded, fmi3Boolean *terminateSimulation,                         \
-                          fmi3Boolean *earlyReturn, fmi3Float64 *lastSuccessfulTime) {                                \
-        Instance *inst = instance;                                                                                    \
-        Status status;                                                                                                \
-        (void)noSetFMUStatePriorToCurrentPoint;                                                                       \
-        if (inst != NULL && (eventHandlingNeeded == NULL || terminateSimulation == NULL || earlyReturn == NULL ||      \
-                             lastSuccessfulTime == NULL)) {                                                           \
-            return (fmi3Status)instance_fail(inst, "fmi3DoStep", "an output argument is NULL");                       \
-        }                                                                                                             \
-        status = do_step(instance, "fmi3DoStep", currentCommunicationPoint, communicationStepSize);                   \
-        if (inst != NULL && (status == STATUS_OK || status == STATUS_WARNING)) {                                      \
-            *eventHandlingNeeded = fmi3False;                                                                         \
-            *terminateSimulation = fmi3False;                                                                         \
-            *earlyReturn = fmi3False;                                                                                 \
-            *lastSuccessfulTime = inst->data.time;                                                                    \
-        }                                                                                                             \
-        return (fmi3Status)status;                                                                                    \
+/* fmi3DoStep's output arguments, before the model's step (instance_do_step, split_do_step): 1
+ * after refusing the call if one of them is NULL, 0 to go on. No FMU of the project has an event
+ * mode or returns early. */
+static inline int fmi3_step_outputs_missing(fmi3Instance instance, const fmi3Boolean *eventHandlingNeeded,
+                                            const fmi3Boolean *terminateSimulation, const fmi3Boolean *earlyReturn,
+                                            const fmi3Float64 *lastSuccessfulTime) {
+    if (instance != NULL && (eventHandlingNeeded == NULL || terminateSimulation == NULL || earlyReturn == NULL ||
+                             lastSuccessfulTime == NULL)) {
+        instance_fail(instance, "fmi3DoStep", "an output argument is NULL");
+        return 1;
     }
+    return 0;
+}
 
-/* fmi3InstantiateCoSimulation: no FMU of the project has an event mode or intermediate
- * variables; the rest is the layer's fmi3_instantiate. */
-#define DEFINE_FMI3_INSTANTIATE_CO_SIMULATION                                                                         \
-    fmi3Instance fmi3InstantiateCoSimulation(                                                                         \
-        fmi3String instanceName, fmi3String instantiationToken, fmi3String resourcePath, fmi3Boolean visible,         \
-        fmi3Boolean loggingOn, fmi3Boolean eventModeUsed, fmi3Boolean earlyReturnAllowed,                             \
-        const fmi3ValueReference requiredIntermediateVariables[], size_t nRequiredIntermediateVariables,              \
-        fmi3InstanceEnvironment instanceEnvironment, fmi3LogMessageCallback logMessage,                               \
-        fmi3IntermediateUpdateCallback intermediateUpdate) {                                                          \
-        (void)resourcePath, (void)visible, (void)earlyReturnAllowed, (void)requiredIntermediateVariables;             \
-        (void)intermediateUpdate; /* providesIntermediateUpdate="false": never called */                              \
-        if (eventModeUsed || nRequiredIntermediateVariables > 0) {                                                    \
-            fmi3_refuse(instanceEnvironment, logMessage, "fmi3InstantiateCoSimulation",                               \
-                        eventModeUsed ? "eventModeUsed, but hasEventMode is false"                                    \
-                                      : "the model has no intermediate variables");                                   \
-            return NULL;                                                                                              \
-        }                                                                                                             \
-        return fmi3_instantiate("fmi3InstantiateCoSimulation", instanceName, instantiationToken,                      \
-                                INTERFACE_CO_SIMULATION, loggingOn, instanceEnvironment, logMessage);                 \
+/* ... and after it: set after a step that succeeded (OK or Warning). */
+static inline void fmi3_step_outputs(fmi3Instance instance, Status status, fmi3Boolean *eventHandlingNeeded,
+                                     fmi3Boolean *terminateSimulation, fmi3Boolean *earlyReturn,
+                                     fmi3Float64 *lastSuccessfulTime) {
+    if (instance != NULL && (status == STATUS_OK || status == STATUS_WARNING)) {
+        *eventHandlingNeeded = fmi3False;
+        *terminateSimulation = fmi3False;
+        *earlyReturn = fmi3False;
+        *lastSuccessfulTime = ((Instance *)instance)->data.time;
     }
+}
 
-/* The FMI 3.0 functions that only pass a call on: to the shared instance (instance.h), or to
- * the model's own exit_initialization, reset, get_reals and set_reals (Pendulum's are the
- * instance's, the split FMUs' those of split.h); fmi3InstantiateScheduledExecution refused
- * with `scheduled_refusal`. */
-#define DEFINE_FMI3_PASSING_CALLS(exit_initialization, reset, get_reals, set_reals, scheduled_refusal)                \
-    const char *fmi3GetVersion(void) { return fmi3Version; }                                                          \
-    fmi3Instance fmi3InstantiateScheduledExecution(                                                                   \
-        fmi3String instanceName, fmi3String instantiationToken, fmi3String resourcePath, fmi3Boolean visible,         \
-        fmi3Boolean loggingOn, fmi3InstanceEnvironment instanceEnvironment, fmi3LogMessageCallback logMessage,        \
-        fmi3ClockUpdateCallback clockUpdate, fmi3LockPreemptionCallback lockPreemption,                               \
-        fmi3UnlockPreemptionCallback unlockPreemption) {                                                              \
-        (void)instanceName, (void)instantiationToken, (void)resourcePath, (void)visible, (void)loggingOn;             \
-        (void)clockUpdate, (void)lockPreemption, (void)unlockPreemption;                                              \
-        fmi3_refuse(instanceEnvironment, logMessage, "fmi3InstantiateScheduledExecution", scheduled_refusal);         \
-        return NULL;                                                                                                  \
-    }                                                                                                                 \
-    void fmi3FreeInstance(fmi3Instance instance) {                                                                    \
-        if (instance != NULL) {                                                                                       \
-            instance_release(instance);                                                                               \
-            free(instance);                                                                                           \
-        }                                                                                                             \
-    }                                                                                                                 \
-    fmi3Status fmi3SetDebugLogging(fmi3Instance instance, fmi3Boolean loggingOn, size_t nCategories,                  \
-                                   const fmi3String categories[]) {                                                   \
-        return (fmi3Status)instance_set_debug_logging(instance, "fmi3SetDebugLogging", loggingOn, nCategories,        \
-                                                      categories);                                                    \
-    }                                                                                                                 \
-    fmi3Status fmi3ExitInitializationMode(fmi3Instance instance) {                                                    \
-        return (fmi3Status)exit_initialization(instance, "fmi3ExitInitializationMode");                               \
-    }                                                                                                                 \
-    fmi3Status fmi3Terminate(fmi3Instance instance) {                                                                 \
-        return (fmi3Status)instance_terminate(instance, "fmi3Terminate");                                             \
-    }                                                                                                                 \
-    fmi3Status fmi3Reset(fmi3Instance instance) { return (fmi3Status)reset(instance, "fmi3Reset"); }                  \
-    fmi3Status fmi3GetFloat64(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr, fmi3Float64 values[],  \
-                              size_t nValues) {                                                                       \
-        if (!fmi3_scalar_counts(instance, "fmi3GetFloat64", nvr, nValues)) {                                          \
-            return fmi3Error;                                                                                         \
-        }                                                                                                             \
-        return (fmi3Status)get_reals(instance, "fmi3GetFloat64", vr, nvr, values);                                    \
-    }                                                                                                                 \
-    fmi3Status fmi3SetFloat64(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr,                       \
-                              const fmi3Float64 values[], size_t nValues) {                                           \
-        if (!fmi3_scalar_counts(instance, "fmi3SetFloat64", nvr, nValues)) {                                          \
-            return fmi3Error;                                                                                         \
-        }                                                                                                             \
-        return (fmi3Status)set_reals(instance, "fmi3SetFloat64", vr, nvr, values);                                    \
+/* fmi3InstantiateCoSimulation's work: no FMU of the project has an event mode or intermediate
+ * variables (refused); the rest is the layer's fmi3_instantiate. */
+static inline fmi3Instance fmi3_instantiate_co_simulation(fmi3String instanceName, fmi3String instantiationToken,
+                                                          fmi3Boolean loggingOn, fmi3Boolean eventModeUsed,
+                                                          size_t nRequiredIntermediateVariables,
+                                                          fmi3InstanceEnvironment instanceEnvironment,
+                                                          fmi3LogMessageCallback logMessage) {
+    if (eventModeUsed || nRequiredIntermediateVariables > 0) {
+        fmi3_refuse(instanceEnvironment, logMessage, "fmi3InstantiateCoSimulation",
+                    eventModeUsed ? "eventModeUsed, but hasEventMode is false"
+                                  : "the model has no intermediate variables");
+        return NULL;
     }
+    return fmi3_instantiate("fmi3InstantiateCoSimulation", instanceName, instantiationToken, INTERFACE_CO_SIMULATION,
+                            loggingOn, instanceEnvironment, logMessage);
+}
 
-/* Get and Set of a type the model has no variable of: any value reference is unknown. */
-#define DEFINE_FMI3_NO_VARIABLES_OF_TYPE(Name, Type)                                                                \
-    fmi3Status fmi3Get##Name(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr, Type values[],     \
-                             size_t nValues) {                                                                     \
-        (void)nValues;                                                                                             \
-        return (fmi3Status)instance_no_variables(instance, "fmi3Get" #Name, GET_MODES, vr, nvr, values);          \
-    }                                                                                                              \
-    fmi3Status fmi3Set##Name(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr, const Type values[], \
-                             size_t nValues) {                                                                     \
-        (void)nValues;                                                                                             \
-        return (fmi3Status)instance_no_variables(instance, "fmi3Set" #Name, SET_MODES, vr, nvr, values);          \
+/* fmi3FreeInstance's work. */
+static inline void fmi3_free_instance(fmi3Instance instance) {
+    if (instance != NULL) {
+        instance_release(instance);
+        free(instance);
     }
-
-/* The types no FMU of the project has a variable of, Binary and Clock among them. */
-#define DEFINE_FMI3_ABSENT_TYPES                                                                                      \
-    DEFINE_FMI3_NO_VARIABLES_OF_TYPE(Float32, fmi3Float32)                                                            \
-    DEFINE_FMI3_NO_VARIABLES_OF_TYPE(Int8, fmi3Int8)                                                                  \
-    DEFINE_FMI3_NO_VARIABLES_OF_TYPE(UInt8, fmi3UInt8)                                                                \
-    DEFINE_FMI3_NO_VARIABLES_OF_TYPE(Int16, fmi3Int16)                                                                \
-    DEFINE_FMI3_NO_VARIABLES_OF_TYPE(UInt16, fmi3UInt16)                                                              \
-    DEFINE_FMI3_NO_VARIABLES_OF_TYPE(UInt32, fmi3UInt32)                                                              \
-    DEFINE_FMI3_NO_VARIABLES_OF_TYPE(UInt64, fmi3UInt64)                                                              \
-    DEFINE_FMI3_NO_VARIABLES_OF_TYPE(Boolean, fmi3Boolean)                                                            \
-    DEFINE_FMI3_NO_VARIABLES_OF_TYPE(String, fmi3String)                                                              \
-    fmi3Status fmi3GetBinary(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr, size_t valueSizes[],  \
-                             fmi3Binary values[], size_t nValues) {                                                  \
-        (void)valueSizes, (void)nValues;                                                                             \
-        return (fmi3Status)instance_no_variables(instance, "fmi3GetBinary", GET_MODES, vr, nvr, values);            \
-    }                                                                                                                \
-    fmi3Status fmi3SetBinary(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr,                       \
-                             const size_t valueSizes[], const fmi3Binary values[], size_t nValues) {                 \
-        (void)valueSizes, (void)nValues;                                                                             \
-        return (fmi3Status)instance_no_variables(instance, "fmi3SetBinary", SET_MODES, vr, nvr, values);            \
-    }                                                                                                                \
-    fmi3Status fmi3GetClock(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr, fmi3Clock values[]) { \
-        return (fmi3Status)instance_no_variables(instance, "fmi3GetClock", GET_MODES, vr, nvr, values);             \
-    }                                                                                                                \
-    fmi3Status fmi3SetClock(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr,                        \
-                            const fmi3Clock values[]) {                                                              \
-        return (fmi3Status)instance_no_variables(instance, "fmi3SetClock", SET_MODES, vr, nvr, values);             \
-    }
+}
 
 #endif

@@ -85,7 +85,7 @@ fmi3Status fmi3GetNominalsOfContinuousStates(fmi3Instance instance, fmi3Float64 
 
 /* FMI 3.0 3.2.3: the sizes of the state vector and the event indicators, in any mode. */
 static fmi3Status report_count(fmi3Instance instance, const char *function, size_t *count, size_t value) {
-    if (!instance_allowed_for(instance, function, INTERFACE_MODEL_EXCHANGE, ANY_MODE)) {
+    if (!instance_call_allowed(instance, function, CALL_GET_NUMBER_OF)) {
         return fmi3Error;
     }
     if (count == NULL) {

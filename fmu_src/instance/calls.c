@@ -46,14 +46,14 @@ static Status take_experiment(Instance *inst, const char *function, int toleranc
 
 Status instance_setup_experiment(Instance *inst, const char *function, int tolerance_defined, double tolerance,
                                  double start_time, int stop_time_defined, double stop_time) {
-    if (!instance_allowed(inst, function, MODE_INSTANTIATED)) {
+    if (!instance_call_allowed(inst, function, CALL_SETUP_EXPERIMENT)) {
         return STATUS_ERROR;
     }
     return take_experiment(inst, function, tolerance_defined, tolerance, start_time, stop_time_defined, stop_time);
 }
 
 Status instance_enter_initialization(Instance *inst, const char *function) {
-    if (!instance_allowed(inst, function, MODE_INSTANTIATED)) {
+    if (!instance_call_allowed(inst, function, CALL_ENTER_INITIALIZATION)) {
         return STATUS_ERROR;
     }
     inst->data.mode = MODE_INITIALIZATION;
@@ -64,7 +64,7 @@ Status instance_enter_initialization_with(Instance *inst, const char *function, 
                                           double tolerance, double start_time, int stop_time_defined,
                                           double stop_time) {
     Status status;
-    if (!instance_allowed(inst, function, MODE_INSTANTIATED)) {
+    if (!instance_call_allowed(inst, function, CALL_ENTER_INITIALIZATION)) {
         return STATUS_ERROR;
     }
     status = take_experiment(inst, function, tolerance_defined, tolerance, start_time, stop_time_defined, stop_time);
@@ -76,7 +76,7 @@ Status instance_enter_initialization_with(Instance *inst, const char *function, 
 
 Status instance_exit_initialization(Instance *inst, const char *function) {
     const char *problem;
-    if (!instance_allowed(inst, function, MODE_INITIALIZATION)) {
+    if (!instance_call_allowed(inst, function, CALL_EXIT_INITIALIZATION)) {
         return STATUS_ERROR;
     }
     model_exact_forget(&inst->exact_now); /* the exact solution is set up anew */
@@ -89,7 +89,7 @@ Status instance_exit_initialization(Instance *inst, const char *function) {
 }
 
 Status instance_terminate(Instance *inst, const char *function) {
-    if (!instance_allowed(inst, function, MODE_EVENT | MODE_CONTINUOUS_TIME | MODE_STEP_COMPLETE)) {
+    if (!instance_call_allowed(inst, function, CALL_TERMINATE)) {
         return STATUS_ERROR;
     }
     inst->data.mode = MODE_TERMINATED;
@@ -97,7 +97,7 @@ Status instance_terminate(Instance *inst, const char *function) {
 }
 
 Status instance_reset(Instance *inst, const char *function) {
-    if (!instance_allowed(inst, function, ANY_MODE)) {
+    if (!instance_call_allowed(inst, function, CALL_RESET)) {
         return STATUS_ERROR;
     }
     model_reset(&inst->data, inst->type);
@@ -105,9 +105,9 @@ Status instance_reset(Instance *inst, const char *function) {
     return STATUS_OK;
 }
 
-int instance_arrays_allowed(Instance *inst, const char *function, unsigned modes, const ValueReference vr[],
+int instance_arrays_allowed(Instance *inst, const char *function, FmiCall call, const ValueReference vr[],
                             size_t nvr, const void *values) {
-    if (!instance_allowed(inst, function, modes)) {
+    if (!instance_call_allowed(inst, function, call)) {
         return 0;
     }
     if (nvr > 0 && (vr == NULL || values == NULL)) {
@@ -120,7 +120,7 @@ int instance_arrays_allowed(Instance *inst, const char *function, unsigned modes
 Status instance_get_reals(Instance *inst, const char *function, const ValueReference vr[], size_t nvr,
                           double value[]) {
     size_t i;
-    if (!instance_arrays_allowed(inst, function, GET_MODES, vr, nvr, value)) {
+    if (!instance_arrays_allowed(inst, function, CALL_GET_VARIABLES, vr, nvr, value)) {
         return STATUS_ERROR;
     }
     for (i = 0; i < nvr; i++) {
@@ -141,7 +141,7 @@ Status instance_get_reals(Instance *inst, const char *function, const ValueRefer
 Status instance_set_reals(Instance *inst, const char *function, const ValueReference vr[], size_t nvr,
                           const double value[]) {
     size_t i;
-    if (!instance_arrays_allowed(inst, function, SET_MODES, vr, nvr, value)) {
+    if (!instance_arrays_allowed(inst, function, CALL_SET_VARIABLES, vr, nvr, value)) {
         return STATUS_ERROR;
     }
     model_exact_forget(&inst->exact_now); /* a parameter or a start value may change */
@@ -180,9 +180,9 @@ Status instance_set_integer(Instance *inst, const char *function, ValueReference
     return STATUS_OK;
 }
 
-Status instance_no_variables(Instance *inst, const char *function, unsigned modes, const ValueReference vr[],
+Status instance_no_variables(Instance *inst, const char *function, FmiCall call, const ValueReference vr[],
                              size_t nvr, const void *values) {
-    if (!instance_arrays_allowed(inst, function, modes, vr, nvr, values)) {
+    if (!instance_arrays_allowed(inst, function, call, vr, nvr, values)) {
         return STATUS_ERROR;
     }
     if (nvr > 0) {

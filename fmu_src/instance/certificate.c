@@ -24,7 +24,11 @@
 
 #include "instance.h"
 
-static const char *const SOLVER_NAMES[] = {"?", "dopri5", "rk4", "rkn", "symplectic"};
+/* The solver's name for the messages (the solver table's, integrator.c). */
+static const char *solver_name(int solver) {
+    const char *name = integrator_solver_name(solver);
+    return name == NULL ? "?" : name;
+}
 
 double certificate_factor(double tolerance) {
     /* the bound on the distance to the exact port that leaves room for the port's own error
@@ -62,7 +66,7 @@ static void remedy(const ModelData *data, char *text, size_t size) {
         snprintf(text, size, "A smaller tolerance would hold it; theta_exact and omega_exact are exact.");
     } else if (certificate_reachable(SOLVER_RKN, data->tolerance, data->exact.m1, data->exact.m)) {
         snprintf(text, size, "%s cannot hold it this close to the separatrix (tol |1 - m| = %.2g, below its "
-                 "%.0e); rkn, dopri5 or symplectic at this tolerance can.", SOLVER_NAMES[data->solver], need,
+                 "%.0e); rkn, dopri5 or symplectic at this tolerance can.", solver_name(data->solver), need,
                  integrator_reach((SolverKind)data->solver));
     } else {
         snprintf(text, size, "No double-precision solver can hold it this close to the separatrix "
@@ -109,7 +113,7 @@ Status instance_check_step(Instance *inst) {
                      certificate_factor(data->tolerance) * fmax(1.0, fabs(theta_exact)),
                      fabs(data->omega - omega_exact),
                      certificate_factor(data->tolerance) * fmax(data->exact.w0, fabs(omega_exact)),
-                     SOLVER_NAMES[data->solver], data->tolerance, data->exact.m1, hold);
+                     solver_name(data->solver), data->tolerance, data->exact.m1, hold);
         }
     } else if (miss != NULL && model_exact_now(data, &inst->exact_now, &theta_exact, &omega_exact) != NULL) {
         theta_exact = NAN; /* not reached: a miss is looked for only where the time is resolvable */
@@ -121,7 +125,7 @@ Status instance_check_step(Instance *inst) {
                      "hard case: by t = %.9g the numerical solution (solver %s, tolerance %g) %s: theta = %.9g rad, "
                      "omega = %.9g rad/s, the exact solution theta_exact = %.9g rad, omega_exact = %.9g rad/s. "
                      "Use a tighter tolerance or another solver, or read theta_exact.%s%s",
-                     data->time, SOLVER_NAMES[data->solver], data->tolerance, miss, data->theta, data->omega,
+                     data->time, solver_name(data->solver), data->tolerance, miss, data->theta, data->omega,
                      theta_exact, omega_exact, log_certificate ? " " : "", certificate);
         return STATUS_WARNING;
     }

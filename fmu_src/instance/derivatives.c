@@ -11,7 +11,6 @@
 #include "instance.h"
 #include "pendulum_vrs.h"
 
-#define PARTIAL_MODES (MODE_INITIALIZATION | MODE_EVENT | MODE_CONTINUOUS_TIME | MODE_STEP_COMPLETE | MODE_TERMINATED)
 
 /* dK/dp of the complete elliptic integral K(p) = K, given p and p1 = 1 - p (accurately):
  * dK/dp = (E - p1 K) / (2 p p1) (DLMF 19.4.1), with E - p1 K = K (p/2 - sum_{n>=1} 2^(n-1) c_n^2)
@@ -147,7 +146,7 @@ Status instance_partials(Instance *inst, const char *function, int adjoint, cons
     const ModelData *data;
     const double w0sq = inst == NULL ? 0.0 : inst->data.g / inst->data.L;
     size_t i, j, n_out;
-    if (!instance_allowed(inst, function, PARTIAL_MODES)) {
+    if (!instance_call_allowed(inst, function, CALL_PARTIAL_DERIVATIVES)) {
         return STATUS_ERROR;
     }
     data = &inst->data;
@@ -217,7 +216,7 @@ Status instance_output_derivatives(Instance *inst, const char *function, const V
     double a, d[4], d_exact[4], theta_exact = 0.0, omega_exact = 0.0, sin_exact = 0.0, cos_exact = 1.0;
     int have_exact;
     size_t i;
-    if (!instance_allowed_for(inst, function, INTERFACE_CO_SIMULATION, MODE_STEP_COMPLETE)) {
+    if (!instance_call_allowed(inst, function, CALL_GET_OUTPUT_DERIVATIVES)) {
         return STATUS_ERROR;
     }
     if (nvr > 0 && (vr == NULL || order == NULL || value == NULL)) {

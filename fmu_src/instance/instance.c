@@ -61,11 +61,114 @@ Status instance_fail(Instance *inst, const char *function, const char *format, .
     return STATUS_ERROR;
 }
 
-int instance_allowed(Instance *inst, const char *function, unsigned allowed_modes) {
+/* Groups of modes the table below uses. */
+#define STATE_READ_MODES (MODE_INITIALIZATION | MODE_EVENT | MODE_CONTINUOUS_TIME | MODE_TERMINATED | MODE_ERROR)
+#define ANY_MODE (MODE_INSTANTIATED | MODE_INITIALIZATION | MODE_EVENT | MODE_CONTINUOUS_TIME | MODE_STEP_COMPLETE | \
+                  MODE_TERMINATED | MODE_ERROR)
+#define ANY_LIVE_MODE (ANY_MODE & ~MODE_ERROR)
+#define NEVER 0u
+
+/* The interfaces that have a call: bits 1 << InterfaceType. */
+#define ME (1u << INTERFACE_MODEL_EXCHANGE)
+#define CS (1u << INTERFACE_CO_SIMULATION)
+#define ME_CS (ME | CS)
+
+typedef struct {
+    unsigned modes;      /* the modes (Mode bits) in which the call is allowed */
+    unsigned interfaces; /* ME, CS or both: an instance of another interface refuses the call */
+} CallRule;
+
+/* Which call is allowed in which state: the state machines of FMI 2.0 (sections 3.2.3 and 4.2.4)
+ * and FMI 3.0 (3.2 and 4.2), the two versions' states being the same modes (model.h; 3.0's Step
+ * Mode is 2.0's StepComplete). The FMI functions of each row, 2.0 then 3.0 (the split FMUs'
+ * layers in split/; a function of a feature the FMU lacks is refused as not provided). */
+static const CallRule CALL_RULES[CALL_COUNT] = {
+    /* fmi2SetDebugLogging, fmi3SetDebugLogging */
+    [CALL_SET_DEBUG_LOGGING] = {ANY_MODE, ME_CS},
+    /* fmi2SetupExperiment (3.0 folds it into fmi3EnterInitializationMode) */
+    [CALL_SETUP_EXPERIMENT] = {MODE_INSTANTIATED, ME_CS},
+    /* fmi2EnterInitializationMode, fmi3EnterInitializationMode */
+    [CALL_ENTER_INITIALIZATION] = {MODE_INSTANTIATED, ME_CS},
+    /* fmi2ExitInitializationMode, fmi3ExitInitializationMode */
+    [CALL_EXIT_INITIALIZATION] = {MODE_INITIALIZATION, ME_CS},
+    /* fmi2Terminate, fmi3Terminate */
+    [CALL_TERMINATE] = {MODE_EVENT | MODE_CONTINUOUS_TIME | MODE_STEP_COMPLETE, ME_CS},
+    /* fmi2Reset, fmi3Reset */
+    [CALL_RESET] = {ANY_MODE, ME_CS},
+    /* fmi2GetReal, Integer, Boolean, String; fmi3GetFloat64, Int32, Int64 and every other type's Get */
+    [CALL_GET_VARIABLES] = {ANY_MODE & ~MODE_INSTANTIATED, ME_CS},
+    /* fmi2SetReal, ...; fmi3SetFloat64, ...: parameters and start values before initialization too */
+    [CALL_SET_VARIABLES] = {MODE_INSTANTIATED | MODE_INITIALIZATION | MODE_EVENT | MODE_CONTINUOUS_TIME |
+                            MODE_STEP_COMPLETE, ME_CS},
+    /* fmi2GetFMUstate, fmi3GetFMUState */
+    [CALL_GET_FMU_STATE] = {ANY_LIVE_MODE, ME_CS},
+    /* fmi2SetFMUstate, fmi3SetFMUState (and the three below: in the Error state too) */
+    [CALL_SET_FMU_STATE] = {ANY_MODE, ME_CS},
+    /* fmi2FreeFMUstate, fmi3FreeFMUState */
+    [CALL_FREE_FMU_STATE] = {ANY_MODE, ME_CS},
+    /* fmi2SerializedFMUstateSize, fmi3SerializedFMUStateSize */
+    [CALL_SERIALIZED_FMU_STATE_SIZE] = {ANY_MODE, ME_CS},
+    /* fmi2SerializeFMUstate, fmi3SerializeFMUState */
+    [CALL_SERIALIZE_FMU_STATE] = {ANY_MODE, ME_CS},
+    /* fmi2DeSerializeFMUstate, fmi3DeserializeFMUState */
+    [CALL_DESERIALIZE_FMU_STATE] = {ANY_MODE, ME_CS},
+    /* fmi2GetDirectionalDerivative; fmi3GetDirectionalDerivative, fmi3GetAdjointDerivative */
+    [CALL_PARTIAL_DERIVATIVES] = {MODE_INITIALIZATION | MODE_EVENT | MODE_CONTINUOUS_TIME | MODE_STEP_COMPLETE |
+                                  MODE_TERMINATED, ME_CS},
+    /* what the FMU does not have, refused with its reason in any mode: fmi3/absent.c's clocks,
+     * Configuration Mode, ...; the split FMUs' FMU states, partial derivatives, fmi2CancelStep
+     * and fmi3EnterStepMode */
+    [CALL_NOT_PROVIDED] = {ANY_MODE, ME_CS},
+
+    /* Model Exchange. fmi2EnterEventMode, fmi3EnterEventMode */
+    [CALL_ENTER_EVENT_MODE] = {MODE_EVENT | MODE_CONTINUOUS_TIME, ME},
+    /* fmi2EnterContinuousTimeMode, fmi3EnterContinuousTimeMode */
+    [CALL_ENTER_CONTINUOUS_TIME_MODE] = {MODE_EVENT, ME},
+    /* fmi2NewDiscreteStates, fmi3UpdateDiscreteStates */
+    [CALL_UPDATE_DISCRETE_STATES] = {MODE_EVENT, ME},
+    /* fmi2CompletedIntegratorStep, fmi3CompletedIntegratorStep */
+    [CALL_COMPLETED_INTEGRATOR_STEP] = {MODE_CONTINUOUS_TIME, ME},
+    /* fmi2SetTime, fmi3SetTime */
+    [CALL_SET_TIME] = {MODE_EVENT | MODE_CONTINUOUS_TIME, ME},
+    /* fmi2SetContinuousStates, fmi3SetContinuousStates */
+    [CALL_SET_CONTINUOUS_STATES] = {MODE_CONTINUOUS_TIME, ME},
+    /* fmi2GetDerivatives, fmi3GetContinuousStateDerivatives */
+    [CALL_GET_DERIVATIVES] = {STATE_READ_MODES, ME},
+    /* fmi2GetEventIndicators, fmi3GetEventIndicators */
+    [CALL_GET_EVENT_INDICATORS] = {STATE_READ_MODES, ME},
+    /* fmi2GetContinuousStates, fmi3GetContinuousStates */
+    [CALL_GET_CONTINUOUS_STATES] = {STATE_READ_MODES, ME},
+    /* fmi2GetNominalsOfContinuousStates, fmi3GetNominalsOfContinuousStates */
+    [CALL_GET_NOMINALS] = {MODE_INSTANTIATED | STATE_READ_MODES, ME},
+    /* fmi3GetNumberOfContinuousStates, fmi3GetNumberOfEventIndicators */
+    [CALL_GET_NUMBER_OF] = {ANY_MODE, ME},
+
+    /* Co-Simulation. fmi2DoStep, fmi3DoStep */
+    [CALL_DO_STEP] = {MODE_STEP_COMPLETE, CS},
+    /* fmi2SetRealInputDerivatives (3.0 has none) */
+    [CALL_SET_INPUT_DERIVATIVES] = {MODE_INITIALIZATION | MODE_STEP_COMPLETE, CS},
+    /* fmi2GetRealOutputDerivatives, fmi3GetOutputDerivatives */
+    [CALL_GET_OUTPUT_DERIVATIVES] = {MODE_STEP_COMPLETE, CS},
+    /* fmi2CancelStep (3.0 has none) */
+    [CALL_CANCEL_STEP] = {MODE_STEP_COMPLETE, CS},
+    /* fmi2GetStatus, GetRealStatus, GetIntegerStatus, GetBooleanStatus, GetStringStatus (3.0 has none) */
+    [CALL_GET_STATUS] = {MODE_STEP_COMPLETE | MODE_TERMINATED | MODE_ERROR, CS},
+    /* fmi3EnterStepMode: never, as the FMU has no Event Mode in Co-Simulation to leave */
+    [CALL_ENTER_STEP_MODE] = {NEVER, CS},
+};
+
+int instance_call_allowed(Instance *inst, const char *function, FmiCall call) {
+    const CallRule *rule = &CALL_RULES[call];
     if (inst == NULL) {
         return 0;
     }
-    if (((unsigned)inst->data.mode & allowed_modes) == 0) {
+    if ((rule->interfaces & (1u << inst->type)) == 0) {
+        instance_fail(inst, function, "is a %s function; this instance was instantiated for %s",
+                      rule->interfaces == ME ? "Model Exchange" : "Co-Simulation",
+                      inst->type == INTERFACE_MODEL_EXCHANGE ? "Model Exchange" : "Co-Simulation");
+        return 0;
+    }
+    if (((unsigned)inst->data.mode & rule->modes) == 0) {
         instance_fail(inst, function, "not allowed in state %s", mode_name(inst->data.mode, inst->fmi_version));
         return 0;
     }
@@ -75,21 +178,11 @@ int instance_allowed(Instance *inst, const char *function, unsigned allowed_mode
     return 1;
 }
 
-int instance_allowed_for(Instance *inst, const char *function, InterfaceType type, unsigned allowed_modes) {
-    if (inst != NULL && inst->type != type) {
-        instance_fail(inst, function, "is a %s function; this instance was instantiated for %s",
-                      type == INTERFACE_MODEL_EXCHANGE ? "Model Exchange" : "Co-Simulation",
-                      inst->type == INTERFACE_MODEL_EXCHANGE ? "Model Exchange" : "Co-Simulation");
-        return 0;
-    }
-    return instance_allowed(inst, function, allowed_modes);
-}
-
 Status instance_set_debug_logging(Instance *inst, const char *function, int logging_on, size_t n,
                                   const char *const categories[]) {
     size_t i;
     int category;
-    if (!instance_allowed(inst, function, ANY_MODE)) {
+    if (!instance_call_allowed(inst, function, CALL_SET_DEBUG_LOGGING)) {
         return STATUS_ERROR;
     }
     if (n > 0 && categories == NULL) {

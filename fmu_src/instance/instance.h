@@ -97,20 +97,52 @@ Status instance_fail(Instance *inst, const char *function, const char *format, .
 #endif
     ;
 
-/* 1 if inst is non-NULL and in one of the allowed modes; otherwise logs "<function>: not
- * allowed in state <mode>" (for a live instance) and returns 0. */
-int instance_allowed(Instance *inst, const char *function, unsigned allowed_modes);
+/* The FMI functions, grouped by what the shared core does for them: each has one row in the
+ * table of the modes in which it is allowed, CALL_RULES in instance.c (the FMI 2.0 and 3.0
+ * functions of each row are named there). A layer's function passes its row to the instance_*
+ * call that does its work, or checks it with instance_call_allowed first. */
+typedef enum {
+    CALL_SET_DEBUG_LOGGING,
+    CALL_SETUP_EXPERIMENT,
+    CALL_ENTER_INITIALIZATION,
+    CALL_EXIT_INITIALIZATION,
+    CALL_TERMINATE,
+    CALL_RESET,
+    CALL_GET_VARIABLES,
+    CALL_SET_VARIABLES,
+    CALL_GET_FMU_STATE,
+    CALL_SET_FMU_STATE,
+    CALL_FREE_FMU_STATE,
+    CALL_SERIALIZED_FMU_STATE_SIZE,
+    CALL_SERIALIZE_FMU_STATE,
+    CALL_DESERIALIZE_FMU_STATE,
+    CALL_PARTIAL_DERIVATIVES,
+    CALL_NOT_PROVIDED,
+    CALL_ENTER_EVENT_MODE,
+    CALL_ENTER_CONTINUOUS_TIME_MODE,
+    CALL_UPDATE_DISCRETE_STATES,
+    CALL_COMPLETED_INTEGRATOR_STEP,
+    CALL_SET_TIME,
+    CALL_SET_CONTINUOUS_STATES,
+    CALL_GET_DERIVATIVES,
+    CALL_GET_EVENT_INDICATORS,
+    CALL_GET_CONTINUOUS_STATES,
+    CALL_GET_NOMINALS,
+    CALL_GET_NUMBER_OF,
+    CALL_DO_STEP,
+    CALL_SET_INPUT_DERIVATIVES,
+    CALL_GET_OUTPUT_DERIVATIVES,
+    CALL_CANCEL_STEP,
+    CALL_GET_STATUS,
+    CALL_ENTER_STEP_MODE,
+    CALL_COUNT
+} FmiCall;
 
-/* The same for a function of one interface only: an instance of the other refuses it. */
-int instance_allowed_for(Instance *inst, const char *function, InterfaceType type, unsigned allowed_modes);
-
-/* Modes in which each group of calls is allowed (both versions' state tables). */
-#define ANY_MODE (MODE_INSTANTIATED | MODE_INITIALIZATION | MODE_EVENT | MODE_CONTINUOUS_TIME | \
-                  MODE_STEP_COMPLETE | MODE_TERMINATED | MODE_ERROR)
-#define ANY_LIVE_MODE (ANY_MODE & ~MODE_ERROR)
-#define GET_MODES (ANY_MODE & ~MODE_INSTANTIATED)
-#define SET_MODES (MODE_INSTANTIATED | MODE_INITIALIZATION | MODE_EVENT | MODE_CONTINUOUS_TIME | \
-                   MODE_STEP_COMPLETE)
+/* 1 if inst is non-NULL, of an interface that has the call, and in one of the modes where its
+ * row allows it (then the call is traced under logCalls); otherwise logs why ("<function> is a
+ * Model Exchange function; ...", "<function>: not allowed in state <mode>"), puts a live
+ * instance into the Error state and returns 0. */
+int instance_call_allowed(Instance *inst, const char *function, FmiCall call);
 
 /* --- life cycle and variables (instance/calls.c) ------------------------------------------ */
 Status instance_set_debug_logging(Instance *inst, const char *function, int logging_on, size_t n,
@@ -132,10 +164,10 @@ Status instance_set_reals(Instance *inst, const char *function, const ValueRefer
 Status instance_get_integer(Instance *inst, const char *function, ValueReference vr, long *value);
 Status instance_set_integer(Instance *inst, const char *function, ValueReference vr, long value);
 /* Checks the arrays of a Get/Set call: vr and values non-NULL when nvr > 0. */
-int instance_arrays_allowed(Instance *inst, const char *function, unsigned modes, const ValueReference vr[],
+int instance_arrays_allowed(Instance *inst, const char *function, FmiCall call, const ValueReference vr[],
                             size_t nvr, const void *values);
 /* Get/Set of a type the model has no variable of: every value reference is unknown. */
-Status instance_no_variables(Instance *inst, const char *function, unsigned modes, const ValueReference vr[],
+Status instance_no_variables(Instance *inst, const char *function, FmiCall call, const ValueReference vr[],
                              size_t nvr, const void *values);
 
 /* --- Model Exchange and Co-Simulation (instance/motion.c) ---------------------------------- */

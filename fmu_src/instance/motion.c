@@ -7,10 +7,8 @@
 
 #include "instance.h"
 
-#define STATE_READ_MODES (MODE_INITIALIZATION | MODE_EVENT | MODE_CONTINUOUS_TIME | MODE_TERMINATED | MODE_ERROR)
-
 Status instance_enter_event_mode(Instance *inst, const char *function) {
-    if (!instance_allowed_for(inst, function, INTERFACE_MODEL_EXCHANGE, MODE_EVENT | MODE_CONTINUOUS_TIME)) {
+    if (!instance_call_allowed(inst, function, CALL_ENTER_EVENT_MODE)) {
         return STATUS_ERROR;
     }
     inst->data.mode = MODE_EVENT;
@@ -18,7 +16,7 @@ Status instance_enter_event_mode(Instance *inst, const char *function) {
 }
 
 Status instance_enter_continuous_time_mode(Instance *inst, const char *function) {
-    if (!instance_allowed_for(inst, function, INTERFACE_MODEL_EXCHANGE, MODE_EVENT)) {
+    if (!instance_call_allowed(inst, function, CALL_ENTER_CONTINUOUS_TIME_MODE)) {
         return STATUS_ERROR;
     }
     inst->data.mode = MODE_CONTINUOUS_TIME;
@@ -26,7 +24,7 @@ Status instance_enter_continuous_time_mode(Instance *inst, const char *function)
 }
 
 Status instance_new_discrete_states(Instance *inst, const char *function, int any_pointer_null) {
-    if (!instance_allowed_for(inst, function, INTERFACE_MODEL_EXCHANGE, MODE_EVENT)) {
+    if (!instance_call_allowed(inst, function, CALL_UPDATE_DISCRETE_STATES)) {
         return STATUS_ERROR;
     }
     if (any_pointer_null) {
@@ -37,7 +35,7 @@ Status instance_new_discrete_states(Instance *inst, const char *function, int an
 
 Status instance_completed_integrator_step(Instance *inst, const char *function, int *enter_event_mode,
                                           int *terminate_simulation) {
-    if (!instance_allowed_for(inst, function, INTERFACE_MODEL_EXCHANGE, MODE_CONTINUOUS_TIME)) {
+    if (!instance_call_allowed(inst, function, CALL_COMPLETED_INTEGRATOR_STEP)) {
         return STATUS_ERROR;
     }
     if (enter_event_mode == NULL || terminate_simulation == NULL) {
@@ -49,7 +47,7 @@ Status instance_completed_integrator_step(Instance *inst, const char *function, 
 }
 
 Status instance_set_time(Instance *inst, const char *function, double time) {
-    if (!instance_allowed_for(inst, function, INTERFACE_MODEL_EXCHANGE, MODE_EVENT | MODE_CONTINUOUS_TIME)) {
+    if (!instance_call_allowed(inst, function, CALL_SET_TIME)) {
         return STATUS_ERROR;
     }
     if (!isfinite(time)) {
@@ -61,9 +59,9 @@ Status instance_set_time(Instance *inst, const char *function, double time) {
 }
 
 /* Shared checks of the state-vector functions: mode, array and its length. */
-static int states_allowed(Instance *inst, const char *function, unsigned modes, const void *array, size_t n,
+static int states_allowed(Instance *inst, const char *function, FmiCall call, const void *array, size_t n,
                           size_t expected) {
-    if (!instance_allowed_for(inst, function, INTERFACE_MODEL_EXCHANGE, modes)) {
+    if (!instance_call_allowed(inst, function, call)) {
         return 0;
     }
     if (n != expected) {
@@ -78,7 +76,7 @@ static int states_allowed(Instance *inst, const char *function, unsigned modes, 
 }
 
 Status instance_set_states(Instance *inst, const char *function, const double x[], size_t nx) {
-    if (!states_allowed(inst, function, MODE_CONTINUOUS_TIME, x, nx, N_STATES)) {
+    if (!states_allowed(inst, function, CALL_SET_CONTINUOUS_STATES, x, nx, N_STATES)) {
         return STATUS_ERROR;
     }
     if (!isfinite(x[0]) || !isfinite(x[1])) {
@@ -93,7 +91,7 @@ Status instance_set_states(Instance *inst, const char *function, const double x[
 
 Status instance_get_state_derivatives(Instance *inst, const char *function, double derivatives[], size_t nx) {
     const char *problem;
-    if (!states_allowed(inst, function, STATE_READ_MODES, derivatives, nx, N_STATES)) {
+    if (!states_allowed(inst, function, CALL_GET_DERIVATIVES, derivatives, nx, N_STATES)) {
         return STATUS_ERROR;
     }
     problem = model_derivatives(&inst->data, &derivatives[0], &derivatives[1]);
@@ -101,11 +99,11 @@ Status instance_get_state_derivatives(Instance *inst, const char *function, doub
 }
 
 Status instance_get_event_indicators(Instance *inst, const char *function, double indicators[], size_t ni) {
-    return states_allowed(inst, function, STATE_READ_MODES, indicators, ni, 0) ? STATUS_OK : STATUS_ERROR;
+    return states_allowed(inst, function, CALL_GET_EVENT_INDICATORS, indicators, ni, 0) ? STATUS_OK : STATUS_ERROR;
 }
 
 Status instance_get_states(Instance *inst, const char *function, double x[], size_t nx) {
-    if (!states_allowed(inst, function, STATE_READ_MODES, x, nx, N_STATES)) {
+    if (!states_allowed(inst, function, CALL_GET_CONTINUOUS_STATES, x, nx, N_STATES)) {
         return STATUS_ERROR;
     }
     x[0] = inst->data.theta;
@@ -114,7 +112,7 @@ Status instance_get_states(Instance *inst, const char *function, double x[], siz
 }
 
 Status instance_get_nominals(Instance *inst, const char *function, double nominals[], size_t nx) {
-    if (!states_allowed(inst, function, MODE_INSTANTIATED | STATE_READ_MODES, nominals, nx, N_STATES)) {
+    if (!states_allowed(inst, function, CALL_GET_NOMINALS, nominals, nx, N_STATES)) {
         return STATUS_ERROR;
     }
     nominals[0] = 1.0; /* rad: angles of order 1 */
@@ -125,7 +123,7 @@ Status instance_get_nominals(Instance *inst, const char *function, double nomina
 Status instance_do_step(Instance *inst, const char *function, double point, double step) {
     ModelData *data;
     double t_end = 0.0, y[2];
-    if (!instance_allowed_for(inst, function, INTERFACE_CO_SIMULATION, MODE_STEP_COMPLETE)) {
+    if (!instance_call_allowed(inst, function, CALL_DO_STEP)) {
         return STATUS_ERROR;
     }
     data = &inst->data;

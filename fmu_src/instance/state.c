@@ -126,7 +126,7 @@ void instance_release_states(Instance *inst) {
 
 Status instance_get_state(Instance *inst, const char *function, void **state) {
     ModelData *copy;
-    if (!instance_allowed(inst, function, ANY_LIVE_MODE)) {
+    if (!instance_call_allowed(inst, function, CALL_GET_FMU_STATE)) {
         return STATUS_ERROR;
     }
     if (state == NULL) {
@@ -144,7 +144,7 @@ Status instance_get_state(Instance *inst, const char *function, void **state) {
 
 Status instance_set_state(Instance *inst, const char *function, const void *state) {
     const char *problem;
-    if (!instance_allowed(inst, function, ANY_LIVE_MODE | MODE_ERROR)) {
+    if (!instance_call_allowed(inst, function, CALL_SET_FMU_STATE)) {
         return STATUS_ERROR;
     }
     if (state == NULL) {
@@ -162,7 +162,7 @@ Status instance_set_state(Instance *inst, const char *function, const void *stat
 }
 
 Status instance_free_state(Instance *inst, const char *function, void **state) {
-    if (!instance_allowed(inst, function, ANY_LIVE_MODE | MODE_ERROR)) {
+    if (!instance_call_allowed(inst, function, CALL_FREE_FMU_STATE)) {
         return STATUS_ERROR;
     }
     if (state == NULL) {
@@ -182,7 +182,7 @@ Status instance_free_state(Instance *inst, const char *function, void **state) {
 }
 
 Status instance_serialized_state_size(Instance *inst, const char *function, const void *state, size_t *size) {
-    if (!instance_allowed(inst, function, ANY_LIVE_MODE | MODE_ERROR)) {
+    if (!instance_call_allowed(inst, function, CALL_SERIALIZED_FMU_STATE_SIZE)) {
         return STATUS_ERROR;
     }
     if (state == NULL || size == NULL) {
@@ -194,7 +194,7 @@ Status instance_serialized_state_size(Instance *inst, const char *function, cons
 
 Status instance_serialize_state(Instance *inst, const char *function, const void *state, char bytes[], size_t size) {
     StateHeader header;
-    if (!instance_allowed(inst, function, ANY_LIVE_MODE | MODE_ERROR)) {
+    if (!instance_call_allowed(inst, function, CALL_SERIALIZE_FMU_STATE)) {
         return STATUS_ERROR;
     }
     if (state == NULL || bytes == NULL) {
@@ -221,7 +221,7 @@ Status instance_deserialize_state(Instance *inst, const char *function, const ch
     double extra[STATE_EXTRA_MAX / sizeof(double)]; /* aligned for any model's extra bytes */
     ModelData *copy;
     const char *problem;
-    if (!instance_allowed(inst, function, ANY_LIVE_MODE | MODE_ERROR)) {
+    if (!instance_call_allowed(inst, function, CALL_DESERIALIZE_FMU_STATE)) {
         return STATUS_ERROR;
     }
     if (bytes == NULL || state == NULL) {

@@ -96,7 +96,7 @@ const char *model_check_state(const ModelData *data, InterfaceType type) {
     if (!(isfinite(data->L) && data->L > 0.0 && isfinite(data->g) && data->g > 0.0)) {
         return "L or g out of range (finite, greater than 0)";
     }
-    if (data->solver < SOLVER_DOPRI5 || data->solver > SOLVER_SYMPLECTIC) {
+    if (integrator_solver_name(data->solver) == NULL) {
         return "the solver is not an item of the enumeration Solver";
     }
     if (!(isfinite(data->tolerance) && data->tolerance > 0.0 && data->tolerance < 1.0)) {
@@ -329,7 +329,7 @@ const char *model_set_integer(ModelData *data, ValueReference vr, int value) {
         if (((unsigned)data->mode & (MODE_INSTANTIATED | MODE_INITIALIZATION)) == 0) {
             return "is fixed after initialization (set it before ExitInitializationMode)";
         }
-        if (value < SOLVER_DOPRI5 || value > SOLVER_SYMPLECTIC) {
+        if (integrator_solver_name(value) == NULL) {
             return "must be one of the items of the enumeration Solver";
         }
         data->solver = value;

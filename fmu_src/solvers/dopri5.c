@@ -55,12 +55,12 @@
 #define D6 (-1453857185.0 / 822651844.0)
 #define D7 (69997945.0 / 29380423.0)
 
-void integ_dopri5_start(Integrator *it)
+void integrator_dopri5_start(Integrator *it)
 {
-    it->h = integ_initial_step(it, 5);
+    it->h = integrator_initial_step(it, 5);
 }
 
-int integ_dopri5_step(Integrator *it)
+int integrator_dopri5_step(Integrator *it)
 {
     const double *y = it->y;
     const double *k1 = it->f;   /* FSAL: f(t, y) from the previous step */
@@ -68,37 +68,37 @@ int integ_dopri5_step(Integrator *it)
 
     for (;;) {
         const double h = it->h;
-        if (!(h >= integ_hmin(it)) || !isfinite(h))
+        if (!(h >= integrator_hmin(it)) || !isfinite(h))
             return -1;   /* step-size underflow */
         for (int i = 0; i < 2; i++)
             ys[i] = y[i] + h * A21 * k1[i];
-        integ_rhs(it, ys, k2);
+        integrator_rhs(it, ys, k2);
         for (int i = 0; i < 2; i++)
             ys[i] = y[i] + h * (A31 * k1[i] + A32 * k2[i]);
-        integ_rhs(it, ys, k3);
+        integrator_rhs(it, ys, k3);
         for (int i = 0; i < 2; i++)
             ys[i] = y[i] + h * (A41 * k1[i] + A42 * k2[i] + A43 * k3[i]);
-        integ_rhs(it, ys, k4);
+        integrator_rhs(it, ys, k4);
         for (int i = 0; i < 2; i++)
             ys[i] = y[i] + h * (A51 * k1[i] + A52 * k2[i] + A53 * k3[i] + A54 * k4[i]);
-        integ_rhs(it, ys, k5);
+        integrator_rhs(it, ys, k5);
         for (int i = 0; i < 2; i++)
             ys[i] = y[i] + h * (A61 * k1[i] + A62 * k2[i] + A63 * k3[i] + A64 * k4[i] +
                                 A65 * k5[i]);
-        integ_rhs(it, ys, k6);
+        integrator_rhs(it, ys, k6);
         for (int i = 0; i < 2; i++)
             y5[i] = y[i] + h * (B1 * k1[i] + B3 * k3[i] + B4 * k4[i] + B5 * k5[i] +
                                 B6 * k6[i]);
-        integ_rhs(it, y5, k7);
+        integrator_rhs(it, y5, k7);
         for (int i = 0; i < 2; i++)
             e[i] = h * (E1 * k1[i] + E3 * k3[i] + E4 * k4[i] + E5 * k5[i] + E6 * k6[i] +
                         E7 * k7[i]);
-        double err = integ_err_norm(it, e, y, y5);
+        double err = integrator_err_norm(it, e, y, y5);
         if (!isfinite(err) || !isfinite(y5[0]) || !isfinite(y5[1]))
             return -1;
 
         int accept;
-        double hnew = integ_control(it, h, err, 5, 0.9, &accept);
+        double hnew = integrator_control(it, h, err, 5, 0.9, &accept);
         if (!accept) {
             it->h = hnew;
             continue;
@@ -115,7 +115,7 @@ int integ_dopri5_step(Integrator *it)
                                    D6 * k6[i] + D7 * k7[i]);
         if (it->project_energy) {
             double trig[2];
-            integ_project(it, y, y5, k7, trig);
+            integrator_project(it, y, y5, k7, trig);
         }
         for (int i = 0; i < 2; i++) {
             double r2 = y5[i] - y[i];
@@ -125,13 +125,13 @@ int integ_dopri5_step(Integrator *it)
             it->dense[2][i] = r3;
             it->dense[3][i] = r2 - h * k7[i] - r3;
         }
-        integ_accept(it, h, y5, k7);
+        integrator_accept(it, h, y5, k7);
         it->h = hnew;
         return 0;
     }
 }
 
-void integ_dopri5_interp(const Integrator *it, double s, double y[2])
+void integrator_dopri5_interp(const Integrator *it, double s, double y[2])
 {
     const double s1 = 1.0 - s;
     for (int i = 0; i < 2; i++)

@@ -1,6 +1,7 @@
-/* integrator.c: initialisation, dispatch to the methods (methods.h), the shared
- * step-end rule and the check of a solver state read from an FMU state. The helpers the
- * methods share live below both, in integrator_core.c. */
+/* integrator.c: the solver table (what each method is), initialisation, the dispatch to the
+ * methods (methods.h) through that table, the shared step-end rule and the check of a solver
+ * state read from an FMU state. The helpers the methods share live below both, in
+ * integrator_core.c. */
 #include <math.h>
 #include <string.h>
 
@@ -13,18 +14,82 @@
 
 /* The adaptive methods never go below this tolerance (about 45 ulp of 1): tighter
  * requests only make the step-size controller chase rounding noise. */
-#define INTEG_MIN_TOL 1e-14
+#define INTEGRATOR_MIN_TOL 1e-14
 
 /* Largest adaptive step in units of 1/w0 (DOPRI5; rkn.c sets its own). Only binds near the
  * equilibria, where the error estimate vanishes and the step would otherwise grow without
  * limit. */
-#define INTEG_HMAX_W0 1.0
+#define INTEGRATOR_HMAX_W0 1.0
 
 /* Closeness below which the fixed-step methods project onto the energy as well. */
-#define INTEG_PROJECT_CLOSENESS 1e-2
+#define INTEGRATOR_PROJECT_CLOSENESS 1e-2
 
 /* DOPRI5's local tolerance relative to the user's, scaled by the closeness too. */
-#define INTEG_DOPRI5_TOL_FACTOR 0.1
+#define INTEGRATOR_DOPRI5_TOL_FACTOR 0.1
+
+/* What a solver is: one row of SOLVERS below. */
+typedef struct {
+    const char *name;    /* its item in the enumeration Solver of both model descriptions, and its name
+                            in log messages */
+    void (*start)(Integrator *it);
+    int (*step)(Integrator *it);
+    void (*interp)(const Integrator *it, double s, double y[2]);
+    int fixed_step;      /* 1: start sets it->h from the tolerance and every step takes it (a state's h
+                            must be that one); 0: adaptive, steps in (0, hmax], the local tolerance at
+                            least INTEGRATOR_MIN_TOL */
+    int always_projects; /* 1: every accepted point is projected onto the initial energy; 0: only near
+                            the separatrix, closeness < INTEGRATOR_PROJECT_CLOSENESS */
+    double tol_closeness_factor; /* > 0: the local tolerance is tol * closeness * this factor (closer
+                                    to the separatrix, tighter); 0: tol itself */
+    double reach;        /* smallest tol |1 - m| / max(1, m) at which it holds 100 tol over ten
+                            periods (integrator.h, measured in tests/c/test_certificate.c) */
+} SolverMethod;
+
+/* The solvers, indexed by SolverKind (the value of the item in the model descriptions).
+ *
+ * Adding a solver: a SOLVER_* value in integrator.h and a row here (then its item in both model
+ * descriptions and the rest of CONTRIBUTING.md's "Adding a solver"). Its three functions live
+ * in its own file (declared in methods.h) and keep this contract:
+ *   start(it):        called once by integrator_init after the common fields are set (it->f
+ *                     holds y' at t0, already counted in the statistics; it->rtol, atol, hmax
+ *                     and project_energy follow from this row); sets it->h > 0, finite.
+ *   step(it):         takes one accepted step from it->t (integrator_accept moves the old point
+ *                     to t_prev, y_prev, f_prev), refreshing it->f and it->dense, counting every
+ *                     evaluation of sin or cos in it->stats; allocates nothing. Returns 0, or -1
+ *                     on step-size underflow (integrator_hmin) or values that are not finite.
+ *   interp(it, s, y): the solution (theta, omega) at t_prev + s h_last, 0 <= s <= 1 (only called
+ *                     with h_last > 0), from it->dense or the end points alone: the internal steps
+ *                     never depend on the output times.
+ * The rest of the row says what the shared code does for it (the fields above). */
+static const SolverMethod SOLVERS[] = {
+    [SOLVER_DOPRI5] = {.name = "dopri5", .start = integrator_dopri5_start, .step = integrator_dopri5_step,
+                       .interp = integrator_dopri5_interp, .fixed_step = 0, .always_projects = 1,
+                       .tol_closeness_factor = INTEGRATOR_DOPRI5_TOL_FACTOR, .reach = INTEGRATOR_REACH},
+    [SOLVER_RK4] = {.name = "rk4", .start = integrator_rk4_start, .step = integrator_rk4_step,
+                    .interp = integrator_rk4_interp, .fixed_step = 1, .always_projects = 0,
+                    .tol_closeness_factor = 0.0, .reach = INTEGRATOR_REACH_RK4},
+    [SOLVER_RKN] = {.name = "rkn", .start = integrator_rkn_start, .step = integrator_rkn_step,
+                    .interp = integrator_rkn_interp, .fixed_step = 0, .always_projects = 1,
+                    .tol_closeness_factor = 0.0, .reach = INTEGRATOR_REACH},
+    [SOLVER_SYMPLECTIC] = {.name = "symplectic", .start = integrator_symplectic_start,
+                           .step = integrator_symplectic_step, .interp = integrator_symplectic_interp,
+                           .fixed_step = 1, .always_projects = 0, .tol_closeness_factor = 0.0,
+                           .reach = INTEGRATOR_REACH},
+};
+
+/* The row of a kind, or NULL for a value that names no solver. */
+static const SolverMethod *method_of(int kind)
+{
+    if (kind < 0 || kind >= (int)(sizeof SOLVERS / sizeof SOLVERS[0]) || SOLVERS[kind].name == NULL)
+        return NULL;
+    return &SOLVERS[kind];
+}
+
+const char *integrator_solver_name(int kind)
+{
+    const SolverMethod *method = method_of(kind);
+    return method == NULL ? NULL : method->name;
+}
 
 static int init_common(Integrator *it, SolverKind kind, double w0sq, double w0sq_lo, double tol,
                        double t0, double theta0, double omega0)
@@ -32,8 +97,8 @@ static int init_common(Integrator *it, SolverKind kind, double w0sq, double w0sq
     if (it == NULL || !isfinite(w0sq) || !(w0sq > 0.0) || !isfinite(tol) || !(tol > 0.0) ||
         !isfinite(t0) || !isfinite(theta0) || !isfinite(omega0))
         return -1;
-    if (kind != SOLVER_DOPRI5 && kind != SOLVER_RK4 && kind != SOLVER_RKN &&
-        kind != SOLVER_SYMPLECTIC)
+    const SolverMethod *method = method_of(kind);
+    if (method == NULL)
         return -1;
 
     memset(it, 0, sizeof *it);
@@ -68,21 +133,21 @@ static int init_common(Integrator *it, SolverKind kind, double w0sq, double w0sq
             return -1;
     }
     it->rtol = tol;
-    if (kind == SOLVER_DOPRI5)
-        it->rtol = tol * it->closeness * INTEG_DOPRI5_TOL_FACTOR;
-    if (kind == SOLVER_DOPRI5 || kind == SOLVER_RKN)
-        it->rtol = fmax(it->rtol, INTEG_MIN_TOL);
+    if (method->tol_closeness_factor > 0.0)
+        it->rtol = tol * it->closeness * method->tol_closeness_factor;
+    if (!method->fixed_step)
+        it->rtol = fmax(it->rtol, INTEGRATOR_MIN_TOL);
     it->atol[0] = it->rtol;
     it->atol[1] = it->rtol * sqrt(w0sq);
     it->t = t0;
     it->y[0] = theta0;
     it->y[1] = omega0;
-    it->hmax = INTEG_HMAX_W0 / it->rate;
+    it->hmax = INTEGRATOR_HMAX_W0 / it->rate;
     it->err_prev = 1e-4;
     /* the fixed-step methods project too near the separatrix: there the energy error of their
      * steps, not their phase error, is what the period amplifies (without the projection, rk4
      * and symplectic end 1e3 to 1e4 times their bound at 1 - m = 2e-12; docs/certificate.md) */
-    it->project_energy = (kind == SOLVER_DOPRI5 || kind == SOLVER_RKN || it->closeness < INTEG_PROJECT_CLOSENESS);
+    it->project_energy = (method->always_projects || it->closeness < INTEGRATOR_PROJECT_CLOSENESS);
     it->t_prev = t0;
     it->y_prev[0] = theta0;
     it->y_prev[1] = omega0;
@@ -91,21 +156,16 @@ static int init_common(Integrator *it, SolverKind kind, double w0sq, double w0sq
         /* the energy measured from the separatrix, G = H - 2 w0sq (integrator.h): near the
          * top both of its terms are small, so it keeps its relative accuracy where
          * H = omega^2/2 + 2 w0sq sin^2(theta/2) would lose it to cancellation */
-        it->energy0 = integ_energy0(w0sq, w0sq_lo, theta0, omega0, &it->energy0_lo);
+        it->energy0 = integrator_energy0(w0sq, w0sq_lo, theta0, omega0, &it->energy0_lo);
         it->stats.rhs_evals++;
         if (!isfinite(it->energy0))
             return -1;
     }
-    integ_rhs(it, it->y, it->f);
+    integrator_rhs(it, it->y, it->f);
     it->f_prev[0] = it->f[0];
     it->f_prev[1] = it->f[1];
 
-    switch (kind) {
-    case SOLVER_DOPRI5: integ_dopri5_start(it); break;
-    case SOLVER_RK4: integ_rk4_start(it); break;
-    case SOLVER_RKN: integ_rkn_start(it); break;
-    case SOLVER_SYMPLECTIC: integ_symplectic_start(it); break;
-    }
+    method->start(it);
     return (isfinite(it->h) && it->h > 0.0) ? 0 : -1;
 }
 
@@ -128,33 +188,16 @@ int integrator_init_gl(Integrator *it, SolverKind kind, double g, double L, doub
 
 double integrator_reach(SolverKind kind)
 {
-    return kind == SOLVER_RK4 ? INTEGRATOR_REACH_RK4 : INTEGRATOR_REACH;
-}
-
-static int method_step(Integrator *it)
-{
-    switch (it->kind) {
-    case SOLVER_DOPRI5: return integ_dopri5_step(it);
-    case SOLVER_RK4: return integ_rk4_step(it);
-    case SOLVER_RKN: return integ_rkn_step(it);
-    case SOLVER_SYMPLECTIC: return integ_symplectic_step(it);
-    }
-    return -1;
-}
-
-static void method_interp(const Integrator *it, double s, double y[2])
-{
-    switch (it->kind) {
-    case SOLVER_DOPRI5: integ_dopri5_interp(it, s, y); return;
-    case SOLVER_RK4: integ_rk4_interp(it, s, y); return;
-    case SOLVER_RKN: integ_rkn_interp(it, s, y); return;
-    case SOLVER_SYMPLECTIC: integ_symplectic_interp(it, s, y); return;
-    }
+    const SolverMethod *method = method_of(kind);
+    return method == NULL ? INTEGRATOR_REACH : method->reach;
 }
 
 int integrator_advance(Integrator *it, double t_out, double y_out[2])
 {
     if (it == NULL || y_out == NULL || !isfinite(t_out))
+        return -1;
+    const SolverMethod *method = method_of(it->kind);
+    if (method == NULL)
         return -1;
     /* Internal steps are never shortened to land on t_out: the step sequence is the same
      * for every output grid. A bounded number of steps per call: no call can hang. */
@@ -164,16 +207,16 @@ int integrator_advance(Integrator *it, double t_out, double y_out[2])
     /* the internal time is the compensated sum t + t_lo: compared as such, the same steps
      * reach t_out whatever the start time (with t alone, a step landing within ulp(t) of
      * t_out counted as done or not by the rounding of the clock) */
-    while (integ_time_before(it->t, it->t_lo, t_out)) {
+    while (integrator_time_before(it->t, it->t_lo, t_out)) {
         if (budget-- == 0)
             return -2;
-        if (method_step(it) != 0)
+        if (method->step(it) != 0)
             return -1;
     }
     if (it->h_last > 0.0 && t_out >= it->t_prev) {
         /* the fraction of the last step, from its exact start t_prev + t_prev_lo (at
          * t_out = t, s differs from 1 by the rounding of t: the interpolant accounts for it) */
-        method_interp(it, ((t_out - it->t_prev) - it->t_prev_lo) / it->h_last, y_out);
+        method->interp(it, ((t_out - it->t_prev) - it->t_prev_lo) / it->h_last, y_out);
     } else if (t_out == it->t) {
         y_out[0] = it->y[0];   /* no step taken yet */
         y_out[1] = it->y[1];
@@ -183,9 +226,11 @@ int integrator_advance(Integrator *it, double t_out, double y_out[2])
     return (isfinite(y_out[0]) && isfinite(y_out[1])) ? 0 : -1;
 }
 
+/* 1 for a fixed-step method (an unknown kind counts as adaptive). */
 static int is_fixed_step(SolverKind kind)
 {
-    return kind == SOLVER_RK4 || kind == SOLVER_SYMPLECTIC;
+    const SolverMethod *method = method_of(kind);
+    return method != NULL && method->fixed_step;
 }
 
 double integrator_min_steps(const Integrator *it, double t_out)

@@ -13,6 +13,8 @@
 #ifndef PENDULUM_INTEGRATOR_H
 #define PENDULUM_INTEGRATOR_H
 
+/* The values of the items of the enumeration Solver (both model descriptions); each has its row
+ * in the solver table, SOLVERS in integrator.c, where a new solver is added. */
 typedef enum {
     SOLVER_DOPRI5 = 1,      /* adaptive Dormand-Prince 5(4) with dense output */
     SOLVER_RK4 = 2,         /* classic RK4, fixed step derived from the tolerance */
@@ -102,7 +104,7 @@ typedef struct {
  * smaller one, model.c a state that carries one). Below it the step certificate's bound,
  * 100 tol less the exact port's own error 5e-14 (instance.h), is not the tolerance's
  * (at 1e-15 it would be half of it, at 5e-16 zero), and the solvers do not follow the
- * tolerance: the adaptive methods' local tolerance stops at 1e-14 (INTEG_MIN_TOL,
+ * tolerance: the adaptive methods' local tolerance stops at 1e-14 (INTEGRATOR_MIN_TOL,
  * integrator.c). Measured with mpmath (docs/certificate.md) by a build that sets it lower on
  * the compiler's command line. */
 #ifndef INTEGRATOR_TOLERANCE_FLOOR
@@ -111,6 +113,11 @@ typedef struct {
 
 /* That line for a method (INTEGRATOR_REACH for an unknown one). */
 double integrator_reach(SolverKind kind);
+
+/* The name of a solver, its item in the enumeration Solver ("rkn", ...), or NULL for a value that
+ * names none: what integrator_init accepts. The solvers and what each one is: the table SOLVERS
+ * in integrator.c. */
+const char *integrator_solver_name(int kind);
 
 /* Prepares integration from (theta0, omega0) at t0. tol is the relative tolerance
  * (fmi2SetupExperiment's); w0sq = g / L > 0. Returns 0, or -1 for invalid input.

@@ -9,7 +9,7 @@
 #include "dd.h"
 #include "integrator_core.h"
 
-double integ_hmin(const Integrator *it)
+double integrator_hmin(const Integrator *it)
 {
     /* 16 eps in the motion's time unit 1/rate: a shorter step moves the state by less than
      * 16 ulps of its own scale, so its error estimate measures rounding and the step size has
@@ -19,7 +19,7 @@ double integ_hmin(const Integrator *it)
     return 16.0 * DBL_EPSILON / it->rate;
 }
 
-double integ_energy0(double w0sq, double w0sq_lo, double theta0, double omega0, double *lo)
+double integrator_energy0(double w0sq, double w0sq_lo, double theta0, double omega0, double *lo)
 {
     /* G = omega0^2/2 - 2 w0sq cos^2(theta0/2): the cosine in double-double (dd_sincos, dd.c;
      * a correctly rounded double cosine is up to 1e-16 off, a bias of 1 - m that near the
@@ -49,7 +49,7 @@ double integ_energy0(double w0sq, double w0sq_lo, double theta0, double omega0, 
 }
 
 /* sqrt(mean (v_i scale / sc_i)^2): the weighted RMS of v in the time unit `scale`, each term
- * scaled before it is squared. integ_initial_step squares first (HNW's norm as written; scaling
+ * scaled before it is squared. integrator_initial_step squares first (HNW's norm as written; scaling
  * first rounds differently and would move the first step of every run) and takes this only
  * where that overflows: beyond w0 / tol ~ 1e154 the slope's square does. */
 static double scaled_rms(const double v[2], const double sc[2], double scale)
@@ -58,7 +58,7 @@ static double scaled_rms(const double v[2], const double sc[2], double scale)
     return sqrt(0.5 * (r0 * r0 + r1 * r1));
 }
 
-double integ_initial_step(Integrator *it, int order)
+double integrator_initial_step(Integrator *it, int order)
 {
     /* HNW I, II.4: d0 = ||y0||, d1 = ||f0||, h0 = 0.01 d0/d1; one explicit Euler step
      * gives d2 = ||f1 - f0|| / h0; h1 = (0.01 / max(d1, d2))^(1/(order+1));
@@ -82,7 +82,7 @@ double integ_initial_step(Integrator *it, int order)
     double y1[2], f1[2], df[2];
     y1[0] = it->y[0] + h0 * it->f[0];
     y1[1] = it->y[1] + h0 * it->f[1];
-    integ_rhs(it, y1, f1);
+    integrator_rhs(it, y1, f1);
     for (int i = 0; i < 2; i++) {
         df[i] = f1[i] - it->f[i];
         d2 += (df[i] / sc[i]) * (df[i] / sc[i]);
@@ -97,7 +97,7 @@ double integ_initial_step(Integrator *it, int order)
     return fmin(fmin(100.0 * h0, h1), it->hmax);
 }
 
-double integ_control(Integrator *it, double h, double err, int q, double safe, int *accept)
+double integrator_control(Integrator *it, double h, double err, int q, double safe, int *accept)
 {
     /* PI step-size control (Gustafsson; HNW I, IV.2 (2.43c), in the form of Hairer's
      * DOPRI5 code): h_new = h * err^-alpha * err_prev^beta / safe, factor limited to
@@ -117,14 +117,14 @@ double integ_control(Integrator *it, double h, double err, int q, double safe, i
         const double e2 = err * err, p2 = it->err_prev * it->err_prev;
         const double ratio = (e2 * e2 * e2 * err) / (p2 * p2);
         double fac = pow(ratio, 0.1 / q) / safe;   /* = h / h_new */
-        fac = integ_max(1.0 / fac_max, integ_min(1.0 / fac_min, fac));   /* err finite: no NaN here */
+        fac = integrator_max(1.0 / fac_max, integrator_min(1.0 / fac_min, fac));   /* err finite: no NaN here */
         double hnew = h / fac;
         if (it->last_rejected)
-            hnew = integ_min(hnew, h);     /* no increase right after a rejection */
-        it->err_prev = integ_max(err, 1e-4);
+            hnew = integrator_min(hnew, h);     /* no increase right after a rejection */
+        it->err_prev = integrator_max(err, 1e-4);
         it->last_rejected = 0;
         *accept = 1;
-        return integ_min(hnew, it->hmax);
+        return integrator_min(hnew, it->hmax);
     }
     /* rejected: pure I control (err^alpha, alpha = 0.7/q), never shrink by more than fac_min */
     it->last_rejected = 1;
@@ -133,7 +133,7 @@ double integ_control(Integrator *it, double h, double err, int q, double safe, i
     return h / fmin(1.0 / fac_min, pow(err, 0.7 / q) / safe);
 }
 
-void integ_accept(Integrator *it, double h, const double ynew[2], const double fnew[2])
+void integrator_accept(Integrator *it, double h, const double ynew[2], const double fnew[2])
 {
     /* t + t_lo + h as t + t_lo again: Knuth's TwoSum gives the rounding error of t + b
      * exactly (b = h + t_lo), which becomes the new low part */
@@ -157,7 +157,7 @@ void integ_accept(Integrator *it, double h, const double ynew[2], const double f
     it->stats.steps++;
 }
 
-void integ_hermite5(const Integrator *it, double s, double y[2])
+void integrator_hermite5(const Integrator *it, double s, double y[2])
 {
     /* p(s), s = (t - t_prev)/h, matches theta, h theta', h^2 theta'' at s = 0 and 1:
      * p = p0 + s (v0 + s (a0/2 + s (c3 + s (c4 + s c5)))) with D = p1 - p0 and
@@ -195,7 +195,7 @@ static void rotate_half_angle(Integrator *it, double th, double dth, double *s, 
     }
 }
 
-int integ_project(Integrator *it, const double y0[2], double ynew[2], double fnew[2],
+int integrator_project(Integrator *it, const double y0[2], double ynew[2], double fnew[2],
                   double trig[2])
 {
     /* Orthogonal projection onto the energy level (Hairer, Lubich & Wanner, Geometric
@@ -217,8 +217,8 @@ int integ_project(Integrator *it, const double y0[2], double ynew[2], double fne
     int moved = 0;
     it->stats.rhs_evals++;
     if (it->project_energy) {
-        const double sc_th = it->atol[0] + it->rtol * integ_max(fabs(y0[0]), fabs(th_in));
-        const double sc_om = it->atol[1] + it->rtol * integ_max(fabs(y0[1]), fabs(om_in));
+        const double sc_th = it->atol[0] + it->rtol * integrator_max(fabs(y0[0]), fabs(th_in));
+        const double sc_om = it->atol[1] + it->rtol * integrator_max(fabs(y0[1]), fabs(om_in));
         for (int iter = 0; iter < 4; iter++) {
             const double kin = 0.5 * om * om, pot = 2.0 * w0sq * c * c + 2.0 * it->w0sq_lo * c * c;
             const double r = (it->energy0 - (kin - pot)) + it->energy0_lo;
@@ -260,13 +260,13 @@ int integ_project(Integrator *it, const double y0[2], double ynew[2], double fne
     return moved;
 }
 
-/* Binomials C(M - 1 + j, j), j = 0 .. M - 1, for M = INTEG_TAYLOR_TERMS = 8. */
-_Static_assert(INTEG_TAYLOR_TERMS == 8, "HERMITE_BINOM and integ_hermite_eval assume M = 8");
-static const double HERMITE_BINOM[INTEG_TAYLOR_TERMS] = {1.0, 8.0, 36.0, 120.0, 330.0, 792.0,
+/* Binomials C(M - 1 + j, j), j = 0 .. M - 1, for M = INTEGRATOR_TAYLOR_TERMS = 8. */
+_Static_assert(INTEGRATOR_TAYLOR_TERMS == 8, "HERMITE_BINOM and integrator_hermite_eval assume M = 8");
+static const double HERMITE_BINOM[INTEGRATOR_TAYLOR_TERMS] = {1.0, 8.0, 36.0, 120.0, 330.0, 792.0,
                                                          1716.0, 3432.0};
 
-void integ_taylor(double w0sq, double theta, double omega, const double trig[2],
-                  double a[INTEG_TAYLOR_TERMS])
+void integrator_taylor(double w0sq, double theta, double omega, const double trig[2],
+                  double a[INTEGRATOR_TAYLOR_TERMS])
 {
     /* Taylor coefficients A_n = theta^(n)(t) / n! from theta'' = -w0sq sin theta: with S_n,
      * C_n those of sin theta(t) and cos theta(t),
@@ -274,12 +274,12 @@ void integ_taylor(double w0sq, double theta, double omega, const double trig[2],
      *   A_{n+2} = -w0sq S_n / ((n+1)(n+2)),
      * the recurrences of the derivatives of sin and cos of a series (automatic
      * differentiation; HNW I, I.8). */
-    double S[INTEG_TAYLOR_TERMS - 2], C[INTEG_TAYLOR_TERMS - 2];
+    double S[INTEGRATOR_TAYLOR_TERMS - 2], C[INTEGRATOR_TAYLOR_TERMS - 2];
     a[0] = theta;
     a[1] = omega;
     S[0] = trig[0];
     C[0] = trig[1];
-    for (int n = 0; n < INTEG_TAYLOR_TERMS - 2; n++) {
+    for (int n = 0; n < INTEGRATOR_TAYLOR_TERMS - 2; n++) {
         if (n > 0) {
             double sn = 0.0, cn = 0.0;
             for (int j = 1; j <= n; j++) {
@@ -293,16 +293,16 @@ void integ_taylor(double w0sq, double theta, double omega, const double trig[2],
     }
 }
 
-void integ_hermite_setup(const double left[INTEG_TAYLOR_TERMS],
-                         const double right[INTEG_TAYLOR_TERMS], double dense[][2])
+void integrator_hermite_setup(const double left[INTEGRATOR_TAYLOR_TERMS],
+                         const double right[INTEGRATOR_TAYLOR_TERMS], double dense[][2])
 {
-    /* Two-point Hermite interpolation matching INTEG_TAYLOR_TERMS = M Taylor coefficients
+    /* Two-point Hermite interpolation matching INTEGRATOR_TAYLOR_TERMS = M Taylor coefficients
      * at both ends of [0, 1] (degree 2M - 1):
      *   p(s) = (1 - s)^M alpha(s) + s^M beta(s - 1),
      * alpha = the first M terms of the series of left(s) / (1 - s)^M, beta those of
      * right(u) / (1 + u)^M, using 1/(1 - x)^M = sum_j C(M - 1 + j, j) x^j. Stored as
      * dense[k] = (alpha_k, beta_k). */
-    for (int k = 0; k < INTEG_TAYLOR_TERMS; k++) {
+    for (int k = 0; k < INTEGRATOR_TAYLOR_TERMS; k++) {
         double al = 0.0, be = 0.0;
         for (int i = 0; i <= k; i++) {
             al += left[i] * HERMITE_BINOM[k - i];
@@ -313,13 +313,13 @@ void integ_hermite_setup(const double left[INTEG_TAYLOR_TERMS],
     }
 }
 
-void integ_hermite_eval(const Integrator *it, double s, double y[2])
+void integrator_hermite_eval(const Integrator *it, double s, double y[2])
 {
-    /* p(s) and p'(s) / h from the coefficients of integ_hermite_setup (Horner, with the
+    /* p(s) and p'(s) / h from the coefficients of integrator_hermite_setup (Horner, with the
      * derivative alongside) */
     const double h = it->h_last;
     const double u = s - 1.0, r = 1.0 - s;
-    const int M = INTEG_TAYLOR_TERMS;
+    const int M = INTEGRATOR_TAYLOR_TERMS;
     double pa = it->dense[M - 1][0], dpa = 0.0, pb = it->dense[M - 1][1], dpb = 0.0;
     for (int k = M - 2; k >= 0; k--) {
         dpa = dpa * s + pa;

@@ -13,7 +13,7 @@
  *     h = min((30 tol c)^(1/4), 0.5) / r.
  * At tol = 1e-8 and small amplitudes this is h w0 = 0.023 (about 270 steps a period).
  * Near the separatrix (c < 1e-2) every step is projected onto the initial energy
- * (integrator.c), and c stops tightening the step at 1e-7 (integ_step_closeness): below, the
+ * (integrator.c), and c stops tightening the step at 1e-7 (integrator_step_closeness): below, the
  * projection holds the energy, and smaller steps only added rounding.
  *
  * Output: the internal steps never land on the output times; values in between come
@@ -31,34 +31,34 @@
 /* tol per unit of rate t, scaled for the global error over ten periods */
 #define RK4_TOL_FACTOR 0.25
 
-void integ_rk4_start(Integrator *it)
+void integrator_rk4_start(Integrator *it)
 {
     /* rate and closeness: integrator.c (the motion's time scale, the separatrix's sensitivity) */
-    it->h = fmin(pow(120.0 * it->rtol * integ_step_closeness(it) * RK4_TOL_FACTOR, 0.25), 0.5) / it->rate;
+    it->h = fmin(pow(120.0 * it->rtol * integrator_step_closeness(it) * RK4_TOL_FACTOR, 0.25), 0.5) / it->rate;
 }
 
-int integ_rk4_step(Integrator *it)
+int integrator_rk4_step(Integrator *it)
 {
     const double h = it->h;
     const double *y = it->y;
     const double *k1 = it->f;   /* f at (t, y), computed as the end slope of the last step */
     double k2[2], k3[2], k4[2], ys[2], ynew[2], fnew[2];
 
-    if (!(h >= integ_hmin(it)))
-        return -1;   /* below the smallest step (integ_hmin): measured in the motion's time, not
+    if (!(h >= integrator_hmin(it)))
+        return -1;   /* below the smallest step (integrator_hmin): measured in the motion's time, not
                         against the clock t (the compensated sum t + t_lo resolves the step) */
     for (int i = 0; i < 2; i++)
         ys[i] = y[i] + 0.5 * h * k1[i];
-    integ_rhs(it, ys, k2);
+    integrator_rhs(it, ys, k2);
     for (int i = 0; i < 2; i++)
         ys[i] = y[i] + 0.5 * h * k2[i];
-    integ_rhs(it, ys, k3);
+    integrator_rhs(it, ys, k3);
     for (int i = 0; i < 2; i++)
         ys[i] = y[i] + h * k3[i];
-    integ_rhs(it, ys, k4);
+    integrator_rhs(it, ys, k4);
     /* compensated: dense[0] (unused by the quintic Hermite output) carries the rounding */
     for (int i = 0; i < 2; i++)
-        ynew[i] = integ_add_compensated(y[i], h / 6.0 * (k1[i] + 2.0 * (k2[i] + k3[i]) + k4[i]),
+        ynew[i] = integrator_add_compensated(y[i], h / 6.0 * (k1[i] + 2.0 * (k2[i] + k3[i]) + k4[i]),
                                         &it->dense[0][i]);
     if (!isfinite(ynew[0]) || !isfinite(ynew[1]))
         return -1;
@@ -66,17 +66,17 @@ int integ_rk4_step(Integrator *it)
         /* near the separatrix: back onto the initial energy (integrator.c); f comes with it,
          * and the rounding carried so far belongs to the point before the move */
         double trig[2];
-        if (integ_project(it, y, ynew, fnew, trig) == 1) {
+        if (integrator_project(it, y, ynew, fnew, trig) == 1) {
             it->dense[0][0] = it->dense[0][1] = 0.0;
         }
     } else {
-        integ_rhs(it, ynew, fnew);   /* next step's k1 and the interpolation's end slope */
+        integrator_rhs(it, ynew, fnew);   /* next step's k1 and the interpolation's end slope */
     }
-    integ_accept(it, h, ynew, fnew);
+    integrator_accept(it, h, ynew, fnew);
     return 0;
 }
 
-void integ_rk4_interp(const Integrator *it, double s, double y[2])
+void integrator_rk4_interp(const Integrator *it, double s, double y[2])
 {
-    integ_hermite5(it, s, y);
+    integrator_hermite5(it, s, y);
 }

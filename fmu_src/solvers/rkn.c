@@ -26,14 +26,14 @@
  * evaluations of sin, plus one sin/cos pair at the new point, which gives its energy for
  * the projection, f for the next step, and sin/cos for the dense output.
  *
- * Each accepted point is projected back onto the initial energy (integ_project in
+ * Each accepted point is projected back onto the initial energy (integrator_project in
  * integrator_core.c), which keeps a libration from turning into a rotation near the separatrix
  * and removes the secular energy drift, so the global error grows linearly, not
  * quadratically, with time.
  *
  * Dense output: the pair has no continuous extension of its own; the interpolant is the
  * two-point Hermite polynomial of degree 15 matching theta and its first 7 derivatives at
- * both ends of the step (integ_taylor / integ_hermite_setup), all of which follow from
+ * both ends of the step (integrator_taylor / integrator_hermite_setup), all of which follow from
  * theta, omega, sin theta and cos theta without evaluating f again. Its error, of the
  * order of h^16 max|theta^(16)| / 16! / 4^8, stays below the step's own error (measured:
  * between the steps within a factor 2 of the step points at every tolerance, up to the
@@ -128,33 +128,33 @@ static const double EBP[RKN_STAGES] = {
     0.04489732194574983, -0.03270117761115586, 0.015662325288859434, -0.029155189630077964,
     0.025};
 
-/* it->dense holds: rows 0 .. INTEG_TAYLOR_TERMS - 1 the Hermite coefficients of the last
- * step (integ_hermite_setup); row TRIG_ROW sin and cos of theta at the current point, from
+/* it->dense holds: rows 0 .. INTEGRATOR_TAYLOR_TERMS - 1 the Hermite coefficients of the last
+ * step (integrator_hermite_setup); row TRIG_ROW sin and cos of theta at the current point, from
  * which the next step builds the left end of its interpolant. Both ends are expanded in the
- * step's own time unit (integ_taylor with w0^2 h^2 and omega h), so no coefficient overflows
+ * step's own time unit (integrator_taylor with w0^2 h^2 and omega h), so no coefficient overflows
  * however large g/L is (unscaled, the 14th derivative of theta grows like w0^14). */
-#define TRIG_ROW INTEG_TAYLOR_TERMS
+#define TRIG_ROW INTEGRATOR_TAYLOR_TERMS
 /* Rows RIGHT_ROW .. RIGHT_ROW + 3 keep the last step's right-end Taylor coefficients (in its
  * time unit h_last), which are the next step's left end: A_n h^n = (A_n h_last^n) (h / h_last)^n,
  * so a step expands only its new end. Row RIGHT_H_ROW [0] is 1 while they are valid, 0 after
- * integ_rkn_start (the first step expands both ends). A flag of its own, not h_last > 0: the
+ * integrator_rkn_start (the first step expands both ends). A flag of its own, not h_last > 0: the
  * FMU state format does not version these rows, and a state that holds zeros here (as one
  * serialized without them does, flag included) must expand both ends after it is restored. */
 #define RIGHT_ROW (TRIG_ROW + 1)
-#define RIGHT_H_ROW (RIGHT_ROW + INTEG_TAYLOR_TERMS / 2)
+#define RIGHT_H_ROW (RIGHT_ROW + INTEGRATOR_TAYLOR_TERMS / 2)
 _Static_assert(RIGHT_H_ROW < INTEGRATOR_MAX_STAGES, "dense[] holds the Hermite coefficients, sin/cos and the right end");
 
-void integ_rkn_start(Integrator *it)
+void integrator_rkn_start(Integrator *it)
 {
     it->hmax = RKN_HMAX_W0 / sqrt(it->w0sq);
-    it->h = integ_initial_step(it, 12);
+    it->h = integrator_initial_step(it, 12);
     it->dense[TRIG_ROW][0] = sin(it->y[0]);
     it->dense[TRIG_ROW][1] = cos(it->y[0]);
     it->dense[RIGHT_H_ROW][0] = 0.0;
     it->stats.rhs_evals++;
 }
 
-int integ_rkn_step(Integrator *it)
+int integrator_rkn_step(Integrator *it)
 {
     const double x0 = it->y[0], v0 = it->y[1];
     /* The stages hold sin theta; the acceleration -w0^2 sin theta enters through w0^2 h^2 once
@@ -174,7 +174,7 @@ int integ_rkn_step(Integrator *it)
 
     for (;;) {
         const double h = it->h;
-        if (!(h >= integ_hmin(it)) || !isfinite(h))
+        if (!(h >= integrator_hmin(it)) || !isfinite(h))
             return -1;   /* step-size underflow */
         const double wh = it->w0sq * (h * h), wl = it->w0sq_lo * (h * h);
         double lead = sin_x0, rest = 0.0;
@@ -198,40 +198,40 @@ int integ_rkn_step(Integrator *it)
         const double hw = h * it->w0sq, hwl = h * it->w0sq_lo;
         double y1[2] = {x0 + (h * v0 - (wh * sx + wl * sx)), v0 - (hw * sv + hwl * sv)};
         const double e[2] = {wh * ex + wl * ex, hw * ev + hwl * ev};
-        const double err = integ_err_norm(it, e, it->y, y1);
+        const double err = integrator_err_norm(it, e, it->y, y1);
         if (!isfinite(err) || !isfinite(y1[0]) || !isfinite(y1[1]))
             return -1;
 
         int accept;
-        const double hnew = integ_control(it, h, err, RKN_ERR_Q, RKN_SAFETY, &accept);
+        const double hnew = integrator_control(it, h, err, RKN_ERR_Q, RKN_SAFETY, &accept);
         if (!accept) {
             it->h = hnew;
             continue;
         }
-        double f1[2], trig1[2], left[INTEG_TAYLOR_TERMS], right[INTEG_TAYLOR_TERMS];
-        integ_project(it, it->y, y1, f1, trig1);
+        double f1[2], trig1[2], left[INTEGRATOR_TAYLOR_TERMS], right[INTEGRATOR_TAYLOR_TERMS];
+        integrator_project(it, it->y, y1, f1, trig1);
         if (it->dense[RIGHT_H_ROW][0] == 1.0) {
             const double rho = h / it->h_last;
             double scale = 1.0;
-            for (int n = 0; n < INTEG_TAYLOR_TERMS; n++, scale *= rho)
+            for (int n = 0; n < INTEGRATOR_TAYLOR_TERMS; n++, scale *= rho)
                 left[n] = it->dense[RIGHT_ROW + n / 2][n % 2] * scale;
         } else {
-            integ_taylor(wh, x0, v0 * h, it->dense[TRIG_ROW], left);   /* sin/cos of x0: stored */
+            integrator_taylor(wh, x0, v0 * h, it->dense[TRIG_ROW], left);   /* sin/cos of x0: stored */
         }
-        integ_taylor(wh, y1[0], y1[1] * h, trig1, right);
-        integ_hermite_setup(left, right, it->dense);
-        for (int n = 0; n < INTEG_TAYLOR_TERMS; n++)
+        integrator_taylor(wh, y1[0], y1[1] * h, trig1, right);
+        integrator_hermite_setup(left, right, it->dense);
+        for (int n = 0; n < INTEGRATOR_TAYLOR_TERMS; n++)
             it->dense[RIGHT_ROW + n / 2][n % 2] = right[n];
         it->dense[RIGHT_H_ROW][0] = 1.0;
         it->dense[TRIG_ROW][0] = trig1[0];
         it->dense[TRIG_ROW][1] = trig1[1];
-        integ_accept(it, h, y1, f1);
+        integrator_accept(it, h, y1, f1);
         it->h = hnew;
         return 0;
     }
 }
 
-void integ_rkn_interp(const Integrator *it, double s, double y[2])
+void integrator_rkn_interp(const Integrator *it, double s, double y[2])
 {
-    integ_hermite_eval(it, s, y);
+    integrator_hermite_eval(it, s, y);
 }

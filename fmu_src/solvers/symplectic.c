@@ -25,7 +25,7 @@
  *     h = min(0.8 (1e-3 tol c / C)^(1/8), 1) / r.
  * Near the separatrix (c < 1e-2) every step is projected onto the initial energy
  * (integrator.c; the composition is then no longer symplectic there, but its energy is held
- * to rounding), and c stops tightening the step at 1e-7 (integ_step_closeness).
+ * to rounding), and c stops tightening the step at 1e-7 (integrator_step_closeness).
  *
  * Output: Hermite interpolation of degree 7 for theta from theta, theta' = omega,
  * theta'' = -w0^2 sin(theta) and theta''' = -w0^2 cos(theta) omega at both ends of the
@@ -65,31 +65,31 @@ static double jerk(Integrator *it, double theta, double omega)
     return -it->w0sq * cos(theta) * omega;
 }
 
-void integ_symplectic_start(Integrator *it)
+void integrator_symplectic_start(Integrator *it)
 {
     /* rate and closeness: integrator.c (the motion's time scale, the separatrix's sensitivity) */
-    it->h = fmin(SYMP_SAFETY * pow(it->rtol * integ_step_closeness(it) * SYMP_TOL_FACTOR / SYMP_PHASE_C, 0.125),
+    it->h = fmin(SYMP_SAFETY * pow(it->rtol * integrator_step_closeness(it) * SYMP_TOL_FACTOR / SYMP_PHASE_C, 0.125),
                  SYMP_HMAX_W0) / it->rate;
     it->dense[0][1] = jerk(it, it->y[0], it->y[1]);
 }
 
-int integ_symplectic_step(Integrator *it)
+int integrator_symplectic_step(Integrator *it)
 {
     const double h = it->h;
     double x = it->y[0], v = it->y[1];
     double a = it->f[1];   /* force at x, from the end of the previous step */
 
-    if (!(h >= integ_hmin(it)))
-        return -1;   /* below the smallest step (integ_hmin): measured in the motion's time, not
+    if (!(h >= integrator_hmin(it)))
+        return -1;   /* below the smallest step (integrator_hmin): measured in the motion's time, not
                         against the clock t (the compensated sum t + t_lo resolves the step) */
     /* compensated sums: dense[1] (unused by the output) carries the rounding of x and v */
     double *carry = it->dense[1];
     for (int i = 0; i < SYMP_STAGES; i++) {
         const double hi = G[i] * h;
-        v = integ_add_compensated(v, 0.5 * hi * a, &carry[1]);   /* kick */
-        x = integ_add_compensated(x, hi * v, &carry[0]);         /* drift */
-        a = integ_accel(it, x);
-        v = integ_add_compensated(v, 0.5 * hi * a, &carry[1]);   /* kick */
+        v = integrator_add_compensated(v, 0.5 * hi * a, &carry[1]);   /* kick */
+        x = integrator_add_compensated(x, hi * v, &carry[0]);         /* drift */
+        a = integrator_accel(it, x);
+        v = integrator_add_compensated(v, 0.5 * hi * a, &carry[1]);   /* kick */
     }
     if (!isfinite(x) || !isfinite(v))
         return -1;
@@ -98,17 +98,17 @@ int integ_symplectic_step(Integrator *it)
         /* near the separatrix: back onto the initial energy (integrator.c), f with it; the
          * rounding carried so far belongs to the point before the move */
         double trig[2];
-        if (integ_project(it, it->y, y1, f1, trig) == 1) {
+        if (integrator_project(it, it->y, y1, f1, trig) == 1) {
             carry[0] = carry[1] = 0.0;
         }
     }
     it->dense[0][0] = it->dense[0][1];   /* third derivative at the start / end of the step */
     it->dense[0][1] = jerk(it, x, v);
-    integ_accept(it, h, y1, f1);
+    integrator_accept(it, h, y1, f1);
     return 0;
 }
 
-void integ_symplectic_interp(const Integrator *it, double s, double y[2])
+void integrator_symplectic_interp(const Integrator *it, double s, double y[2])
 {
     /* p(s) = p0 + v0 s + a0 s^2/2 + j0 s^3/6 + c4 s^4 + c5 s^5 + c6 s^6 + c7 s^7 on
      * s = (t - t_prev)/h, with v, a, j the 1st, 2nd, 3rd derivatives times h, h^2, h^3,

@@ -5,7 +5,6 @@
  * refused with a reason. */
 #include <stddef.h>
 
-#include "fmu_state_calls.h"
 #include "host2.h"
 #include "split.h"
 
@@ -26,9 +25,54 @@ static int setup(Instance *inst, const char *name, fmi2Type fmuType, int logging
     return split_setup((SplitInstance *)inst, name, 2, logging_on);
 }
 
-DEFINE_FMI2_INSTANTIATE(Split2, SPLIT_MODEL_NAME, refusal, setup)
+fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2String fmuGUID,
+                              fmi2String fmuResourceLocation, const fmi2CallbackFunctions *functions,
+                              fmi2Boolean visible, fmi2Boolean loggingOn) {
+    (void)fmuResourceLocation, (void)visible; /* the models need no resources and show nothing */
+    return host2_instantiate(refusal(instanceName, fmuGUID, fmuType), SPLIT_MODEL_NAME, instanceName, fmuType,
+                             functions, loggingOn, sizeof(Split2), offsetof(Split2, callbacks), setup);
+}
 
-DEFINE_FMI2_PASSING_CALLS(split_exit_initialization, split_reset, split_get_reals, split_set_reals)
+const char *fmi2GetTypesPlatform(void) {
+    return fmi2TypesPlatform;
+}
+
+const char *fmi2GetVersion(void) {
+    return fmi2Version;
+}
+
+void fmi2FreeInstance(fmi2Component c) {
+    host2_free(c);
+}
+
+fmi2Status fmi2SetDebugLogging(fmi2Component c, fmi2Boolean loggingOn, size_t nCategories,
+                               const fmi2String categories[]) {
+    return (fmi2Status)instance_set_debug_logging(c, "fmi2SetDebugLogging", loggingOn, nCategories, categories);
+}
+
+fmi2Status fmi2EnterInitializationMode(fmi2Component c) {
+    return (fmi2Status)instance_enter_initialization(c, "fmi2EnterInitializationMode");
+}
+
+fmi2Status fmi2ExitInitializationMode(fmi2Component c) {
+    return (fmi2Status)split_exit_initialization(c, "fmi2ExitInitializationMode");
+}
+
+fmi2Status fmi2Terminate(fmi2Component c) {
+    return (fmi2Status)instance_terminate(c, "fmi2Terminate");
+}
+
+fmi2Status fmi2Reset(fmi2Component c) {
+    return (fmi2Status)split_reset(c, "fmi2Reset");
+}
+
+fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2Real value[]) {
+    return (fmi2Status)split_get_reals(c, "fmi2GetReal", vr, nvr, value);
+}
+
+fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const fmi2Real value[]) {
+    return (fmi2Status)split_set_reals(c, "fmi2SetReal", vr, nvr, value);
+}
 
 fmi2Status fmi2SetupExperiment(fmi2Component c, fmi2Boolean toleranceDefined, fmi2Real tolerance,
                                fmi2Real startTime, fmi2Boolean stopTimeDefined, fmi2Real stopTime) {
@@ -37,15 +81,59 @@ fmi2Status fmi2SetupExperiment(fmi2Component c, fmi2Boolean toleranceDefined, fm
                                                  startTime, stopTimeDefined, stopTime);
 }
 
+
 /* FMU states (canGetAndSetFMUstate, canSerializeFMUstate): ModelData and the input polynomial
  * (split.c), through the shared instance/state.c as Pendulum.fmu's. */
-DEFINE_FMU_STATE_CALLS(fmi2Status, fmi2Component, fmi2FMUstate, fmi2Byte, fmi2GetFMUstate, fmi2SetFMUstate,
-                       fmi2FreeFMUstate, fmi2SerializedFMUstateSize, fmi2SerializeFMUstate, fmi2DeSerializeFMUstate)
+fmi2Status fmi2GetFMUstate(fmi2Component c, fmi2FMUstate *state) {
+    return (fmi2Status)instance_get_state(c, "fmi2GetFMUstate", state);
+}
 
-/* No Integer, Boolean or String variables. */
-DEFINE_FMI2_NO_VARIABLES_OF_TYPE(Integer, fmi2Integer)
-DEFINE_FMI2_NO_VARIABLES_OF_TYPE(Boolean, fmi2Boolean)
-DEFINE_FMI2_NO_VARIABLES_OF_TYPE(String, fmi2String)
+fmi2Status fmi2SetFMUstate(fmi2Component c, fmi2FMUstate state) {
+    return (fmi2Status)instance_set_state(c, "fmi2SetFMUstate", state);
+}
+
+fmi2Status fmi2FreeFMUstate(fmi2Component c, fmi2FMUstate *state) {
+    return (fmi2Status)instance_free_state(c, "fmi2FreeFMUstate", state);
+}
+
+fmi2Status fmi2SerializedFMUstateSize(fmi2Component c, fmi2FMUstate state, size_t *size) {
+    return (fmi2Status)instance_serialized_state_size(c, "fmi2SerializedFMUstateSize", state, size);
+}
+
+fmi2Status fmi2SerializeFMUstate(fmi2Component c, fmi2FMUstate state, fmi2Byte serializedState[], size_t size) {
+    return (fmi2Status)instance_serialize_state(c, "fmi2SerializeFMUstate", state, (char *)serializedState, size);
+}
+
+fmi2Status fmi2DeSerializeFMUstate(fmi2Component c, const fmi2Byte serializedState[], size_t size,
+                                   fmi2FMUstate *state) {
+    return (fmi2Status)instance_deserialize_state(c, "fmi2DeSerializeFMUstate", (const char *)serializedState, size,
+                                                  state);
+}
+
+/* No Integer, Boolean or String variables: any value reference is unknown. */
+fmi2Status fmi2GetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2Integer value[]) {
+    return (fmi2Status)instance_no_variables(c, "fmi2GetInteger", CALL_GET_VARIABLES, vr, nvr, value);
+}
+
+fmi2Status fmi2SetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const fmi2Integer value[]) {
+    return (fmi2Status)instance_no_variables(c, "fmi2SetInteger", CALL_SET_VARIABLES, vr, nvr, value);
+}
+
+fmi2Status fmi2GetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2Boolean value[]) {
+    return (fmi2Status)instance_no_variables(c, "fmi2GetBoolean", CALL_GET_VARIABLES, vr, nvr, value);
+}
+
+fmi2Status fmi2SetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const fmi2Boolean value[]) {
+    return (fmi2Status)instance_no_variables(c, "fmi2SetBoolean", CALL_SET_VARIABLES, vr, nvr, value);
+}
+
+fmi2Status fmi2GetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2String value[]) {
+    return (fmi2Status)instance_no_variables(c, "fmi2GetString", CALL_GET_VARIABLES, vr, nvr, value);
+}
+
+fmi2Status fmi2SetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const fmi2String value[]) {
+    return (fmi2Status)instance_no_variables(c, "fmi2SetString", CALL_SET_VARIABLES, vr, nvr, value);
+}
 
 fmi2Status fmi2GetDirectionalDerivative(fmi2Component c, const fmi2ValueReference vUnknown_ref[], size_t nUnknown,
                                         const fmi2ValueReference vKnown_ref[], size_t nKnown,
@@ -77,11 +165,9 @@ fmi2Status fmi2CancelStep(fmi2Component c) {
     return (fmi2Status)split_not_provided(c, "fmi2CancelStep", "fmi2DoStep never returns fmi2Pending: nothing to cancel");
 }
 
-#define STATUS_MODES (MODE_STEP_COMPLETE | MODE_TERMINATED | MODE_ERROR)
-
 /* 4.2.3: a status kind the FMU does not provide is answered with fmi2Discard. */
 static fmi2Status status_call(fmi2Component c, const char *function, const void *value) {
-    if (!instance_allowed(c, function, STATUS_MODES)) {
+    if (!instance_call_allowed(c, function, CALL_GET_STATUS)) {
         return fmi2Error;
     }
     if (value == NULL) {
@@ -95,21 +181,38 @@ static fmi2Status not_provided(fmi2Component c, const char *function, fmi2Status
     return fmi2Discard;
 }
 
-/* A status call that provides one status kind, `provided`, whose value is `answer`. */
-#define STATUS_CALL(Name, Type, provided, answer)                                 \
-    fmi2Status fmi2Get##Name(fmi2Component c, const fmi2StatusKind s, Type *value) { \
-        fmi2Status status = status_call(c, "fmi2Get" #Name, value);               \
-        if (status == fmi2OK && s != provided) {                                  \
-            return not_provided(c, "fmi2Get" #Name, s);                           \
-        }                                                                         \
-        if (status == fmi2OK) {                                                   \
-            *value = answer;                                                      \
-        }                                                                         \
-        return status;                                                            \
+fmi2Status fmi2GetStatus(fmi2Component c, const fmi2StatusKind s, fmi2Status *value) {
+    fmi2Status status = status_call(c, "fmi2GetStatus", value);
+    if (status == fmi2OK && s != fmi2DoStepStatus) {
+        return not_provided(c, "fmi2GetStatus", s);
     }
-STATUS_CALL(Status, fmi2Status, fmi2DoStepStatus, ((Instance *)c)->data.mode == MODE_ERROR ? fmi2Error : fmi2OK)
-STATUS_CALL(RealStatus, fmi2Real, fmi2LastSuccessfulTime, ((Instance *)c)->data.time)
-STATUS_CALL(BooleanStatus, fmi2Boolean, fmi2Terminated, fmi2False)
+    if (status == fmi2OK) {
+        *value = ((Instance *)c)->data.mode == MODE_ERROR ? fmi2Error : fmi2OK;
+    }
+    return status;
+}
+
+fmi2Status fmi2GetRealStatus(fmi2Component c, const fmi2StatusKind s, fmi2Real *value) {
+    fmi2Status status = status_call(c, "fmi2GetRealStatus", value);
+    if (status == fmi2OK && s != fmi2LastSuccessfulTime) {
+        return not_provided(c, "fmi2GetRealStatus", s);
+    }
+    if (status == fmi2OK) {
+        *value = ((Instance *)c)->data.time;
+    }
+    return status;
+}
+
+fmi2Status fmi2GetBooleanStatus(fmi2Component c, const fmi2StatusKind s, fmi2Boolean *value) {
+    fmi2Status status = status_call(c, "fmi2GetBooleanStatus", value);
+    if (status == fmi2OK && s != fmi2Terminated) {
+        return not_provided(c, "fmi2GetBooleanStatus", s);
+    }
+    if (status == fmi2OK) {
+        *value = fmi2False;
+    }
+    return status;
+}
 
 fmi2Status fmi2GetIntegerStatus(fmi2Component c, const fmi2StatusKind s, fmi2Integer *value) {
     fmi2Status status = status_call(c, "fmi2GetIntegerStatus", value);

@@ -11,7 +11,6 @@
  * input is held over every FMI 3.0 step. Output derivatives are fmi3GetOutputDerivatives's. */
 #include <stddef.h>
 
-#include "fmu_state_calls.h"
 #include "layer.h"
 #include "split.h"
 
@@ -38,10 +37,72 @@ fmi3Instance fmi3_instantiate(const char *function, fmi3String instanceName, fmi
                              loggingOn, environment, logMessage, function);
 }
 
-DEFINE_FMI3_INSTANTIATE_CO_SIMULATION
+fmi3Instance fmi3InstantiateCoSimulation(fmi3String instanceName, fmi3String instantiationToken,
+                                         fmi3String resourcePath, fmi3Boolean visible, fmi3Boolean loggingOn,
+                                         fmi3Boolean eventModeUsed, fmi3Boolean earlyReturnAllowed,
+                                         const fmi3ValueReference requiredIntermediateVariables[],
+                                         size_t nRequiredIntermediateVariables,
+                                         fmi3InstanceEnvironment instanceEnvironment,
+                                         fmi3LogMessageCallback logMessage,
+                                         fmi3IntermediateUpdateCallback intermediateUpdate) {
+    (void)resourcePath, (void)visible, (void)earlyReturnAllowed, (void)requiredIntermediateVariables;
+    (void)intermediateUpdate; /* providesIntermediateUpdate="false": never called */
+    return fmi3_instantiate_co_simulation(instanceName, instantiationToken, loggingOn, eventModeUsed,
+                                          nRequiredIntermediateVariables, instanceEnvironment, logMessage);
+}
 
-DEFINE_FMI3_PASSING_CALLS(split_exit_initialization, split_reset, split_get_reals, split_set_reals,
-                          "the FMU has Co-Simulation only")
+const char *fmi3GetVersion(void) {
+    return fmi3Version;
+}
+
+fmi3Instance fmi3InstantiateScheduledExecution(fmi3String instanceName, fmi3String instantiationToken,
+                                               fmi3String resourcePath, fmi3Boolean visible, fmi3Boolean loggingOn,
+                                               fmi3InstanceEnvironment instanceEnvironment,
+                                               fmi3LogMessageCallback logMessage, fmi3ClockUpdateCallback clockUpdate,
+                                               fmi3LockPreemptionCallback lockPreemption,
+                                               fmi3UnlockPreemptionCallback unlockPreemption) {
+    (void)instanceName, (void)instantiationToken, (void)resourcePath, (void)visible, (void)loggingOn;
+    (void)clockUpdate, (void)lockPreemption, (void)unlockPreemption;
+    fmi3_refuse(instanceEnvironment, logMessage, "fmi3InstantiateScheduledExecution", "the FMU has Co-Simulation only");
+    return NULL;
+}
+
+void fmi3FreeInstance(fmi3Instance instance) {
+    fmi3_free_instance(instance);
+}
+
+fmi3Status fmi3SetDebugLogging(fmi3Instance instance, fmi3Boolean loggingOn, size_t nCategories,
+                               const fmi3String categories[]) {
+    return (fmi3Status)instance_set_debug_logging(instance, "fmi3SetDebugLogging", loggingOn, nCategories, categories);
+}
+
+fmi3Status fmi3ExitInitializationMode(fmi3Instance instance) {
+    return (fmi3Status)split_exit_initialization(instance, "fmi3ExitInitializationMode");
+}
+
+fmi3Status fmi3Terminate(fmi3Instance instance) {
+    return (fmi3Status)instance_terminate(instance, "fmi3Terminate");
+}
+
+fmi3Status fmi3Reset(fmi3Instance instance) {
+    return (fmi3Status)split_reset(instance, "fmi3Reset");
+}
+
+fmi3Status fmi3GetFloat64(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr, fmi3Float64 values[],
+                          size_t nValues) {
+    if (!fmi3_scalar_counts(instance, "fmi3GetFloat64", nvr, nValues)) {
+        return fmi3Error;
+    }
+    return (fmi3Status)split_get_reals(instance, "fmi3GetFloat64", vr, nvr, values);
+}
+
+fmi3Status fmi3SetFloat64(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr, const fmi3Float64 values[],
+                          size_t nValues) {
+    if (!fmi3_scalar_counts(instance, "fmi3SetFloat64", nvr, nValues)) {
+        return fmi3Error;
+    }
+    return (fmi3Status)split_set_reals(instance, "fmi3SetFloat64", vr, nvr, values);
+}
 
 fmi3Status fmi3EnterInitializationMode(fmi3Instance instance, fmi3Boolean toleranceDefined, fmi3Float64 tolerance,
                                        fmi3Float64 startTime, fmi3Boolean stopTimeDefined, fmi3Float64 stopTime) {
@@ -50,14 +111,60 @@ fmi3Status fmi3EnterInitializationMode(fmi3Instance instance, fmi3Boolean tolera
                                                           tolerance, startTime, stopTimeDefined, stopTime);
 }
 
-/* No Integer variables either. */
-DEFINE_FMI3_ABSENT_TYPES
-DEFINE_FMI3_NO_VARIABLES_OF_TYPE(Int32, fmi3Int32)
-DEFINE_FMI3_NO_VARIABLES_OF_TYPE(Int64, fmi3Int64)
+/* No Integer variables either (the other types: fmi3/absent.c): any value reference is unknown. */
+fmi3Status fmi3GetInt32(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr, fmi3Int32 values[],
+                        size_t nValues) {
+    (void)nValues;
+    return (fmi3Status)instance_no_variables(instance, "fmi3GetInt32", CALL_GET_VARIABLES, vr, nvr, values);
+}
+
+fmi3Status fmi3SetInt32(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr, const fmi3Int32 values[],
+                        size_t nValues) {
+    (void)nValues;
+    return (fmi3Status)instance_no_variables(instance, "fmi3SetInt32", CALL_SET_VARIABLES, vr, nvr, values);
+}
+
+fmi3Status fmi3GetInt64(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr, fmi3Int64 values[],
+                        size_t nValues) {
+    (void)nValues;
+    return (fmi3Status)instance_no_variables(instance, "fmi3GetInt64", CALL_GET_VARIABLES, vr, nvr, values);
+}
+
+fmi3Status fmi3SetInt64(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr, const fmi3Int64 values[],
+                        size_t nValues) {
+    (void)nValues;
+    return (fmi3Status)instance_no_variables(instance, "fmi3SetInt64", CALL_SET_VARIABLES, vr, nvr, values);
+}
+
 
 /* FMU states (canGetAndSetFMUState, canSerializeFMUState), as the FMI 2.0 layer's. */
-DEFINE_FMU_STATE_CALLS(fmi3Status, fmi3Instance, fmi3FMUState, fmi3Byte, fmi3GetFMUState, fmi3SetFMUState,
-                       fmi3FreeFMUState, fmi3SerializedFMUStateSize, fmi3SerializeFMUState, fmi3DeserializeFMUState)
+fmi3Status fmi3GetFMUState(fmi3Instance instance, fmi3FMUState *state) {
+    return (fmi3Status)instance_get_state(instance, "fmi3GetFMUState", state);
+}
+
+fmi3Status fmi3SetFMUState(fmi3Instance instance, fmi3FMUState state) {
+    return (fmi3Status)instance_set_state(instance, "fmi3SetFMUState", state);
+}
+
+fmi3Status fmi3FreeFMUState(fmi3Instance instance, fmi3FMUState *state) {
+    return (fmi3Status)instance_free_state(instance, "fmi3FreeFMUState", state);
+}
+
+fmi3Status fmi3SerializedFMUStateSize(fmi3Instance instance, fmi3FMUState state, size_t *size) {
+    return (fmi3Status)instance_serialized_state_size(instance, "fmi3SerializedFMUStateSize", state, size);
+}
+
+fmi3Status fmi3SerializeFMUState(fmi3Instance instance, fmi3FMUState state, fmi3Byte serializedState[],
+                                 size_t size) {
+    return (fmi3Status)instance_serialize_state(instance, "fmi3SerializeFMUState", state, (char *)serializedState,
+                                                size);
+}
+
+fmi3Status fmi3DeserializeFMUState(fmi3Instance instance, const fmi3Byte serializedState[], size_t size,
+                                   fmi3FMUState *state) {
+    return (fmi3Status)instance_deserialize_state(instance, "fmi3DeserializeFMUState", (const char *)serializedState,
+                                                  size, state);
+}
 
 fmi3Status fmi3GetDirectionalDerivative(fmi3Instance instance, const fmi3ValueReference unknowns[], size_t nUnknowns,
                                         const fmi3ValueReference knowns[], size_t nKnowns, const fmi3Float64 seed[],
@@ -94,4 +201,17 @@ fmi3Status fmi3GetOutputDerivatives(fmi3Instance instance, const fmi3ValueRefere
                                                 nValueReferences, orders, values);
 }
 
-DEFINE_FMI3_DO_STEP(split_do_step)
+fmi3Status fmi3DoStep(fmi3Instance instance, fmi3Float64 currentCommunicationPoint,
+                      fmi3Float64 communicationStepSize, fmi3Boolean noSetFMUStatePriorToCurrentPoint,
+                      fmi3Boolean *eventHandlingNeeded, fmi3Boolean *terminateSimulation, fmi3Boolean *earlyReturn,
+                      fmi3Float64 *lastSuccessfulTime) {
+    Status status;
+    (void)noSetFMUStatePriorToCurrentPoint; /* a state is a copy: nothing kept for a rollback to free */
+    if (fmi3_step_outputs_missing(instance, eventHandlingNeeded, terminateSimulation, earlyReturn,
+                                  lastSuccessfulTime)) {
+        return fmi3Error;
+    }
+    status = split_do_step(instance, "fmi3DoStep", currentCommunicationPoint, communicationStepSize);
+    fmi3_step_outputs(instance, status, eventHandlingNeeded, terminateSimulation, earlyReturn, lastSuccessfulTime);
+    return (fmi3Status)status;
+}

@@ -8,7 +8,7 @@
 #include <string.h>
 
 /* The shared instance of a split instance: its first member, so NULL stays NULL (every
- * instance_allowed check refuses a NULL instance before anything is read). */
+ * instance_call_allowed check refuses a NULL instance before anything is read). */
 #define CORE(inst) ((Instance *)(inst))
 
 const char *split_refusal(const char *name, const char *token) {
@@ -94,7 +94,7 @@ Status split_reset(SplitInstance *inst, const char *function) {
 
 Status split_exit_initialization(SplitInstance *inst, const char *function) {
     const char *problem;
-    if (!instance_allowed(CORE(inst), function, MODE_INITIALIZATION)) {
+    if (!instance_call_allowed(CORE(inst), function, CALL_EXIT_INITIALIZATION)) {
         return STATUS_ERROR;
     }
     model_exact_forget(&inst->core.exact_now);
@@ -113,7 +113,7 @@ static const char *name_of(const SplitInstance *inst, ValueReference vr) {
 Status split_get_reals(SplitInstance *inst, const char *function, const ValueReference vr[], size_t nvr,
                        double value[]) {
     size_t i;
-    if (!instance_arrays_allowed(CORE(inst), function, GET_MODES, vr, nvr, value)) {
+    if (!instance_arrays_allowed(CORE(inst), function, CALL_GET_VARIABLES, vr, nvr, value)) {
         return STATUS_ERROR;
     }
     for (i = 0; i < nvr; i++) {
@@ -136,7 +136,7 @@ Status split_get_reals(SplitInstance *inst, const char *function, const ValueRef
 Status split_set_reals(SplitInstance *inst, const char *function, const ValueReference vr[], size_t nvr,
                        const double value[]) {
     size_t i;
-    if (!instance_arrays_allowed(CORE(inst), function, SET_MODES, vr, nvr, value)) {
+    if (!instance_arrays_allowed(CORE(inst), function, CALL_SET_VARIABLES, vr, nvr, value)) {
         return STATUS_ERROR;
     }
     model_exact_forget(&inst->core.exact_now); /* a parameter or a start value may change */
@@ -164,7 +164,7 @@ Status split_set_reals(SplitInstance *inst, const char *function, const ValueRef
 Status split_set_input_derivatives(SplitInstance *inst, const char *function, const ValueReference vr[], size_t nvr,
                                    const int order[], const double value[]) {
     size_t i;
-    if (!instance_allowed(CORE(inst), function, MODE_INITIALIZATION | MODE_STEP_COMPLETE)) {
+    if (!instance_call_allowed(CORE(inst), function, CALL_SET_INPUT_DERIVATIVES)) {
         return STATUS_ERROR;
     }
     if (nvr > 0 && (vr == NULL || order == NULL || value == NULL)) {
@@ -200,7 +200,7 @@ Status split_output_derivatives(SplitInstance *inst, const char *function, const
                                 const int order[], double value[]) {
     int max_order;
     size_t i;
-    if (!instance_allowed(CORE(inst), function, MODE_STEP_COMPLETE)) {
+    if (!instance_call_allowed(CORE(inst), function, CALL_GET_OUTPUT_DERIVATIVES)) {
         return STATUS_ERROR;
     }
     max_order = split_model_max_output_order(inst->core.fmi_version);
@@ -229,7 +229,7 @@ Status split_do_step(SplitInstance *inst, const char *function, double point, do
     ModelData *data;
     InputPolynomial *u;
     double t_end = 0.0, h, value, d1;
-    if (!instance_allowed(CORE(inst), function, MODE_STEP_COMPLETE)) {
+    if (!instance_call_allowed(CORE(inst), function, CALL_DO_STEP)) {
         return STATUS_ERROR;
     }
     data = &inst->core.data;
@@ -269,7 +269,7 @@ Status split_do_step(SplitInstance *inst, const char *function, double point, do
 }
 
 Status split_not_provided(SplitInstance *inst, const char *function, const char *reason) {
-    if (!instance_allowed(CORE(inst), function, ANY_MODE)) {
+    if (!instance_call_allowed(CORE(inst), function, CALL_NOT_PROVIDED)) {
         return STATUS_ERROR;
     }
     return instance_fail(CORE(inst), function, "%s", reason);

@@ -104,5 +104,4 @@ Status split_do_step(SplitInstance *inst, const char *function, double point, do
  * derivatives, ...), after the calling-sequence check. */
 Status split_not_provided(SplitInstance *inst, const char *function, const char *reason);
 
-
 #endif

@@ -32,8 +32,6 @@
 #include "core_host.h"
 #include "pendulum_vrs.h"
 
-static const char *const NAMES[] = {"?", "dopri5", "rk4", "rkn", "symplectic"};
-
 /* ---- a host for the instance: memory from calloc, a logger that keeps the warnings ---- */
 typedef struct {
     int warnings;
@@ -163,12 +161,12 @@ static void test_separatrix_grid(int print)
                     const Run r = run(&s, solver, tol, dt, 200, 0, NULL);
                     runs++;
                     beyond_runs += r.worst > 1.0;
-                    check(!r.failed, "grid c %g tol %g %s: a step failed", c, tol, NAMES[solver]);
+                    check(!r.failed, "grid c %g tol %g %s: a step failed", c, tol, integrator_solver_name(solver));
                     check(r.ok_beyond == 0, "grid c %g tol %g %s: %d steps OK beyond the bound", c, tol,
-                          NAMES[solver], r.ok_beyond);
-                    check(r.warn_within == 0, "grid c %g tol %g %s: warned within the bound", c, tol, NAMES[solver]);
+                          integrator_solver_name(solver), r.ok_beyond);
+                    check(r.warn_within == 0, "grid c %g tol %g %s: warned within the bound", c, tol, integrator_solver_name(solver));
                     check(!reach || r.warned == 0, "grid c %g tol %g %s: warned (departure %.3g) where "
-                          "certificate_reachable says a solver can hold the bound", c, tol, NAMES[solver], r.worst);
+                          "certificate_reachable says a solver can hold the bound", c, tol, integrator_solver_name(solver), r.worst);
                     if (print) {
                         printf(" %11.3g%s", r.worst, r.warned ? "*" : (reach ? " " : "-"));
                     }
@@ -201,9 +199,9 @@ static void test_bit_identical_on_off(void)
             const Run b = run(&starts[i], solver, tol, dt, 120, 1, off);
             check(!a.failed && !b.failed, "on/off: a run failed");
             check(memcmp(on, off, sizeof on) == 0 && a.steps == b.steps && a.rhs == b.rhs,
-                  "start %zu %s: the numbers differ with the certificate off", i, NAMES[solver]);
+                  "start %zu %s: the numbers differ with the certificate off", i, integrator_solver_name(solver));
             check(b.log.warnings <= 1 && b.warned <= 1, "start %zu %s: the certificate warned while off", i,
-                  NAMES[solver]);
+                  integrator_solver_name(solver));
             compared++;
             with_warnings += a.warned > 0;
         }
@@ -382,9 +380,9 @@ static void test_random_states(void)
             warned_runs += r.warned > 0;
             unreachable_runs += !reach;
             check(!r.failed && r.ok_beyond == 0, "random %d %s: failed or %d steps OK beyond the bound", k,
-                  NAMES[solver], r.ok_beyond);
+                  integrator_solver_name(solver), r.ok_beyond);
             check(!reach || r.warned == 0, "random %d (theta0 %.17g, omega0 %.17g, L %.17g, g %.17g) %s tol %g: "
-                  "warned (departure %.3g) within the solver's reach", k, theta0, omega0, L, g, NAMES[solver], tol,
+                  "warned (departure %.3g) within the solver's reach", k, theta0, omega0, L, g, integrator_solver_name(solver), tol,
                   r.worst);
         }
     }

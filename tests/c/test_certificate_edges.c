@@ -24,8 +24,6 @@
 #include "instance.h"
 #include "pendulum_vrs.h"
 
-static const char *const NAMES[] = {"?", "dopri5", "rk4", "rkn", "symplectic"};
-
 static char last_error[1024];
 
 static void host_log(const Instance *inst, Status status, const char *category, const char *message)
@@ -107,22 +105,22 @@ static void compare_start_times(const char *name, const Start *s, double tol, do
     for (int solver = 1; solver <= 4; solver++) {
         const Run a = run(s, solver, tol, t0, far, n);
         const Run b = run(s, solver, tol, 0.0, near, n);
-        check(a.worst == STATUS_OK, "%s, %s from t0 = %.17g: status %d (%s)", name, NAMES[solver], t0, (int)a.worst,
+        check(a.worst == STATUS_OK, "%s, %s from t0 = %.17g: status %d (%s)", name, integrator_solver_name(solver), t0, (int)a.worst,
               last_error);
-        check(b.worst == STATUS_OK, "%s, %s from 0: status %d", name, NAMES[solver], (int)b.worst);
+        check(b.worst == STATUS_OK, "%s, %s from 0: status %d", name, integrator_solver_name(solver), (int)b.worst);
         check(same_stats(a.stats, b.stats), "%s, %s: from t0 = %.17g %ld steps, %ld rejected, %ld rhs; from 0 %ld, "
-              "%ld, %ld", name, NAMES[solver], t0, a.stats.steps, a.stats.rejected, a.stats.rhs_evals, b.stats.steps,
+              "%ld, %ld", name, integrator_solver_name(solver), t0, a.stats.steps, a.stats.rejected, a.stats.rhs_evals, b.stats.steps,
               b.stats.rejected, b.stats.rhs_evals);
         check(a.departure <= 1.0 && b.departure <= 1.0, "%s, %s: departures %.3g and %.3g of 100 tol", name,
-              NAMES[solver], a.departure, b.departure);
+              integrator_solver_name(solver), a.departure, b.departure);
         /* the same steps, interpolated at the same elapsed time up to the rounding of the
          * clock's low part: equal to far below the bound */
         const double w0 = sqrt(s->g / s->L);
         check(fabs(a.theta - b.theta) <= 1e-3 * 100.0 * tol * fmax(1.0, fabs(b.theta)) &&
               fabs(a.omega - b.omega) <= 1e-3 * 100.0 * tol * fmax(w0, fabs(b.omega)),
-              "%s, %s: theta %.17g against %.17g from 0", name, NAMES[solver], a.theta, b.theta);
+              "%s, %s: theta %.17g against %.17g from 0", name, integrator_solver_name(solver), a.theta, b.theta);
         printf("%-28s %-10s t0 = %-22.17g %6ld steps %4ld rejected %7ld rhs (same from 0), departure %.3g / %.3g\n",
-               name, NAMES[solver], t0, a.stats.steps, a.stats.rejected, a.stats.rhs_evals, a.departure, b.departure);
+               name, integrator_solver_name(solver), t0, a.stats.steps, a.stats.rejected, a.stats.rhs_evals, a.departure, b.departure);
     }
 }
 
@@ -153,10 +151,10 @@ static void test_tolerance_floor(void)
         for (int solver = 1; solver <= 4; solver++) {
             char want[64];
             check(setup(&inst, &s, solver, refused[i], 0.0) != 0, "tolerance %g with %s accepted", refused[i],
-                  NAMES[solver]);
+                  integrator_solver_name(solver));
             snprintf(want, sizeof want, "tolerance %g is below %g", refused[i], INTEGRATOR_TOLERANCE_FLOOR);
             check(strstr(last_error, want) != NULL && strstr(last_error, "start values") == NULL,
-                  "tolerance %g with %s: message \"%s\"", refused[i], NAMES[solver], last_error);
+                  "tolerance %g with %s: message \"%s\"", refused[i], integrator_solver_name(solver), last_error);
         }
     }
     printf("refused: \"%s\"\n", last_error);
@@ -169,7 +167,7 @@ static void test_tolerance_floor(void)
         const double end = 0.37;
         const Run r = run(&s, solver, INTEGRATOR_TOLERANCE_FLOOR, 0.0, &end, 1);
         check(r.worst == STATUS_OK || r.worst == STATUS_WARNING, "the floor itself with %s: status %d (%s)",
-              NAMES[solver], (int)r.worst, last_error);
+              integrator_solver_name(solver), (int)r.worst, last_error);
     }
     /* Model Exchange integrates nothing: the experiment's tolerance is only recorded */
     instantiate(&inst, INTERFACE_MODEL_EXCHANGE);

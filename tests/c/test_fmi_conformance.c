@@ -1,26 +1,14 @@
-/* test_fmi_conformance.c: two conformance points of the FMI 2.0 library found by independent
- * importers (issue 21, item 6), tested as an importer meets them:
- *  - with loggingOn, every call logs exactly one logCalls message (a layer that checks the
- *    mode twice logs twice);
- *  - fmi2FreeFMUstate frees only a live state of this instance: the state itself passed
- *    instead of its address (as Reference-FMUs' fmusim once did), another instance's state, a
- *    state freed already, and an overwrite target that is none of its states are refused with
- *    fmi2Error and a message naming the pointer, and never freed or written (ASan and valgrind
- *    see a double free or a stray write). States left live are freed with the instance. */
+/* test_fmi_conformance.c: the FMI conformance cases of conformance_cases.h against the FMI 2.0
+ * library: the adapter from the cases' calls to the fmi2 functions. */
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "check.h"
+#include "conformance_cases.h"
 #include "fmi2_api.h"
 #include "pendulum_vrs.h"
-
-typedef struct {
-    int calls;        /* logCalls messages since the last reset */
-    char last_call[600];
-    char last_error[600];
-} Log;
 
 static void logger(fmi2ComponentEnvironment env, fmi2String instance_name, fmi2Status status, fmi2String category,
                    fmi2String message, ...) {
@@ -39,143 +27,231 @@ static void logger(fmi2ComponentEnvironment env, fmi2String instance_name, fmi2S
     }
 }
 
-static fmi2Component instance(fmi2Type type, const fmi2CallbackFunctions *callbacks, int logging) {
-    return fmi2Instantiate("conformance", type, PENDULUM_GUID, NULL, callbacks, fmi2False, logging ? fmi2True : fmi2False);
+static void *instantiate(Log *log, int co_simulation, int logging_on) {
+    /* the instance keeps a copy of the callbacks (FMI 2.0 2.1.5) */
+    fmi2CallbackFunctions callbacks = {logger, calloc, free, NULL, NULL};
+    callbacks.componentEnvironment = log;
+    return fmi2Instantiate("conformance", co_simulation ? fmi2CoSimulation : fmi2ModelExchange, PENDULUM_GUID, NULL,
+                           &callbacks, fmi2False, logging_on ? fmi2True : fmi2False);
 }
 
-/* The call `status` logged exactly one logCalls message, naming `function`, and returned OK. */
-static void once(Log *log, fmi2Status status, const char *function) {
-    check(status == fmi2OK, "%s returned %d", function, (int)status);
-    check(log->calls == 1 && strcmp(log->last_call, function) == 0, "%s logged %d logCalls messages (last \"%s\")",
-          function, log->calls, log->last_call);
-    log->calls = 0;
+static void free_instance(void *c) {
+    fmi2FreeInstance(c);
 }
 
-static void test_each_call_is_logged_once(void) {
-    Log log = {0, "", ""};
-    const fmi2CallbackFunctions callbacks = {logger, calloc, free, NULL, &log};
-    fmi2Component cs = instance(fmi2CoSimulation, &callbacks, 1), me = instance(fmi2ModelExchange, &callbacks, 1);
-    const fmi2ValueReference reals[2] = {VR_THETA, VR_OMEGA}, solver = VR_SOLVER, exact = VR_THETA_EXACT;
-    const fmi2ValueReference vr_period = VR_PERIOD, vr_theta = VR_THETA;
-    fmi2Real values[2] = {1.0, 0.5}, derivative = 0.0, seed = 1.0, x[2] = {0.2, 0.1};
-    fmi2Integer integer = 0, order = 1;
-    fmi2FMUstate state = NULL, restored = NULL;
-    fmi2Byte blob[4096];
-    size_t size = 0;
-    fmi2Status kind_status;
+static const fmi2ValueReference REALS[2] = {VR_THETA, VR_OMEGA}, SOLVER = VR_SOLVER, STEPS = VR_STATS_STEPS;
+static const fmi2ValueReference EXACT = VR_THETA_EXACT, PERIOD = VR_PERIOD, THETA = VR_THETA;
+static const fmi2Real X[2] = {0.2, 0.1};
+
+static int setup_experiment(Fixture *f) {
+    return fmi2SetupExperiment(f->c, f->tolerance_defined ? fmi2True : fmi2False, f->tolerance_defined ? 1e-8 : 0.0,
+                               0.0, fmi2False, 0.0);
+}
+
+static int enter_initialization(Fixture *f) {
+    return fmi2EnterInitializationMode(f->c);
+}
+
+static int exit_initialization(Fixture *f) {
+    return fmi2ExitInitializationMode(f->c);
+}
+
+static int set_reals(Fixture *f) {
+    const fmi2Real values[2] = {1.0, 0.5};
+    return fmi2SetReal(f->c, REALS, 2, values);
+}
+
+static int get_reals(Fixture *f) {
+    fmi2Real values[2];
+    return fmi2GetReal(f->c, REALS, 2, values);
+}
+
+static int get_solver(Fixture *f) {
+    fmi2Integer value = 0;
+    const fmi2Status status = fmi2GetInteger(f->c, &SOLVER, 1, &value);
+    f->solver = value;
+    return status;
+}
+
+static int set_solver(Fixture *f) {
+    const fmi2Integer value = (fmi2Integer)f->solver;
+    return fmi2SetInteger(f->c, &SOLVER, 1, &value);
+}
+
+static int get_statistic(Fixture *f) {
+    fmi2Integer steps = 0;
+    return fmi2GetInteger(f->c, &STEPS, 1, &steps);
+}
+
+static int directional(Fixture *f) {
+    const fmi2Real seed = 1.0;
+    fmi2Real derivative = 0.0;
+    return fmi2GetDirectionalDerivative(f->c, &PERIOD, 1, &THETA, 1, &seed, &derivative);
+}
+
+static int do_step(Fixture *f) {
+    return fmi2DoStep(f->c, 0.0, 0.1, fmi2True);
+}
+
+static int output_derivative(Fixture *f) {
+    const fmi2Integer order = 1;
+    fmi2Real derivative = 0.0;
+    return fmi2GetRealOutputDerivatives(f->c, &EXACT, 1, &order, &derivative);
+}
+
+static int get_status(Fixture *f) {
+    fmi2Status value;
+    return fmi2GetStatus(f->c, fmi2DoStepStatus, &value);
+}
+
+static int get_state(Fixture *f) {
+    return fmi2GetFMUstate(f->c, &f->state);
+}
+
+static int set_state(Fixture *f) {
+    return fmi2SetFMUstate(f->c, f->state);
+}
+
+static int state_size(Fixture *f) {
+    return fmi2SerializedFMUstateSize(f->c, f->state, &f->size);
+}
+
+static int serialize(Fixture *f) {
+    return fmi2SerializeFMUstate(f->c, f->state, (fmi2Byte *)f->blob, f->size);
+}
+
+static int deserialize(Fixture *f) {
+    return fmi2DeSerializeFMUstate(f->c, (const fmi2Byte *)f->blob, f->size, &f->restored);
+}
+
+static int free_restored(Fixture *f) {
+    return fmi2FreeFMUstate(f->c, &f->restored);
+}
+
+static int free_state(Fixture *f) {
+    return fmi2FreeFMUstate(f->c, &f->state);
+}
+
+static int terminate(Fixture *f) {
+    return fmi2Terminate(f->c);
+}
+
+static int reset(Fixture *f) {
+    return fmi2Reset(f->c);
+}
+
+static int new_discrete_states(Fixture *f) {
     fmi2EventInfo info;
-    fmi2Boolean enter = fmi2False, terminate = fmi2False;
-    check(cs != NULL && me != NULL, "instantiated");
-    log.calls = 0;
-    once(&log, fmi2SetupExperiment(cs, fmi2True, 1e-8, 0.0, fmi2False, 0.0), "fmi2SetupExperiment");
-    once(&log, fmi2EnterInitializationMode(cs), "fmi2EnterInitializationMode");
-    once(&log, fmi2SetReal(cs, reals, 2, values), "fmi2SetReal");
-    once(&log, fmi2GetReal(cs, reals, 2, values), "fmi2GetReal");
-    once(&log, fmi2GetInteger(cs, &solver, 1, &integer), "fmi2GetInteger");
-    once(&log, fmi2SetInteger(cs, &solver, 1, &integer), "fmi2SetInteger");
-    once(&log, fmi2GetDirectionalDerivative(cs, &vr_period, 1, &vr_theta, 1, &seed, &derivative),
-         "fmi2GetDirectionalDerivative");
-    once(&log, fmi2ExitInitializationMode(cs), "fmi2ExitInitializationMode");
-    once(&log, fmi2DoStep(cs, 0.0, 0.1, fmi2True), "fmi2DoStep");
-    once(&log, fmi2GetRealOutputDerivatives(cs, &exact, 1, &order, &derivative), "fmi2GetRealOutputDerivatives");
-    once(&log, fmi2GetStatus(cs, fmi2DoStepStatus, &kind_status), "fmi2GetStatus");
-    once(&log, fmi2GetFMUstate(cs, &state), "fmi2GetFMUstate");
-    once(&log, fmi2SetFMUstate(cs, state), "fmi2SetFMUstate");
-    once(&log, fmi2SerializedFMUstateSize(cs, state, &size), "fmi2SerializedFMUstateSize");
-    check(size <= sizeof blob, "serialized size %zu fits the test's buffer", size);
-    once(&log, fmi2SerializeFMUstate(cs, state, blob, size), "fmi2SerializeFMUstate");
-    once(&log, fmi2DeSerializeFMUstate(cs, blob, size, &restored), "fmi2DeSerializeFMUstate");
-    once(&log, fmi2FreeFMUstate(cs, &restored), "fmi2FreeFMUstate");
-    once(&log, fmi2FreeFMUstate(cs, &state), "fmi2FreeFMUstate");
-    once(&log, fmi2Terminate(cs), "fmi2Terminate");
-    once(&log, fmi2Reset(cs), "fmi2Reset");
-
-    once(&log, fmi2SetupExperiment(me, fmi2False, 0.0, 0.0, fmi2False, 0.0), "fmi2SetupExperiment");
-    once(&log, fmi2EnterInitializationMode(me), "fmi2EnterInitializationMode");
-    once(&log, fmi2ExitInitializationMode(me), "fmi2ExitInitializationMode");
-    once(&log, fmi2NewDiscreteStates(me, &info), "fmi2NewDiscreteStates");
-    once(&log, fmi2EnterContinuousTimeMode(me), "fmi2EnterContinuousTimeMode");
-    once(&log, fmi2SetTime(me, 0.1), "fmi2SetTime");
-    once(&log, fmi2SetContinuousStates(me, x, 2), "fmi2SetContinuousStates");
-    once(&log, fmi2GetDerivatives(me, values, 2), "fmi2GetDerivatives");
-    once(&log, fmi2GetContinuousStates(me, values, 2), "fmi2GetContinuousStates");
-    once(&log, fmi2GetNominalsOfContinuousStates(me, values, 2), "fmi2GetNominalsOfContinuousStates");
-    once(&log, fmi2GetEventIndicators(me, values, 0), "fmi2GetEventIndicators");
-    once(&log, fmi2CompletedIntegratorStep(me, fmi2True, &enter, &terminate), "fmi2CompletedIntegratorStep");
-    once(&log, fmi2EnterEventMode(me), "fmi2EnterEventMode");
-    fmi2FreeInstance(cs);
-    fmi2FreeInstance(me);
+    return fmi2NewDiscreteStates(f->c, &info);
 }
 
-static fmi2Component ready(const fmi2CallbackFunctions *callbacks) {
-    fmi2Component c = instance(fmi2CoSimulation, callbacks, 0);
+static int enter_continuous_time(Fixture *f) {
+    return fmi2EnterContinuousTimeMode(f->c);
+}
+
+static int set_time(Fixture *f) {
+    return fmi2SetTime(f->c, 0.1);
+}
+
+static int set_states(Fixture *f) {
+    return fmi2SetContinuousStates(f->c, X, 2);
+}
+
+static int get_derivatives(Fixture *f) {
+    fmi2Real dx[2];
+    return fmi2GetDerivatives(f->c, dx, 2);
+}
+
+static int get_states(Fixture *f) {
+    fmi2Real x[2];
+    return fmi2GetContinuousStates(f->c, x, 2);
+}
+
+static int get_nominals(Fixture *f) {
+    fmi2Real nominals[2];
+    return fmi2GetNominalsOfContinuousStates(f->c, nominals, 2);
+}
+
+static int get_event_indicators(Fixture *f) {
+    fmi2Real none[1];
+    return fmi2GetEventIndicators(f->c, none, 0);
+}
+
+static int completed_integrator_step(Fixture *f) {
+    fmi2Boolean enter = fmi2False, terminate_simulation = fmi2False;
+    return fmi2CompletedIntegratorStep(f->c, fmi2True, &enter, &terminate_simulation);
+}
+
+static int enter_event_mode(Fixture *f) {
+    return fmi2EnterEventMode(f->c);
+}
+
+static int get_fmu_state(void *c, void **state) {
+    return fmi2GetFMUstate(c, state);
+}
+
+static int set_fmu_state(void *c, void *state) {
+    return fmi2SetFMUstate(c, state);
+}
+
+static int free_fmu_state(void *c, void **state) {
+    return fmi2FreeFMUstate(c, state);
+}
+
+static int get_theta(void *c, double *theta) {
+    return fmi2GetReal(c, &THETA, 1, theta);
+}
+
+static void start(void *c) {
     fmi2SetupExperiment(c, fmi2False, 0.0, 0.0, fmi2False, 0.0);
     fmi2EnterInitializationMode(c);
     fmi2ExitInitializationMode(c);
-    return c;
-}
-
-/* The call was refused with fmi2Error and an error naming `pointer`. */
-static void refused(Log *log, fmi2Status status, const void *pointer, const char *what) {
-    char name[64];
-    snprintf(name, sizeof name, "%p", pointer);
-    check(status == fmi2Error, "%s: status %d, not fmi2Error", what, (int)status);
-    check(strstr(log->last_error, name) != NULL && strstr(log->last_error, "not an FMU state of this instance"),
-          "%s: the error \"%s\" does not name %s", what, log->last_error, name);
-    log->last_error[0] = '\0';
-}
-
-static void test_free_takes_only_live_states_of_the_instance(void) {
-    Log log = {0, "", ""};
-    const fmi2CallbackFunctions callbacks = {logger, calloc, free, NULL, &log};
-    fmi2Component c = ready(&callbacks), other = ready(&callbacks);
-    fmi2FMUstate state = NULL, foreign = NULL, stale = NULL, none = NULL, kept = NULL;
-    fmi2Real theta = 0.0;
-    const fmi2ValueReference vr = VR_THETA;
-
-    /* the state itself where its address belongs: *state is the state's first bytes */
-    check(fmi2GetFMUstate(c, &state) == fmi2OK && state != NULL, "get a state");
-    refused(&log, fmi2FreeFMUstate(c, (fmi2FMUstate *)state), *(void **)state, "the state instead of its address");
-    check(fmi2FreeFMUstate(c, &state) == fmi2OK && state == NULL, "the state itself is still live and freed after");
-    fmi2FreeInstance(c);
-
-    /* another instance's state: refused, and still that instance's to use and free */
-    c = ready(&callbacks);
-    check(fmi2GetFMUstate(other, &foreign) == fmi2OK, "another instance's state");
-    refused(&log, fmi2FreeFMUstate(c, &foreign), foreign, "another instance's state");
-    check(foreign != NULL, "the refused pointer is left as it was");
-    check(fmi2SetFMUstate(other, foreign) == fmi2OK && fmi2GetReal(other, &vr, 1, &theta) == fmi2OK,
-          "the other instance still sets its state");
-    check(fmi2FreeFMUstate(other, &foreign) == fmi2OK && foreign == NULL, "and frees it");
-    fmi2FreeInstance(c);
-
-    /* a state freed already (a copy of the pointer): a double free refused */
-    c = ready(&callbacks);
-    check(fmi2GetFMUstate(c, &state) == fmi2OK, "get a state");
-    stale = state;
-    check(fmi2FreeFMUstate(c, &state) == fmi2OK && state == NULL, "free it");
-    refused(&log, fmi2FreeFMUstate(c, &stale), stale, "a state freed already");
-    fmi2FreeInstance(c);
-
-    /* an overwrite target that is not a live state of this instance: never written */
-    c = ready(&callbacks);
-    check(fmi2GetFMUstate(other, &foreign) == fmi2OK, "another instance's state");
-    refused(&log, fmi2GetFMUstate(c, &foreign), foreign, "GetFMUstate into another instance's state");
-    fmi2FreeInstance(c);
-    c = ready(&callbacks);
-    check(fmi2GetFMUstate(c, &kept) == fmi2OK && fmi2GetFMUstate(c, &kept) == fmi2OK, "overwrite its own state");
-
-    /* NULL is a no-op (FMI 2.0 2.1.8) */
-    check(fmi2FreeFMUstate(c, &none) == fmi2OK, "freeing a NULL state is allowed");
-    check(fmi2FreeFMUstate(other, &foreign) == fmi2OK, "the other instance frees its state");
-    /* kept and a second live state stay: fmi2FreeInstance frees them (the leak checkers see) */
-    check(fmi2GetFMUstate(c, &state) == fmi2OK, "one more state, left live");
-    fmi2FreeInstance(c);
-    fmi2FreeInstance(other);
 }
 
 int main(void) {
-    test_each_call_is_logged_once();
-    test_free_takes_only_live_states_of_the_instance();
-    return check_summary("test_fmi_conformance");
+    const ConformanceApi api = {
+        .program = "test_fmi_conformance",
+        .instantiate = instantiate,
+        .free_instance = free_instance,
+        .setup_experiment = {"fmi2SetupExperiment", setup_experiment},
+        .enter_initialization = {"fmi2EnterInitializationMode", enter_initialization},
+        .set_reals = {"fmi2SetReal", set_reals},
+        .get_reals = {"fmi2GetReal", get_reals},
+        .get_solver = {"fmi2GetInteger", get_solver},
+        .set_solver = {"fmi2SetInteger", set_solver},
+        .directional = {"fmi2GetDirectionalDerivative", directional},
+        .adjoint = {"fmi2 has no adjoint derivatives", NULL},
+        .exit_initialization = {"fmi2ExitInitializationMode", exit_initialization},
+        .do_step = {"fmi2DoStep", do_step},
+        .get_statistic = {"fmi2GetInteger", get_statistic},
+        .output_derivative = {"fmi2GetRealOutputDerivatives", output_derivative},
+        .get_status = {"fmi2GetStatus", get_status},
+        .get_state = {"fmi2GetFMUstate", get_state},
+        .set_state = {"fmi2SetFMUstate", set_state},
+        .state_size = {"fmi2SerializedFMUstateSize", state_size},
+        .serialize = {"fmi2SerializeFMUstate", serialize},
+        .deserialize = {"fmi2DeSerializeFMUstate", deserialize},
+        .free_restored = {"fmi2FreeFMUstate", free_restored},
+        .free_state = {"fmi2FreeFMUstate", free_state},
+        .terminate = {"fmi2Terminate", terminate},
+        .reset = {"fmi2Reset", reset},
+        .update_discrete_states = {"fmi2NewDiscreteStates", new_discrete_states},
+        .enter_continuous_time = {"fmi2EnterContinuousTimeMode", enter_continuous_time},
+        .set_time = {"fmi2SetTime", set_time},
+        .set_states = {"fmi2SetContinuousStates", set_states},
+        .get_derivatives = {"fmi2GetDerivatives", get_derivatives},
+        .get_states = {"fmi2GetContinuousStates", get_states},
+        .get_nominals = {"fmi2GetNominalsOfContinuousStates", get_nominals},
+        .get_event_indicators = {"fmi2GetEventIndicators", get_event_indicators},
+        .number_of_states = {"fmi2 has no fmi3GetNumberOfContinuousStates", NULL},
+        .number_of_event_indicators = {"fmi2 has no fmi3GetNumberOfEventIndicators", NULL},
+        .completed_integrator_step = {"fmi2CompletedIntegratorStep", completed_integrator_step},
+        .enter_event_mode = {"fmi2EnterEventMode", enter_event_mode},
+        .get_fmu_state = get_fmu_state,
+        .set_fmu_state = set_fmu_state,
+        .free_fmu_state = free_fmu_state,
+        .get_theta = get_theta,
+        .start = start,
+    };
+    return conformance_run(&api);
 }

@@ -165,6 +165,19 @@ static void test_invalid_input(void)
     check(integrator_init(&it, SOLVER_RKN, W0SQ, 1e-6, 0.0, 1.0, INFINITY) == -1,
           "omega0 inf");
     check(integrator_init(&it, (SolverKind)7, W0SQ, 1e-6, 0.0, 1.0, 0.0) == -1, "bad kind");
+    /* the solver table: a name for each item of the enumeration Solver (the model descriptions'
+     * names, in the certificate's messages), none for the values around them */
+    static const char *const names[] = {NULL, "dopri5", "rk4", "rkn", "symplectic", NULL};
+    for (int kind = -1; kind <= SOLVER_SYMPLECTIC + 1; kind++) {
+        const char *name = integrator_solver_name(kind), *expected = kind < 0 ? NULL : names[kind];
+        check(expected == NULL ? name == NULL : name != NULL && strcmp(name, expected) == 0,
+              "solver %d is named %s, not %s", kind, name ? name : "(none)", expected ? expected : "(none)");
+        if (expected == NULL)
+            check(integrator_init(&it, (SolverKind)kind, W0SQ, 1e-6, 0.0, 1.0, 0.0) == -1,
+                  "kind %d names no solver: refused", kind);
+    }
+    check(integrator_reach(SOLVER_RK4) == INTEGRATOR_REACH_RK4 && integrator_reach(SOLVER_RKN) == INTEGRATOR_REACH &&
+          integrator_reach((SolverKind)0) == INTEGRATOR_REACH, "each solver's reach (an unknown one: the common line)");
     for (int kind = SOLVER_DOPRI5; kind <= SOLVER_SYMPLECTIC; kind++) {
         check(integrator_init(&it, (SolverKind)kind, W0SQ, 1e-6, 2.0, 1.0, 0.5) == 0,
               "init kind %d", kind);

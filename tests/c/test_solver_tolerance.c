@@ -118,7 +118,6 @@ int main(int argc, char **argv)
         all[n_states++] = random_state(&rng);
     }
     const SolverKind kinds[] = {SOLVER_DOPRI5, SOLVER_RK4, SOLVER_RKN, SOLVER_SYMPLECTIC};
-    const char *names[] = {"", "dopri5", "rk4", "rkn", "symplectic"};
     const double tols[] = {1e-4, 1e-6, 1e-8, 1e-10};
     for (size_t k = 0; k < sizeof kinds / sizeof kinds[0]; ++k) {
         double worst_ratio = 0.0;
@@ -129,15 +128,15 @@ int main(int argc, char **argv)
                 const double ratio = err / tols[j];
                 worst_ratio = fmax(worst_ratio, ratio);
                 check(ratio <= LIMIT, "%s, %s (%.17g, %.17g, g/L %.17g), tol %g: max |theta - theta_exact| = %.3g = "
-                      "%.3g tol", names[kinds[k]], all[i].name, all[i].theta0, all[i].omega0, all[i].w0sq, tols[j], err,
+                      "%.3g tol", integrator_solver_name(kinds[k]), all[i].name, all[i].theta0, all[i].omega0, all[i].w0sq, tols[j], err,
                       ratio);
                 if (verbose) {
-                    printf("%-10s %-26s tol %-6g error/tol %9.3g  steps %ld\n", names[kinds[k]], all[i].name,
+                    printf("%-10s %-26s tol %-6g error/tol %9.3g  steps %ld\n", integrator_solver_name(kinds[k]), all[i].name,
                            tols[j], ratio, steps);
                 }
             }
         }
-        printf("%s: worst max|theta - theta_exact| / tol over 10 periods = %.3g\n", names[kinds[k]], worst_ratio);
+        printf("%s: worst max|theta - theta_exact| / tol over 10 periods = %.3g\n", integrator_solver_name(kinds[k]), worst_ratio);
     }
     return check_summary("test_solver_tolerance");
 }
