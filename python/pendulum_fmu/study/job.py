@@ -7,6 +7,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from pendulum_fmu.fmu.runner import FmuRunner
+from pendulum_fmu.output.experiment_record import record_of, write_record
 from pendulum_fmu.study.figures import plot_comparison_grid, plot_period_ratio, plot_solutions
 from pendulum_fmu.study.report import write_html, write_report
 from pendulum_fmu.study.seed import SEED_AMPLITUDES_DEG, format_table, period_curve, run_study, table_rows, write_csv
@@ -59,6 +60,8 @@ def write_study(fmu: Path, out: Path, periods: float = 10.0,
     plot_period_ratio(curve, SEED_AMPLITUDES_DEG, out / "period_ratio.png")
     say("runs.csv, report.md and report.html")
     write_csv(runs, out / "runs.csv")
+    write_record(out / "runs.csv", [({"interface": run.method.interface, "amplitude_deg": f"{run.pendulum.amplitude_deg:g}"},
+                                     record_of(run, fmu, "study")) for run in runs])
     rows = table_rows(runs)
     table = format_table(rows)
     write_report(out, table, periods)
