@@ -191,7 +191,8 @@ def record_of(trajectory: Trajectory, fmu: Path, command: str, description: Any 
     description = description if description is not None else read_description(Path(fmu))
     p, m = trajectory.pendulum, trajectory.method
     times = np.asarray(trajectory.result["time"], dtype=float)
-    used, asked = tolerance_used(m.effective_tolerance)
+    # the FMU's own solver runs at its floor at most; an importer's (Model Exchange) as asked
+    used, asked = tolerance_used(m.effective_tolerance) if m.interface == "CS" else (m.effective_tolerance, None)
     return ExperimentRecord(
         theta0=float(p.amplitude_rad), omega0=float(p.omega0), length=float(p.length), gravity=float(p.gravity),
         interface=m.interface, solver=m.solver, tolerance=used, tolerance_asked=asked,
