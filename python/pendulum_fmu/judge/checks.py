@@ -45,8 +45,8 @@ SMOOTH_RATIO = 30.0
 """A value off the smooth curve of its neighbours' errors by this many times their own
 roughness is isolated, where the solution itself is smooth on the file's grid
 (:func:`isolated_values`)."""
-SMOOTH_ABOVE = 2.0
-"""... and off by more than this many times the neighbours' largest error."""
+SMOOTH_ABOVE = 3.0
+"""... whose error is more than this many times its neighbours' largest, of the opposite sign."""
 ROUGH_WINDOW = 6
 """Rows either side whose own roughness (second differences) sets the scale of the smooth-curve
 test; the rows next to the value, which its own offset disturbs, are left out."""
@@ -335,18 +335,23 @@ def _smooth_solution(ref: Reference) -> np.ndarray:
     return smooth
 
 
-def isolated_values(result: Result, ref: Reference, errors: dict[str, np.ndarray]) -> Check:
+def isolated_values(result: Result, ref: Reference, errors: dict[str, np.ndarray], interface: str = "CS") -> Check:
     """Values whose error stands alone, which no integrator makes and a mangled file does.
 
     Two tests; rows too near either end for their window are not judged:
 
     - off the mean of their two neighbours by SPIKE_RATIO times the largest error of the
       NEIGHBOURS rows either side;
-    - where the exact solution is smooth on the file's grid (:func:`_smooth_solution`): off
-      the mean of their two neighbours by SMOOTH_RATIO times the error curve's own roughness
-      there (its largest such offset over rows 2..ROUGH_WINDOW either side), and by more than
-      SMOOTH_ABOVE times the neighbours' largest error: a value off a smooth error curve,
-      however small that curve's error.
+    - in a Model Exchange file (an importer's solver with dense output, whose error is smooth
+      from row to row) where the exact solution is smooth on the file's grid
+      (:func:`_smooth_solution`): off the mean of their two neighbours by SMOOTH_RATIO times
+      the error curve's own roughness there (its largest such offset over rows 2..ROUGH_WINDOW
+      either side), with an error of the opposite sign to both neighbours' and more than
+      SMOOTH_ABOVE times the larger: a value off a smooth error curve, however small that
+      curve's error. (A Co-Simulation file's error jumps at the FMU's step ends, by up to 50
+      times its roughness in honest rkn runs of the judge's corpus: only the first test holds
+      there. In the corpus's honest Model Exchange runs no row meets the second test; the
+      closest same-sign one is 7.8 times its neighbours.)
 
     The scales are never below rounding (1e-14 max(1, |value|) and the print's resolution);
     the first is not below LEVEL times the file's largest error either, so that an error
@@ -369,13 +374,17 @@ def isolated_values(result: Result, ref: Reference, errors: dict[str, np.ndarray
         rounding = 1e-14 * scale + result.resolution[name]
         rough = np.maximum(_outer_max(np.abs(off), ROUGH_WINDOW), rounding)
         near = np.maximum(_neighbourhood(e, 1), rounding)
-        off_curve = (np.abs(off) > SMOOTH_RATIO * rough) & (np.abs(off) > SMOOTH_ABOVE * near)
+        opposite = np.zeros(error.size, dtype=bool)
+        side = np.sign(error)
+        opposite[1:-1] = (side[:-2] == side[2:]) & (side[1:-1] == -side[2:]) & (side[2:] != 0)
+        off_curve = (interface == "ME") & opposite & (np.abs(off) > SMOOTH_RATIO * rough) & (e > SMOOTH_ABOVE * near)
         off_curve[:ROUGH_WINDOW] = off_curve[error.size - ROUGH_WINDOW:] = False
         if off_curve.any():
             off_curve &= _smooth_solution(ref)
         found += [(name, int(k), float(off[k]), float(around[k]) if spikes[k] else float(rough[k]),
                    f"their error {around[k]:.1e}" if spikes[k] else
-                   f"their errors lie on a smooth curve to {rough[k]:.1e}, the nearest {near[k]:.1e}")
+                   f"their errors lie on a smooth curve to {rough[k]:.1e}, the nearest {near[k]:.1e} of the "
+                   "other sign")
                   for k in np.flatnonzero(spikes | off_curve)]
     if not errors:
         return Check("isolated values", "info", "no theta or omega column to look at")

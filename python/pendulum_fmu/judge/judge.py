@@ -164,7 +164,7 @@ def judge(data: Any, *, start: list[str] | dict[str, float | str] | None = None,
         found.append(Check("importer's values", "fail", "no theta or omega column: the file holds nothing of the "
                            "importer's to judge (theta_exact and omega_exact are the FMU's own outputs)"))
     found += [checks.error_check(result, ref, name, e) for name, e in errors.items()]
-    found.append(checks.isolated_values(result, ref, errors))
+    found.append(checks.isolated_values(result, ref, errors, experiment.interface))
     bound = checks.bound_check(result, ref, experiment, errors)
     found.append(bound)
     if bound.status == "pass" and experiment.interface == "ME":
