@@ -82,7 +82,8 @@ def _bound(target: ast.AST, value: ast.AST, names: set[str]) -> list[str]:
     values; from a call's tuple, those named as durations unless the call itself reads a clock."""
     if isinstance(target, (ast.Tuple, ast.List)):
         if isinstance(value, (ast.Tuple, ast.List)) and len(value.elts) == len(target.elts):
-            return [n for t, v in zip(target.elts, value.elts) if _tainted(v, names) for n in _bound(t, v, names)]
+            pairs = zip(target.elts, value.elts, strict=True)
+            return [n for t, v in pairs if _tainted(v, names) for n in _bound(t, v, names)]
         raw = any(_is_clock_call(n) and not (isinstance(n.func, ast.Name) and n.func.id in _MEASURING_NAMES)
                   for n in ast.walk(value))
         if not raw:  # a helper's or a benchmark's tuple: its durations, not its other parts

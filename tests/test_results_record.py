@@ -24,8 +24,15 @@ import pytest
 
 from pendulum_fmu.cli.main import main
 from pendulum_fmu.judge.standard_files import judge_with_experiment
-from pendulum_fmu.output.experiment_record import (FORMAT, PARQUET_KEY, ExperimentRecord, read_record, read_runs,
-                                                   sidecar_of, write_series)
+from pendulum_fmu.output.experiment_record import (
+    FORMAT,
+    PARQUET_KEY,
+    ExperimentRecord,
+    read_record,
+    read_runs,
+    sidecar_of,
+    write_series,
+)
 from pendulum_fmu.spec import CS_SOLVERS
 
 FORMATS = (".csv", ".parquet", ".csv.gz")

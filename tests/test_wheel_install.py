@@ -163,6 +163,11 @@ FMU_FILES = ("Pendulum.fmu", "PendulumBody.fmu", "PendulumGravity.fmu", "Pendulu
 """The FMUs and the SSP a build makes, in its folder and in its fmi3/ folder."""
 
 
+def _platforms(archive: zipfile.ZipFile) -> set[str]:
+    """The platform folders under an FMU's binaries/."""
+    return {n.split("/")[1] for n in archive.namelist() if n.startswith("binaries/") and n.count("/") > 1}
+
+
 def test_the_installed_fmus_are_the_built_fmus(installed: Path, fmu_path: Path) -> None:
     """Every FMU and SSP the installed package carries holds the files a plain ``cmake --build``
     puts into it (the checkout's build/, ``fmu_path``'s folder), byte for byte, the FMI-LS-REF
@@ -177,14 +182,12 @@ def test_the_installed_fmus_are_the_built_fmus(installed: Path, fmu_path: Path) 
         with zipfile.ZipFile(package / name) as wheel_copy, zipfile.ZipFile(built_dir / name) as built:
             ours = {n for n in wheel_copy.namelist() if not n.startswith("binaries/")}
             theirs = {n for n in built.namelist() if not n.startswith("binaries/")}
-            assert ours == theirs, f"{name}: only in the wheel {sorted(ours - theirs)}, only built {sorted(theirs - ours)}"
+            assert ours == theirs, f"{name}: wheel only {sorted(ours - theirs)}, built only {sorted(theirs - ours)}"
             for member in sorted(ours):
                 if member.endswith("/"):
                     continue
                 assert wheel_copy.read(member) == built.read(member), f"{name}: {member} differs"
-            built_platforms = {n.split("/")[1] for n in built.namelist() if n.startswith("binaries/") and n.count("/") > 1}
-            wheel_platforms = {n.split("/")[1] for n in wheel_copy.namelist() if n.startswith("binaries/") and n.count("/") > 1}
-            assert built_platforms <= wheel_platforms, name
+            assert _platforms(built) <= _platforms(wheel_copy), name
             if name.endswith("Pendulum.fmu"):
                 for member in ("fmi-ls-manifest.xml", "Pendulum.exp", "Pendulum_ref.csv"):
                     assert f"extra/org.fmi-standard.fmi-ls-ref/{member}" in ours, f"{name}: no {member}"

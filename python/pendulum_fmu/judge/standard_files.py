@@ -25,7 +25,8 @@ def judge_with_experiment(data: Any, *, start: list[str] | None = None, interfac
     The experiment is the result's own record (what this package writes with every time
     series: its start values, parameters, solver, interface, tolerance and step), else the
     ``_ref.opt`` of a result in a cross-check folder, else the FMI-LS-REF ``.exp`` of ``fmu``
-    (or of the FMU found): its values, start time and tolerance unless ``start`` gives them, its interface (a cross-check folder's ``cs``/``me``) unless ``interface`` does,
+    (or of the FMU found): its values, start time and tolerance unless ``start`` gives them,
+    its interface (a cross-check folder's ``cs``/``me``, the record's) unless ``interface`` does,
     and its step unless ``step`` does, for a result that is a run of the experiment (its span
     and its number of steps, :meth:`Settings.covers`): when the step read from such a file's
     times (rounded to 6 digits) is not the experiment's, the file is judged again with the

@@ -60,8 +60,10 @@ def write_study(fmu: Path, out: Path, periods: float = 10.0,
     plot_period_ratio(curve, SEED_AMPLITUDES_DEG, out / "period_ratio.png")
     say("runs.csv, report.md and report.html")
     write_csv(runs, out / "runs.csv")
-    write_record(out / "runs.csv", [({"interface": run.method.interface, "amplitude_deg": f"{run.pendulum.amplitude_deg:g}"},
-                                     record_of(run, fmu, "study")) for run in runs])
+    # each run's experiment, picked out by its interface and amplitude (docs/results.md)
+    write_record(out / "runs.csv", [({"interface": run.method.interface,
+                                      "amplitude_deg": f"{run.pendulum.amplitude_deg:g}"}, record_of(run, fmu, "study"))
+                                    for run in runs])
     rows = table_rows(runs)
     table = format_table(rows)
     write_report(out, table, periods)
