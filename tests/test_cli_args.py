@@ -122,7 +122,7 @@ def test_help_gives_units_and_ranges(capsys: pytest.CaptureFixture[str]) -> None
         main(["simulate", "--help"])
     out = " ".join(capsys.readouterr().out.split())
     for text in ("in [-180, 180] deg", "length L > 0, m", "m/s^2", "relative tolerance in (0, 1)", "rad/s",
-                 "stop time in seconds", "FILE.csv or FILE.parquet"):
+                 "stop time in seconds", "FILE.csv, FILE.csv.gz or FILE.parquet"):
         assert text in out
 
 
