@@ -145,6 +145,23 @@ def test_gzip_and_parquet_carry_it(tmp_path: Path) -> None:
         assert found is not None and found.record == _record()
 
 
+def test_a_parquet_file_from_before_records_is_read_by_its_flat_keys(tmp_path: Path, fmu_path: Path,
+                                                                      capsys: pytest.CaptureFixture[str]) -> None:
+    """simulate's Parquet files carried amplitude_rad, solver, tolerance, ... before records:
+    the judge reads those too (the file as simulate wrote it, the JSON key removed)."""
+    out = tmp_path / "b.parquet"
+    assert main(["simulate", "-a", "85", "-s", "cvode", "-o", str(out), "--fmu", str(fmu_path)]) == 0
+    capsys.readouterr()
+    table = pq.read_table(out)
+    earlier = {k: v for k, v in table.schema.metadata.items() if k != PARQUET_KEY.encode()}
+    pq.write_table(table.replace_schema_metadata(earlier), out)
+    found = read_record(out)
+    assert found is not None and "amplitude_rad" in found.source
+    assert (found.record.theta0, found.record.interface, found.record.solver) == (math.radians(85.0), "ME", "cvode")
+    verdict, _ = judge_with_experiment(out, fmu=fmu_path)
+    assert verdict.passed and verdict.experiment.interface == "ME", verdict.line
+
+
 def test_a_file_of_several_runs_records_each(tmp_path: Path) -> None:
     out = tmp_path / "runs.csv"
     one, two = _record(), _record(theta0=0.5)

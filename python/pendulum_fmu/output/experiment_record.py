@@ -347,13 +347,39 @@ def read_runs(path: Path) -> tuple[list[tuple[dict[str, str], ExperimentRecord]]
             return None
         text = metadata.get(PARQUET_KEY.encode())
         if text is None:
-            return None
+            return _earlier_parquet(path, metadata)
         where = f"{path.name} (Parquet metadata)"
         return parse_document(text, where), where
     sidecar = sidecar_of(path)
     if not sidecar.is_file():
         return None
     return parse_document(sidecar.read_bytes(), str(sidecar), path.name), str(sidecar)
+
+
+EARLIER_KEYS: tuple[str, ...] = ("amplitude_rad", "omega0_rad_s", "length_m", "gravity_m_s2", "interface", "solver",
+                                 "tolerance")
+"""The flat keys ``simulate`` wrote into Parquet metadata before records (and still writes beside one)."""
+
+
+def _earlier_parquet(path: Path, metadata: Mapping[bytes, bytes]) -> tuple[
+        list[tuple[dict[str, str], ExperimentRecord]], str] | None:
+    """The experiment of a Parquet file ``simulate`` wrote before records: its flat keys, and
+    its time column's first and last value; None when the keys are not all there."""
+    values = {key: metadata.get(key.encode(), b"").decode() for key in EARLIER_KEYS}
+    if not all(values.values()):
+        return None
+    where = f"{path.name} (Parquet metadata: {', '.join(EARLIER_KEYS)})"
+    try:
+        times = pq.read_table(path, columns=["time_s"]).column("time_s").to_numpy()
+        record = ExperimentRecord(
+            theta0=float(values["amplitude_rad"]), omega0=float(values["omega0_rad_s"]),
+            length=float(values["length_m"]), gravity=float(values["gravity_m_s2"]),
+            interface=values["interface"], solver=values["solver"],  # type: ignore[arg-type]
+            tolerance=float(values["tolerance"]), start_time=float(times[0]), stop_time=float(times[-1]), step=None,
+            fmi_version="?", fmu="?", writer="pendulum-fmu simulate (before records)")
+    except (KeyError, IndexError, ValueError, OSError, pa.ArrowException) as error:
+        raise ValueError(f"{where}: {error}") from None
+    return [({}, record)], where
 
 
 def read_record(path: Path) -> FoundRecord | None:
