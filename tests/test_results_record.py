@@ -222,3 +222,14 @@ def _record(**changes: object) -> ExperimentRecord:
               "fmu": "Pendulum.fmu (Pendulum, {x})", "writer": "test"}
     fields.update(changes)
     return ExperimentRecord(**fields)  # type: ignore[arg-type]
+
+
+def test_the_records_floor_is_the_fmus() -> None:
+    """The record's tolerance floor is the C instance's (fmu_src/solvers/integrator.h)."""
+    import re
+
+    from pendulum_fmu.output.experiment_record import TOLERANCE_FLOOR
+
+    header = (Path(__file__).resolve().parents[1] / "fmu_src" / "solvers" / "integrator.h").read_text()
+    match = re.search(r"#define INTEGRATOR_TOLERANCE_FLOOR (\S+)", header)
+    assert match is not None and float(match.group(1)) == TOLERANCE_FLOOR

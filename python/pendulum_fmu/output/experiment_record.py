@@ -27,7 +27,6 @@ Usage::
 
 from __future__ import annotations
 
-import gzip
 import json
 import math
 from collections.abc import Mapping, Sequence
@@ -395,12 +394,6 @@ def read_record(path: Path) -> FoundRecord | None:
     if found is None or len(found[0]) != 1 or found[0][0][0]:
         return None
     return FoundRecord(found[0][0][1], found[1])
-
-
-def open_text(path: Path) -> bytes:
-    """The bytes of a file, gunzipped when it is gzip (its first two bytes ``1f 8b``)."""
-    raw = Path(path).read_bytes()
-    return gzip.decompress(raw) if raw[:2] == b"\x1f\x8b" else raw
 
 
 __all__ = ["FORMAT", "PARQUET_KEY", "SERIES_FORMATS", "SIDECAR_SUFFIX", "TOLERANCE_FLOOR", "ExperimentRecord",
