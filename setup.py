@@ -103,8 +103,11 @@ def build_fmu(platforms: bool = False) -> Path | None:
               "it is looked for at run time", file=sys.stderr)
         return None
     options = platform_options() if platforms else []
-    targets = ["fmu", "fmu3", "split_fmi2", "split_fmi3", "pendulum_exact", "pendulum_driver"] + (
-        ["pendulum_exact_platforms"] if options else [])
+    # fmu_reference and fmu3_reference: the FMUs as `cmake --build` leaves them, with the
+    # FMI-LS-REF reference result, its experiment and manifest under extra/ (the packing
+    # targets fmu and fmu3 alone leave them out)
+    targets = ["fmu", "fmu3", "fmu_reference", "fmu3_reference", "split_fmi2", "split_fmi3", "pendulum_exact",
+               "pendulum_driver"] + (["pendulum_exact_platforms"] if options else [])
     commands = [[cmake, "-S", str(ROOT), "-B", str(build_dir), "-DCMAKE_BUILD_TYPE=Release", *options],
                 [cmake, "--build", str(build_dir), "--target", *targets, "--parallel", str(os.cpu_count() or 1)]]
     what = "every platform with zig" if options else "the host's binaries"

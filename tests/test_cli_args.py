@@ -36,7 +36,7 @@ BAD_ARGUMENTS = [
     (["simulate", "--periods", "2", "--stop-time", "3"], "not allowed with argument"),
     (["simulate", "--stop-time", "-3"], "argument -T/--stop-time: must be a finite number in (0, 1e+06] s"),
     (["simulate", "--points-per-period", "0"], "argument -n/--points-per-period: must be an integer in [1, 10000]"),
-    (["simulate", "--out", "run.txt"], "argument -o/--out: the file name must end in .csv or .parquet"),
+    (["simulate", "--out", "run.txt"], "argument -o/--out: the file name must end in .csv or .csv.gz or .parquet"),
     (["simulate", "--fmu", "/no/such/Pendulum.fmu"], "argument --fmu: no such file: '/no/such/Pendulum.fmu'"),
     (["compare", "--out", "error.jpg"], "argument -o/--out: the file name must end in .png"),
     (["animate", "--fps", "0"], "argument --fps: must be an integer in [1, 60], got '0'"),
@@ -122,7 +122,7 @@ def test_help_gives_units_and_ranges(capsys: pytest.CaptureFixture[str]) -> None
         main(["simulate", "--help"])
     out = " ".join(capsys.readouterr().out.split())
     for text in ("in [-180, 180] deg", "length L > 0, m", "m/s^2", "relative tolerance in (0, 1)", "rad/s",
-                 "stop time in seconds", "FILE.csv or FILE.parquet"):
+                 "stop time in seconds", "FILE.csv, FILE.csv.gz or FILE.parquet"):
         assert text in out
 
 

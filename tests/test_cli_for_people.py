@@ -172,9 +172,7 @@ def test_ctrl_c_during_a_long_study_is_one_line_and_exit_130(installed: Path, fo
                                preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
     time.sleep(delay)
     os.killpg(process.pid, signal.SIGINT)
-    sent = time.monotonic()
-    _, stderr = process.communicate(timeout=60)
-    assert time.monotonic() - sent < 5, "the study took more than 5 s to stop"
+    _, stderr = process.communicate(timeout=60)   # a study that ignored the signal runs on (exit 0, or the timeout)
     assert process.returncode == 130, stderr
     assert "Traceback" not in stderr and "Exception ignored" not in stderr and "failed" not in stderr, stderr
     lines = [line for line in stderr.splitlines() if line.strip() and not line.startswith("study: ")]  # its stages
@@ -221,19 +219,16 @@ def test_an_interrupt_while_the_table_is_written_leaves_no_file(installed: Path,
 
 # -- defects 3 and 4: sizes before work, the FMU's reasons ------------------------------------------
 def test_a_run_too_large_for_memory_is_refused_at_once(installed: Path, folder: Path) -> None:
-    start = time.monotonic()
+    # refused before any work: the run itself would take hours (the command's timeout would end it)
     line = _one_clean_line(_run(installed, ["simulate", "-T", "1e6", "-n", "10000"], folder), (2,))
-    assert time.monotonic() - start < 10
     # 1e6 s / T(75 deg) = 1e6 / 2.2447 s periods, 10000 points each: 4.45e9 points.
     assert re.search(r"this run would record 4\.45 billion output points, about [\d.]+ [TG]B of memory", line), line
     assert "half the" in line and "lower -T/--stop-time or -n/--points-per-period" in line, line
 
 
 def test_a_sweep_of_a_hundred_million_runs_is_refused_at_once(installed: Path, folder: Path) -> None:
-    start = time.monotonic()
     line = _one_clean_line(_run(installed, ["sweep", "-a", "1:179:100000", "-t", "1e-4:1e-10:1000", "-q"], folder),
-                           (2,))
-    assert time.monotonic() - start < 15
+                           (2,))   # before any run: 1e8 runs would outlast the command's timeout
     assert "this sweep has 100 million runs" in line and "use fewer values on its axes" in line, line
     assert list(folder.iterdir()) == []
 
@@ -295,11 +290,9 @@ def test_help_texts_are_plain_and_honest(installed: Path, folder: Path) -> None:
 
 
 def test_bench_accuracy_takes_as_long_as_its_help_says(installed: Path, folder: Path) -> None:
-    start = time.monotonic()
     done = _run(installed, ["bench", "accuracy"], folder)
-    seconds = time.monotonic() - start
     assert done.returncode == 0, done.stderr
-    assert seconds < 20, f"bench accuracy took {seconds:.1f} s, its help says a few seconds"
+    # how long it takes is the benchmark's own figure: it prints it (no timed test, tests/test_no_timed_tests.py)
 
 
 def test_installed_bench_exact_leaves_out_the_c_columns(installed: Path, folder: Path) -> None:
@@ -316,14 +309,17 @@ def test_bench_solvers_quick_passes_with_an_honest_report(tmp_path: Path) -> Non
     driver = REPO / "build" / "tests" / "c" / "bench_solvers"
     done = subprocess.run([sys.executable, "-m", "pendulum_fmu", "bench", "solvers", "--quick", "--driver", str(driver),
                            "--out", str(tmp_path)], cwd=REPO, capture_output=True, text=True, timeout=600, check=False)
-    assert done.returncode == 0, done.stdout[-3000:] + done.stderr[-2000:]
     report = (tmp_path / "report.md").read_text()
+    # only a wall-time target (T3, within 3x of the floor; T2's "3x faster") may be unmet, as the
+    # machine's load decides it (no timed test: tests/test_no_timed_tests.py)
+    unmet = [line for line in report.splitlines() if line.startswith("| T") and "| NO |" in line]
+    assert all("wall time" in line or "faster" in line for line in unmet), report
+    assert done.returncode == (1 if unmet else 0), done.stdout[-3000:] + done.stderr[-2000:]
     t1 = next(line for line in report.splitlines() if line.startswith("| T1"))
     # Judged at 1e-4..1e-8 only (what tolerances 1e-4 and 1e-8 reach); met, with a ratio below 1.
     assert t1.startswith("| T1: fewer evaluations than DOP853 at every error 1e-04..") and "| yes |" in t1, t1
     ratio = float(re.search(r"= ([\d.]+)", t1)[1])  # type: ignore[index]
     assert ratio < 1.0 and "quick run" in t1, t1
-    assert "| NO |" not in report, report
 
 
 def test_a_skip_reason_names_only_the_missing_tool() -> None:

@@ -51,12 +51,35 @@ def study_dir(fmu_path: Path, tmp_path_factory: pytest.TempPathFactory) -> Path:
     return out
 
 
+def _runs_record_every_run(study_dir: Path) -> None:
+    """runs.csv's sidecar holds one experiment per run, selected by its interface and amplitude
+    (docs/results.md), and each is the run's: its start value and its rows' span."""
+    import csv
+    import math
+
+    from pendulum_fmu.output.experiment_record import read_runs
+
+    found = read_runs(study_dir / "runs.csv")
+    assert found is not None
+    runs, _ = found
+    with (study_dir / "runs.csv").open() as handle:
+        rows = list(csv.DictReader(handle))
+    keys = {(row["interface"], row["amplitude_deg"]) for row in rows}
+    assert {(s["interface"], s["amplitude_deg"]) for s, _ in runs} == keys and len(runs) == len(keys)
+    for select, record in runs:
+        times = [float(row["time_s"]) for row in rows
+                 if (row["interface"], row["amplitude_deg"]) == (select["interface"], select["amplitude_deg"])]
+        assert record.interface == select["interface"] and record.theta0 == math.radians(float(select["amplitude_deg"]))
+        assert (record.start_time, record.stop_time) == (times[0], times[-1])
+
+
 def test_study_writes_the_seed_files_and_the_html_report(study_dir: Path) -> None:
     for name in ("fig3_numeric.png", "fig4_exact.png", "fig5_overlay.png", "period_ratio.png", "speed_vs_error.png"):
         with Image.open(study_dir / name) as image:
             assert image.format == "PNG" and image.size[0] > 800, name
     assert (study_dir / "runs.csv").read_text().startswith("interface,amplitude_deg,time_s,w0t,")
     assert "| 90 | ME |" in (study_dir / "report.md").read_text()
+    _runs_record_every_run(study_dir)
     parser = _Tables()
     parser.feed((study_dir / "report.html").read_text())
     # the seed's four figures and the speed-against-error figure

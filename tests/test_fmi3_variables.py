@@ -79,16 +79,24 @@ def test_same_guid_experiment_and_log_categories(both: tuple[ModelDescription, M
     assert {u.name for u in fmi3.unitDefinitions} == {u.name for u in fmi2.unitDefinitions}
 
 
-def test_default_step_is_the_seed_studys_communication_step(
+def test_the_default_experiment_is_one_every_importer_accepts(
         both: tuple[ModelDescription, ModelDescription]) -> None:
-    """stepSize is one POINTS_PER_PERIOD-th of the exact period of the start state (mpmath), so
-    container tools that read it step as the seed study does."""
-    from pendulum_fmu.study.seed import POINTS_PER_PERIOD  # noqa: PLC0415
-    import mpmath as mp  # noqa: PLC0415
+    """The importers' own rules on a DefaultExperiment, as each computes them in doubles:
+    fmusim (fmi-rs) refuses an output interval unless the fractional part of
+    (stop - start) / interval is 0; FMI4j refuses a doStep whose t + h passes stopTime unrounded,
+    t written as k h; Ecos and fmpy sum the steps (t += h). Each must reach stopTime exactly
+    after (stop - start) / h steps, and never pass it before."""
+    import math  # noqa: PLC0415
     for md in both:
-        start = {v.name: float(v.start) for v in md.modelVariables if v.name in ("theta", "L", "g")}
-        with mp.workdps(40):
-            m = mp.sin(mp.mpf(start["theta"]) / 2) ** 2
-            period = 4 * mp.ellipk(m) / mp.sqrt(mp.mpf(start["g"]) / mp.mpf(start["L"]))
-        assert md.defaultExperiment.stepSize is not None
-        assert float(md.defaultExperiment.stepSize) == float(period / POINTS_PER_PERIOD)
+        default = md.defaultExperiment
+        start, stop, h = float(default.startTime), float(default.stopTime), float(default.stepSize)
+        assert 0 < float(default.tolerance) < 1
+        ratio = (stop - start) / h
+        assert ratio == math.floor(ratio) and ratio >= 1                # fmusim: no fraction at all
+        steps = int(ratio)
+        summed = start
+        for k in range(steps):
+            assert start + k * h + h <= stop                            # FMI4j: the last doStep allowed
+            assert summed + h <= stop                                   # a summing clock never passes it
+            summed += h
+        assert summed == stop and start + steps * h == stop             # both clocks land on stopTime

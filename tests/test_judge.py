@@ -136,7 +136,7 @@ def test_drifting_times_fail(cs_run: np.ndarray) -> None:
 
 
 def test_a_step_that_is_no_short_decimal_is_taken_from_the_times(fmu_path: Path) -> None:
-    """The default experiment's step is a period over 50, 0.04489412888955134 s."""
+    """A step that is a period over 50, 0.04489412888955134 s (simulate's grid)."""
     run = fmpy_run(fmu_path, stop_time=20.0, output_interval=0.04489412888955134)
     verdict = judge(run)
     assert verdict.passed, verdict.line

@@ -278,8 +278,9 @@ def test_a_fixed_step_method_is_recognised_on_100000_rows(symplectic: bool, part
     assert found.every_step < 1e-9
 
 
-def test_two_million_euler_rows_recognised_in_well_under_a_second() -> None:
-    """Target: well under 1 s on this machine (issue 26); asserted at 3 s for a loaded machine."""
+def test_two_million_euler_rows_recognised() -> None:
+    """Every row checked on two million rows (its time is printed, and measured by
+    ``pendulum-fmu bench judge``; no test asserts a timing)."""
     rows = np.array(euler_run(0.01, 19_999.99))
     data = read_result({"time": rows[:, 0], "theta": rows[:, 1], "omega": rows[:, 2]})
     assert data.rows >= 2_000_000
@@ -290,7 +291,6 @@ def test_two_million_euler_rows_recognised_in_well_under_a_second() -> None:
     print(f"explicit Euler recognised on {data.rows:,} rows in {seconds:.2f} s")
     assert found is not None and found.method == "explicit Euler" and found.step == 0.01
     assert found.rows_checked == data.rows
-    assert seconds < 3.0
 
 
 def test_one_changed_row_deep_in_the_file_is_not_a_fixed_step_method() -> None:
@@ -313,8 +313,9 @@ def test_an_honest_run_is_not_a_fixed_step_method(tmp_path: Path, fmu_path: Path
 
 # --- size and speed ------------------------------------------------------------------------------
 
-def test_two_million_rows_judged_in_seconds(tmp_path: Path, fmu_path: Path) -> None:
-    """Target 5 s warm on this machine (issue 26); asserted at 3 times that for a loaded machine."""
+def test_two_million_rows_judged(tmp_path: Path, fmu_path: Path) -> None:
+    """Two million rows judged whole (the time is printed; ``pendulum-fmu bench judge`` measures
+    it; no test asserts a timing)."""
     from pendulum_fmu.bench.judge import write_run
 
     small = write_run(fmu_path, 1_000, tmp_path / "small.csv")
@@ -328,8 +329,6 @@ def test_two_million_rows_judged_in_seconds(tmp_path: Path, fmu_path: Path) -> N
     print(f"judged 1,000 rows in {small_seconds:.3f} s, 2,000,000 rows (CS) in {seconds:.2f} s")
     assert verdict.passed, verdict.line
     assert verdict.check("read").figures["rows"] == 2_000_000
-    assert small_seconds < 3 * 1.0
-    assert seconds < 3 * 5.0
 
 
 def test_bench_judge_prints_its_table(fmu_path: Path) -> None:

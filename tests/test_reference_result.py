@@ -54,7 +54,10 @@ def _default_run(fmu: Path, times: np.ndarray) -> np.ndarray:
 
 def test_reference_is_the_exact_port_and_mpmath(fmu_any: Path) -> None:
     reference = _reference(fmu_any)
-    assert len(reference) == 1001
+    default = read_model_description(str(fmu_any)).defaultExperiment
+    # the experiment's output grid: (stop - start) / stepSize intervals, 640 of 1/32 s
+    assert len(reference) == round((float(default.stopTime) - float(default.startTime)) / float(default.stepSize)) + 1
+    assert len(reference) == 641
     run = _default_run(fmu_any, reference["time"])
     assert np.allclose(run["time"], reference["time"], rtol=0, atol=1e-13)
     assert np.max(np.abs(run["theta_exact"] - reference["theta_exact"])) <= 1e-14
@@ -125,6 +128,9 @@ def test_the_exp_file_is_the_default_experiment(fmu_any: Path) -> None:
     assert experiment.find("Parameters") is None  # the FMU's own start values: nothing to apply
     reference = _reference(fmu_any)
     assert (reference["time"][0], reference["time"][-1]) == (float(default.startTime), float(default.stopTime))
+    # on the experiment's output grid: start + k stepSize, every row
+    step = float(default.stepSize)
+    assert np.array_equal(reference["time"], float(default.startTime) + np.arange(reference["time"].size) * step)
 
 
 def test_the_documentation_page_is_there_and_linked(fmu_any: Path) -> None:

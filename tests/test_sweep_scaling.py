@@ -1,70 +1,91 @@
-"""What a 2-core machine can show of the sweep's scaling (issue 27, item 1): the tasks it sends,
-the scheduler's own cost per task, 2 workers faster than 1 on runs of about 1 ms, and what
-``bench sweep`` prints. The many-core figures come from ``scripts/measure-many-cores.sh``."""
+"""The sweep's tasks and what ``bench sweep`` prints: the tasks it sends for a given run cost,
+the dealing at any cost, the scheduler's cost per task measured, and the benchmark's table.
+No test here asserts a timing (tests/test_no_timed_tests.py): the speed-up of 2 workers over 1,
+the cost per task and the many-core figures are what ``pendulum-fmu bench sweep`` and
+``scripts/measure-many-cores.sh`` print."""
 
 from __future__ import annotations
 
+import math
 import re
-import statistics
 from collections.abc import Sequence
 from pathlib import Path
 
 import pytest
 
-from pendulum_fmu.bench.sweep import bench_points, cores, measure, task_cost
+from pendulum_fmu.bench.sweep import bench_points, cores, task_cost
 from pendulum_fmu.cli.main import main
-from pendulum_fmu.sweep.cluster import TASK_SECONDS, dask_client, execute, task_size
+from pendulum_fmu.sweep.cluster import TASK_SECONDS, TASKS_PER_THREAD, batches, dask_client, execute, task_size
 from pendulum_fmu.sweep.grid import SweepPoint
+
+COST = 0.004
+"""The cost of one run the sweep is handed in the test of its tasks: a fixed figure, so that the
+tasks' sizes are known in advance (a run timed on a loaded machine sized them differently from
+one run to the next, and a test that compared them failed while the sizing was right)."""
 
 
 def test_a_sweep_sends_tasks_of_a_tenth_of_a_second(fmu_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
-    """The tasks really submitted: sized from the run the workers timed, every run once."""
+    """The tasks really submitted: sized from the run cost the workers' timing returns (here
+    fixed at COST, after the real timing ran and returned a positive figure), every run once."""
     import pendulum_fmu.sweep.cluster as cluster
 
+    timed: list[float] = []
+    measured_run_seconds = cluster.measured_run_seconds
+
+    def fixed(client: object, data: object, points: Sequence[SweepPoint]) -> float:
+        timed.append(measured_run_seconds(client, data, points))  # the real timing, on the workers
+        return COST
+
     sizes: list[list[int]] = []
-    measured: list[float] = []
     dealt = cluster.batches
 
     def recording(points: Sequence[SweepPoint], threads: int, batch_size: int | None = None,
-                  run_seconds: float | None = None) -> list[list[SweepPoint]]:
-        assert run_seconds is not None
-        measured.append(run_seconds)
-        parts = dealt(points, threads, batch_size, run_seconds)
+                  cost: float | None = None) -> list[list[SweepPoint]]:
+        assert cost == COST   # the figure the timing returned, handed on
+        parts = dealt(points, threads, batch_size, cost)
         sizes.append([len(part) for part in parts])
         return parts
 
+    monkeypatch.setattr(cluster, "measured_run_seconds", fixed)
     monkeypatch.setattr(cluster, "batches", recording)
     points = bench_points(2000, 1.0)
     rows: list[dict[str, object]] = []
     with dask_client(None, 2) as client:
         execute(client, fmu_path, points, rows.extend, progress=False)
     assert len(rows) == 2000 and len({row["amplitude_deg"] for row in rows}) == 2000
-    (cost,), (tasks,) = measured, sizes
-    assert 1e-5 < cost < 0.05, cost                         # one run of one period: well under 50 ms
-    size = max(tasks)
-    assert sum(tasks) == 2000 and max(tasks) - min(tasks) <= 1
-    assert size == task_size(2000, 2, cost)
-    assert size == 500 or TASK_SECONDS <= size * cost < TASK_SECONDS + cost   # 0.1 s of work, or 2 per worker
-    assert len(tasks) >= 4                                  # at least two per worker
+    (seconds,), (tasks,) = timed, sizes
+    assert seconds > 0                                      # the workers timed a run
+    # 0.1 s of work a task at 4 ms a run: 25 runs, 80 tasks, at least two per worker
+    assert task_size(2000, 2, COST) == 25
+    assert tasks == [25] * 80
 
 
-def test_the_scheduler_costs_about_a_millisecond_a_task(fmu_path: Path) -> None:
-    """Empty tasks: what the sweep pays per task besides its runs, the reason tasks hold 0.1 s."""
+@pytest.mark.parametrize("cost", [1e-7, 1e-4, 0.004, 0.03, 0.2, 5.0])
+@pytest.mark.parametrize(("runs", "threads"), [(1, 1), (7, 2), (2000, 2), (2001, 16), (100_000, 64)])
+def test_tasks_hold_a_tenth_of_a_second_or_two_per_thread(cost: float, runs: int, threads: int) -> None:
+    """The dealing for a given run cost (no clock): every run once, sizes within one of each
+    other, about TASK_SECONDS of work a task, yet at least two tasks a thread when the runs allow."""
+    points = bench_points(runs, 1.0)
+    parts = batches(points, threads, None, cost)
+    sizes = [len(part) for part in parts]
+    assert sorted(p.amplitude_deg for part in parts for p in part) == sorted(p.amplitude_deg for p in points)
+    assert max(sizes) - min(sizes) <= 1
+    size = task_size(runs, threads, cost)
+    assert max(sizes) <= size
+    by_balance = math.ceil(runs / (TASKS_PER_THREAD * threads))
+    assert size == max(1, min(math.ceil(TASK_SECONDS / cost), by_balance))
+    if size > 1:
+        assert (size - 1) * cost < TASK_SECONDS or size == by_balance
+    if runs >= TASKS_PER_THREAD * threads:
+        assert len(parts) >= TASKS_PER_THREAD * threads or size * cost >= TASK_SECONDS
+
+
+def test_the_scheduler_cost_is_measured(fmu_path: Path) -> None:
+    """Empty tasks: what the sweep pays per task besides its runs (``bench sweep`` prints it;
+    its size, about a millisecond, is the reason tasks hold 0.1 s)."""
     with dask_client(None, 2) as client:
         per_task = task_cost(client, 300)
-    assert 1e-5 < per_task < 0.02, per_task
-    assert per_task < TASK_SECONDS / 5
-
-
-def test_two_workers_are_faster_than_one_on_1_ms_runs(fmu_path: Path) -> None:
-    if cores()[2] < 2:
-        pytest.skip("needs 2 usable cores: run it on a machine (or taskset) with two")
-    points = bench_points(1000, 10.0)     # ten periods of dopri5: about 1 ms a run (the issue's runs)
-    one = measure(fmu_path, points, 1, 3)
-    two = measure(fmu_path, points, 2, 3)
-    per_run = statistics.median(one.seconds) / len(points)
-    assert 2e-4 < per_run < 1e-2, per_run
-    assert two.rate > 1.1 * one.rate, (one.rate, two.rate)
+    assert per_task > 0 and math.isfinite(per_task)
 
 
 def test_bench_sweep_prints_cores_efficiency_and_cost_per_task(fmu_path: Path,

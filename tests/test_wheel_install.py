@@ -10,6 +10,7 @@ and library inside the installed package and write under that folder.
 
 from __future__ import annotations
 
+import io
 import os
 import subprocess
 import zipfile
@@ -35,6 +36,8 @@ COMMANDS: list[tuple[list[str], list[str]]] = [  # arguments, files it must writ
     (["bench", "exact", "-n", "20000", "--amplitudes", "80"], []),
     (["bench", "speed", "--repeat", "1"], []),
     (["bench", "sweep", "--runs", "8", "--periods", "1", "--workers", "1", "--repeat", "1"], []),
+    (["cross-check", "xc"], ["xc/fmus/2.0/cs/linux64/PendulumFMU/0.1.0/Pendulum/Pendulum_ref.csv",
+                             "xc/fmus/3.0/me/linux64/PendulumFMU/0.1.0/Pendulum/Pendulum_ref.opt"]),
 ]
 
 
@@ -155,3 +158,58 @@ def test_pip_show_describes_the_package(installed: Path, tmp_path: Path) -> None
     assert fields["Author"] == "The Pendulum FMU contributors"
     assert fields["Requires"].split(", ") == ["fmpy", "matplotlib", "numpy", "pyarrow", "scipy"]
     assert "Documentation, docs/index.md" in done.stdout and "Typing :: Typed" in done.stdout
+
+
+FMU_FILES = ("Pendulum.fmu", "PendulumBody.fmu", "PendulumGravity.fmu", "PendulumSplit.ssp")
+"""The FMUs and the SSP a build makes, in its folder and in its fmi3/ folder."""
+
+
+def _platforms(archive: zipfile.ZipFile) -> set[str]:
+    """The platform folders under an FMU's binaries/."""
+    return {n.split("/")[1] for n in archive.namelist() if n.startswith("binaries/") and n.count("/") > 1}
+
+
+def _same_content(wheel_copy: zipfile.ZipFile, built: zipfile.ZipFile, name: str) -> None:
+    """The same members outside binaries/, byte for byte (an FMU inside an SSP compared as an
+    FMU), and every platform the build's binaries/ holds."""
+    ours = {n for n in wheel_copy.namelist() if not n.startswith("binaries/") and not n.endswith("/")}
+    theirs = {n for n in built.namelist() if not n.startswith("binaries/") and not n.endswith("/")}
+    assert ours == theirs, f"{name}: wheel only {sorted(ours - theirs)}, built only {sorted(theirs - ours)}"
+    for member in sorted(ours):
+        if member.endswith(".fmu"):
+            with zipfile.ZipFile(io.BytesIO(wheel_copy.read(member))) as inner_ours, \
+                    zipfile.ZipFile(io.BytesIO(built.read(member))) as inner_theirs:
+                _same_content(inner_ours, inner_theirs, f"{name}/{member}")
+        else:
+            assert wheel_copy.read(member) == built.read(member), f"{name}: {member} differs"
+    assert _platforms(built) <= _platforms(wheel_copy), name
+
+
+def test_the_installed_fmus_are_the_built_fmus(installed: Path, fmu_path: Path) -> None:
+    """Every FMU and SSP the installed package carries holds the files a plain ``cmake --build``
+    puts into it (the checkout's build/, ``fmu_path``'s folder), byte for byte, the FMI-LS-REF
+    reference result, experiment and manifest under extra/ included; only the binaries differ,
+    the wheel carrying every platform's."""
+    package = next((installed.parent.parent / "lib").glob("python3*/site-packages/pendulum_fmu"))
+    carried = sorted(str(p.relative_to(package)) for p in package.rglob("*") if p.suffix in (".fmu", ".ssp"))
+    expected = sorted([*FMU_FILES, *(f"fmi3/{name}" for name in FMU_FILES)])
+    assert carried == expected
+    for name in expected:
+        with zipfile.ZipFile(package / name) as wheel_copy, zipfile.ZipFile(fmu_path.parent / name) as built:
+            _same_content(wheel_copy, built, name)
+            if name.endswith("Pendulum.fmu"):
+                for member in ("fmi-ls-manifest.xml", "Pendulum.exp", "Pendulum_ref.csv"):
+                    assert f"extra/org.fmi-standard.fmi-ls-ref/{member}" in wheel_copy.namelist(), f"{name}: {member}"
+
+
+def test_simulate_then_judge_from_the_installed_package(installed: Path, tmp_path: Path) -> None:
+    """The two main commands compose from a pip install: a run's file judged with the experiment
+    it records, and the FMU's own FMI-LS-REF experiment found (judge reads the package's FMU)."""
+    env = _clean_env()
+    for argv in (["-a", "179.99", "-p", "3", "-o", "a.csv"],
+                 ["--fmi-version", "3", "-a", "85", "-s", "cvode", "-o", "b.parquet"]):
+        done = _run([str(installed), "simulate", *argv], tmp_path, env, timeout=300)
+        assert done.returncode == 0, done.stderr
+        judged = _run([str(installed), "judge", argv[-1]], tmp_path, env, timeout=300)
+        assert judged.returncode == 0, judged.stdout[-3000:] + judged.stderr
+        assert "verdict         PASS" in judged.stdout

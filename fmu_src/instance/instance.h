@@ -193,8 +193,9 @@ Status instance_do_step(Instance *inst, const char *function, double point, doub
  * the exact port, whose own error is at most CERTIFICATE_EXACT_ERROR in the same units, so it
  * asks |theta - theta_exact| <= (CERTIFICATE_FACTOR tol - CERTIFICATE_EXACT_ERROR) max(1,
  * |theta_exact|) (and the same for omega): by the triangle inequality the true error is then
- * within the bound. Co-Simulation refuses tolerances below INTEGRATOR_TOLERANCE_FLOOR
- * (integrator.h), where the reduced bound would no longer be the tolerance's. */
+ * within the bound. Co-Simulation runs a tolerance below INTEGRATOR_TOLERANCE_FLOOR
+ * (integrator.h), where the reduced bound would no longer be the tolerance's, at the floor,
+ * with a warning (instance/calls.c). */
 #define CERTIFICATE_FACTOR 100.0
 /* The exact port's error bound relative to max(1, |theta|) and max(w0, |omega|): what
  * tests/test_exact_mpmath.py and tests/test_exact_properties.py assert against mpmath at 50

@@ -100,8 +100,8 @@ typedef struct {
 #define INTEGRATOR_REACH 1e-21
 #define INTEGRATOR_REACH_RK4 1e-19
 
-/* The smallest tolerance a Co-Simulation experiment may ask for (instance/calls.c refuses a
- * smaller one, model.c a state that carries one). Below it the step certificate's bound,
+/* The smallest tolerance a Co-Simulation experiment runs at (instance/calls.c runs a smaller
+ * one at this floor, with a warning; model.c refuses a state that carries one). Below it the step certificate's bound,
  * 100 tol less the exact port's own error 5e-14 (instance.h), is not the tolerance's
  * (at 1e-15 it would be half of it, at 5e-16 zero), and the solvers do not follow the
  * tolerance: the adaptive methods' local tolerance stops at 1e-14 (INTEGRATOR_MIN_TOL,

@@ -197,6 +197,10 @@ class TimeGrid:
             return 10 ** 18
         return max(1, math.ceil(ratio - 1e-9)) + 1
 
+    def step(self, reference_period: float) -> float:
+        """The output interval, s: ``output_interval``, else the period over ``points_per_period``."""
+        return self._span(reference_period)[0]
+
     def _span(self, reference_period: float) -> tuple[float, float, float]:
         """The output interval, the stop time (s) and their ratio."""
         step = self.output_interval or reference_period / self.points_per_period

@@ -26,8 +26,15 @@ static void *instantiate(int co_simulation, int logging_on) {
 }
 
 static int setup_and_enter(void *c, int tolerance_defined, double tolerance) {
+    /* a warning (a tolerance below the floor, run at the floor) goes on, as FMI 3.0's one call
+     * does; the worse of the two statuses is the pair's */
     int status = fmi2SetupExperiment(c, tolerance_defined, tolerance, 0.0, fmi2False, 0.0);
-    return status == fmi2OK ? fmi2EnterInitializationMode(c) : status;
+    int entered;
+    if (status != fmi2OK && status != fmi2Warning) {
+        return status;
+    }
+    entered = fmi2EnterInitializationMode(c);
+    return entered > status ? entered : status;
 }
 
 static int enter_initialization(void *c) { return fmi2EnterInitializationMode(c); }

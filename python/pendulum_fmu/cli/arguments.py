@@ -158,7 +158,7 @@ def output_file(*suffixes: str) -> Callable[[str], Path]:
     """A type for an output file whose suffix is one of ``suffixes`` and whose folder is writable."""
     def parse(text: str) -> Path:
         path = Path(text)
-        if path.suffix.lower() not in suffixes:
+        if not path.name.lower().endswith(suffixes):
             raise argparse.ArgumentTypeError(f"the file name must end in {' or '.join(suffixes)}, got {text!r}")
         try:
             return check_output_file(path)

@@ -18,6 +18,7 @@ examples:
   pendulum-fmu compare --amplitude 90 --periods 20 --out compare.png
   pendulum-fmu compare -a 170 --solver rk4 --tolerance 1e-5 --out rk4.png
   pendulum-fmu compare -a 80 --interface ME --tolerance 1e-6 --out cvode.png
+  pendulum-fmu compare -a 120 --out run.png --data run.csv
 """
 
 
@@ -28,6 +29,9 @@ def configure(parser: argparse.ArgumentParser) -> None:
     add_time_arguments(parser, default_periods=10)
     parser.add_argument("-o", "--out", type=output_file(".png"), default="compare.png", metavar="FILE.png",
                         help="the PNG to write (default compare.png)")
+    parser.add_argument("--data", type=output_file(".csv", ".csv.gz", ".parquet"), metavar="FILE",
+                        help="also write the time series drawn, as simulate --out does, with its experiment "
+                             "(docs/results.md)")
     add_fmu_argument(parser)
 
 
@@ -40,4 +44,11 @@ def run(args: argparse.Namespace) -> int:
     trajectory = compare(args.fmu, pendulum, method, grid, args.out)
     print("\n".join(summary_lines(trajectory)))
     print(f"written   {args.out}")
+    if args.data is not None:
+        from pendulum_fmu.cli.simulate import trajectory_columns, trajectory_metadata
+        from pendulum_fmu.output.experiment_record import record_of, write_series
+
+        write_series(trajectory_columns(trajectory), args.data, record_of(trajectory, args.fmu, NAME),
+                     trajectory_metadata(trajectory))
+        print(f"written   {args.data}")
     return 0

@@ -21,11 +21,14 @@ natural period, propagated by the pendulum's linearised flow and summed (docs/im
 it fails the judge says what fits: other parameters or start values, a fixed-step method,
 another tolerance. The check "fmpy band" reports what fmpy's cross-check validation (a band
 of 10 % of each signal's range) says of the same file; it never decides.
-The experiment (start time, tolerance, step, interface) is read from the cross-check
-<Model>_ref.opt when the result sits in a cross-check folder (beside it, or the exporter's
-fmus/ folder for an importer's results/ folder), else from the FMU's FMI-LS-REF experiment
-(extra/org.fmi-standard.fmi-ls-ref/Pendulum.exp, the default experiment); --start, --step
-and --interface say otherwise. --cross-check-verdict DIR writes DIR/passed, DIR/failed or
+The experiment is read from the result's own record when this package wrote it (start
+values, parameters, solver, interface, tolerance, step: FILE.csv.experiment.json beside a CSV,
+a Parquet file's metadata; docs/results.md), else from the cross-check <Model>_ref.opt when
+the result sits in a cross-check folder (beside it, or the exporter's fmus/ folder for an
+importer's results/ folder: start time, tolerance, step, interface), else from the FMU's
+FMI-LS-REF experiment (extra/org.fmi-standard.fmi-ls-ref/Pendulum.exp, the default
+experiment); --start, --step and --interface say otherwise, and the first line names the file.
+A gzipped CSV (run.csv.gz) is read as the CSV. --cross-check-verdict DIR writes DIR/passed, DIR/failed or
 DIR/rejected (unreadable result), the file the cross-check rules ask an importer to publish.
 One line per check, then the verdict. Exit status 0 pass, 1 fail, 2 unreadable input.
 """
@@ -46,7 +49,7 @@ examples:
 def configure(parser: argparse.ArgumentParser) -> None:
     """Add the options of ``judge``."""
     parser.add_argument("result", metavar="RESULT", nargs="+",
-                        help="the result file: CSV or Parquet; with --system split several files or folders of "
+                        help="the result file: CSV (also gzipped) or Parquet; with --system split several files or folders of "
                              "CSV files: runs of one master at different H (the observed order over them)")
     parser.add_argument("--start", action="append", default=[], metavar="NAME=VALUE",
                         help="a value the run set: theta (rad, or e.g. 80deg), omega, L, g, solver, tolerance; "

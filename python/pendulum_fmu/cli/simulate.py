@@ -61,8 +61,10 @@ def configure(parser: argparse.ArgumentParser) -> None:
     add_pendulum_arguments(parser)
     add_method_arguments(parser)
     add_time_arguments(parser, default_periods=10)
-    parser.add_argument("-o", "--out", type=output_file(".csv", ".parquet"), metavar="FILE",
-                        help="write the time series to FILE.csv or FILE.parquet (default: print the summary only)")
+    parser.add_argument("-o", "--out", type=output_file(".csv", ".csv.gz", ".parquet"), metavar="FILE",
+                        help="write the time series to FILE.csv, FILE.csv.gz or FILE.parquet, with its experiment "
+                             "(a CSV's in FILE.csv.experiment.json beside it; docs/results.md) "
+                             "(default: print the summary only)")
     add_fmu_argument(parser)
 
 
@@ -70,7 +72,7 @@ def run(args: argparse.Namespace) -> int:
     """Run ``simulate`` with parsed arguments."""
     from pendulum_fmu.fmu.runner import FmuRunner
     from pendulum_fmu.cli.summary import summary_lines
-    from pendulum_fmu.output.tables import write_table
+    from pendulum_fmu.output.experiment_record import record_of, write_series
 
     pendulum, method, grid = pendulum_from(args), method_from(args), grid_from(args)
     from pendulum_fmu.sizing import planned_run
@@ -79,9 +81,12 @@ def run(args: argparse.Namespace) -> int:
         # refused at once when it cannot fit, naming the time option given
         trajectory = planned_run(runner, pendulum, method, grid, size_option(args))
         version = runner.fmi_version
+        description = runner.model_description
     print(f"fmu       FMI {version}.0, {args.fmu}")
     print("\n".join(summary_lines(trajectory)))
     if args.out is not None:
-        write_table(trajectory_columns(trajectory), args.out, trajectory_metadata(trajectory))
-        print(f"written   {args.out}")
+        record = record_of(trajectory, args.fmu, NAME, description)
+        write_series(trajectory_columns(trajectory), args.out, record, trajectory_metadata(trajectory))
+        beside = "" if args.out.name.lower().endswith(".parquet") else f" (its experiment: {args.out.name}.experiment.json)"
+        print(f"written   {args.out}{beside}")
     return 0

@@ -1,8 +1,10 @@
 """Why theta and omega are beyond the bound: what reproduces them.
 
 In order: a frozen FMU, a print too coarse for the bound, a fixed-step method (Model Exchange),
-an alternative question the values answer (:mod:`pendulum_fmu.judge.alternatives`), a tolerance
-other than the experiment's (the FMU's own solver or CVODE rerun at decades of tolerance).
+an alternative question the values answer (:mod:`pendulum_fmu.judge.alternatives`), for a
+file judged as Co-Simulation a Model Exchange run that reproduces it (a fixed-step method,
+CVODE at the tolerance), a tolerance other than the experiment's (the FMU's own solver or
+CVODE rerun at decades of tolerance).
 """
 
 from __future__ import annotations
@@ -84,10 +86,46 @@ def diagnose(result: Result, ref: checks.Reference, experiment: Experiment, erro
         explanation, _ = found_alternative
         return Check("diagnosis", "info", f"theta and omega: {explanation.line}",
                      {"cause": explanation.cause, **explanation.figures})
+    if experiment.interface == "CS":
+        as_me = _model_exchange_run(result, experiment, errors, h, fmu, worst)
+        if as_me is not None:
+            return as_me
     if fmu is not None and "theta" in errors:
         return _tolerance(result, experiment, errors, fmu, theta_growth)
     return Check("diagnosis", "info", f"no known cause reproduces the error (largest {worst:.1e}, {theta_growth})",
                  {"cause": None})
+
+
+REPRODUCED = 0.1
+"""A rerun reproduces a file when it agrees with its values to this fraction of their largest error."""
+
+
+def _model_exchange_run(result: Result, experiment: Experiment, errors: dict[str, np.ndarray], h: float | None,
+                        fmu: Path | None, worst: float) -> Check | None:
+    """A file judged as Co-Simulation that a Model Exchange run reproduces: a fixed-step method
+    at the file's step (rerun row for row), or CVODE at the experiment's tolerance (its values
+    within :data:`REPRODUCED` of the error). None when neither does."""
+    import dataclasses  # noqa: PLC0415
+
+    as_me = dataclasses.replace(experiment, interface="ME", solver=None)
+    if h is not None:
+        found = inference.identify_fixed_step(result, as_me, h, worst)
+        if found is not None:
+            return Check("diagnosis", "info", f"this is a Model Exchange run of {found.method} at h = {found.step:g} "
+                         f"(reproduced to {found.agreement:.1e}), judged as Co-Simulation: {found.method} with a "
+                         "fixed step ignores the tolerance; judge it with --interface ME",
+                         {"cause": "model exchange", "method": found.method, "step": found.step,
+                          "agreement": found.agreement})
+    if fmu is None or "theta" not in errors:
+        return None
+    theta_error = float(np.max(np.abs(errors["theta"])))
+    agreement = inference.cvode_agreement(fmu, result, as_me)
+    if agreement is None or not agreement <= REPRODUCED * theta_error:
+        return None
+    return Check("diagnosis", "info", f"this is a Model Exchange run of CVODE at tolerance {experiment.tolerance:g} "
+                 f"(fmpy's CVODE reproduces theta to {agreement:.1e}, its error is {theta_error:.1e}), judged as "
+                 "Co-Simulation, whose bound is the FMU's certificate: judge it with --interface ME",
+                 {"cause": "model exchange", "method": "CVODE", "agreement": agreement})
 
 
 def fixed_step_within_bound(result: Result, experiment: Experiment, errors: dict[str, np.ndarray],

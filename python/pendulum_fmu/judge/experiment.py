@@ -173,7 +173,13 @@ class Settings:
     tolerance : float or None
         The relative tolerance.
     interface : {"CS", "ME"} or None
-        From a cross-check folder's ``cs`` / ``me``; None when the file does not say.
+        From a cross-check folder's ``cs`` / ``me``, or the result's own record; None when the
+        file does not say.
+    values : tuple of (name, value)
+        Start values and parameters the file states (names of :data:`NAMES`: a result's own
+        record states theta, omega, L, g and the solver); empty for the FMU's experiment.
+    note : str
+        More of what the file says (a record's FMI version and FMU), for :meth:`describe`.
 
     The step applies only to a result that is a run of the experiment (:meth:`covers`): a file
     on another grid (the cross-check reference, at its own output interval) keeps its own.
@@ -185,6 +191,8 @@ class Settings:
     step: float | None
     tolerance: float | None
     interface: Literal["CS", "ME"] | None = None
+    values: tuple[tuple[str, float | str], ...] = ()
+    note: str = ""
 
     def covers(self, first: float, last: float, rows: int) -> bool:
         """True when a result with these first and last times and rows is a run of this experiment.
@@ -203,11 +211,15 @@ class Settings:
 
     def describe(self) -> str:
         """One line: where the settings come from, and the settings."""
-        parts = [f"startTime {self.start_time:g}", f"stopTime {self.stop_time:g}",
+        parts = [f"{name} {value!r}" if isinstance(value, float) else f"{name} {value}"
+                 for name, value in self.values]
+        parts += [f"startTime {self.start_time:g}", f"stopTime {self.stop_time:g}",
                  f"step {self.step:g}" if self.step is not None else "variable step",
                  f"tolerance {self.tolerance:g}" if self.tolerance is not None else "no tolerance"]
         if self.interface is not None:
             parts.append(self.interface)
+        if self.note:
+            parts.append(self.note)
         return f"{self.source}: {', '.join(parts)}"
 
 
@@ -342,22 +354,54 @@ def cross_check_opt(result: Path) -> Path | None:
     return None
 
 
+def recorded_settings(result: Path) -> Settings | None:
+    """The experiment a result of this package records about itself
+    (:mod:`pendulum_fmu.output.experiment_record`: a CSV's sidecar, a Parquet file's metadata),
+    None when it records none.
+
+    Raises
+    ------
+    UsageError
+        The record exists but cannot be read (naming RESULT).
+    """
+    from pendulum_fmu.output.experiment_record import read_record  # noqa: PLC0415
+
+    try:
+        found = read_record(result)
+    except (OSError, ValueError) as error:
+        raise UsageError("RESULT", f"its experiment record is unreadable: {error}") from None
+    if found is None:
+        return None
+    r = found.record
+    if not r.stop_time > r.start_time:
+        return None
+    asked = f", asked {r.tolerance_asked:g}" if r.tolerance_asked is not None else ""
+    return Settings(found.source, r.start_time, r.stop_time, r.step, r.tolerance, r.interface,
+                    (("theta", r.theta0), ("omega", r.omega0), ("L", r.length), ("g", r.gravity), ("solver", r.solver)),
+                    f"FMI {r.fmi_version} {r.fmu}{asked}, written by {r.writer}")
+
+
 def experiment_settings(result: object, fmu: Path | None = None) -> Settings | None:
     """The experiment a result was run with, as a file states it; None when no file does.
 
-    A cross-check ``_ref.opt`` for a result in a cross-check folder (:func:`cross_check_opt`);
-    else the FMI-LS-REF experiment of ``fmu``, or of the FMU
+    The result's own record (:func:`recorded_settings`: what this package writes with every
+    time series); else a cross-check ``_ref.opt`` for a result in a cross-check folder
+    (:func:`cross_check_opt`); else the FMI-LS-REF experiment of ``fmu``, or of the FMU
     :func:`pendulum_fmu.fmu.locate.locate_fmu` finds without building.
 
     Raises
     ------
     UsageError
-        The ``_ref.opt`` (naming RESULT) or the FMU's experiment (naming ``--fmu``) is unreadable.
+        The record or the ``_ref.opt`` (naming RESULT) or the FMU's experiment (naming
+        ``--fmu``) is unreadable.
     """
     from pendulum_fmu.errors import BuildError  # noqa: PLC0415
     from pendulum_fmu.fmu.locate import locate_fmu  # noqa: PLC0415
 
     if isinstance(result, (str, Path)):
+        recorded = recorded_settings(Path(result))
+        if recorded is not None:
+            return recorded
         opt = cross_check_opt(Path(result))
         if opt is not None:
             try:
@@ -377,19 +421,21 @@ def experiment_settings(result: object, fmu: Path | None = None) -> Settings | N
 
 
 def apply_settings(settings: Settings | None, start: list[str] | None) -> list[str]:
-    """``--start`` with an experiment file's start time and tolerance beneath it.
+    """``--start`` with an experiment file's values, start time and tolerance beneath it.
 
     Returns
     -------
     list of str
-        The ``start`` to judge with: the file's ``startTime`` and ``tolerance`` unless
-        ``start`` names them, then ``start``.
+        The ``start`` to judge with: the file's values (:attr:`Settings.values`), ``startTime``
+        and ``tolerance`` unless ``start`` names them, then ``start``.
     """
     pairs = list(start or [])
     if settings is None:
         return pairs
     named = {pair.partition("=")[0].strip() for pair in pairs}
-    extra = [f"startTime={settings.start_time!r}"] if "startTime" not in named else []
+    extra = [f"{name}={value!r}" if isinstance(value, float) else f"{name}={value}"
+             for name, value in settings.values if name not in named]
+    extra += [f"startTime={settings.start_time!r}"] if "startTime" not in named else []
     if settings.tolerance is not None and "tolerance" not in named:
         extra.append(f"tolerance={settings.tolerance!r}")
     return extra + pairs

@@ -122,6 +122,25 @@ def cvode_errors(fmu: Path, result: Result, experiment: Experiment, tolerances: 
     return out
 
 
+def cvode_agreement(fmu: Path, result: Result, experiment: Experiment) -> float | None:
+    """Largest |theta - CVODE's theta| over the file's rows, CVODE (fmpy's, Model Exchange) run
+    at the experiment's tolerance on the file's grid; None when the rerun's times are not the
+    file's (another grid, or no theta column)."""
+    from fmpy import simulate_fmu  # noqa: PLC0415
+
+    if "theta" not in result.values:
+        return None
+    start, stop = experiment.start_time, float(result.time[-1])
+    interval = (stop - float(result.time[0])) / max(1, result.rows - 1)
+    run = simulate_fmu(str(fmu), fmi_type="ModelExchange", solver="CVode", relative_tolerance=experiment.tolerance,
+                       start_time=start, stop_time=stop, output_interval=interval, output=["theta"],
+                       start_values={"theta": experiment.theta0, "omega": experiment.omega0,
+                                     "L": experiment.L, "g": experiment.g})
+    if run.size != result.rows or not np.allclose(run["time"], result.time, rtol=1e-9, atol=1e-9 * interval):
+        return None
+    return float(np.max(np.abs(run["theta"] - result.values["theta"])))
+
+
 def solver_name(solver: str | None) -> str:
     """The FMU's Co-Simulation solver by name: ``solver`` as given (a name or the enumeration's
     number, 1 = dopri5 ...), or the FMU's default."""

@@ -29,13 +29,20 @@ def _reading_check(result: Result) -> Check:
                                                 {k: f.describe() for k, f in result.formats.items()}})
 
 
-def _experiment_check(experiment: Experiment, where: str) -> Check:
-    given = ", ".join(experiment.given) if experiment.given else "nothing"
+def _experiment_check(experiment: Experiment, where: str, stated_by: tuple[str, tuple[str, ...]] | None) -> Check:
+    """The experiment judged against, and where each of its values came from: given (``--start``),
+    stated by a file (the result's record, a ``_ref.opt``, the FMU's ``.exp``), or the defaults."""
+    from_file = set(stated_by[1]) if stated_by else set()
+    own = [name for name in experiment.given if name not in from_file]
+    given = ", ".join(own) if own else "nothing"
+    stated = (f"; from {Path(stated_by[0]).name}: {', '.join(n for n in experiment.given if n in from_file)}"
+              if stated_by and from_file else "")
     solver = f", solver {experiment.solver}" if experiment.solver else ""
     return Check("experiment", "info", f"{experiment.interface}, theta0 = {experiment.theta0:.10g} rad, "
                  f"omega0 = {experiment.omega0:.10g} rad/s, L = {experiment.L:g} m, g = {experiment.g:g} m/s^2, "
-                 f"tol = {experiment.tolerance:g}{solver} (given: {given}; the rest from {Path(where).name})",
-                 {"defaults_from": where})
+                 f"tol = {experiment.tolerance:g}{solver} (given: {given}{stated}; the rest from {Path(where).name})",
+                 {"defaults_from": where, "stated_by": stated_by[0] if stated_by else None,
+                  "stated": sorted(from_file)})
 
 
 def _exact_fits(result: Result, ref: checks.Reference, experiment: Experiment) -> alternatives.Fits:
@@ -107,7 +114,7 @@ def _exact_columns(result: Result, ref: checks.Reference, experiment: Experiment
 
 def judge(data: Any, *, start: list[str] | dict[str, float | str] | None = None,
           interface: Literal["CS", "ME"] = "CS", instance: str | None = None, step: float | None = None,
-          fmu: Path | None = None) -> Verdict:
+          fmu: Path | None = None, stated_by: tuple[str, tuple[str, ...]] | None = None) -> Verdict:
     """Judge an importer's result of Pendulum.fmu against the exact solution.
 
     Parameters
@@ -126,6 +133,10 @@ def judge(data: Any, *, start: list[str] | dict[str, float | str] | None = None,
     fmu : Path, optional
         The FMU whose model description gives the defaults (and, for Model Exchange, runs
         CVODE to infer a tolerance).
+    stated_by : (str, tuple of str), optional
+        The file that stated part of ``start`` (the result's experiment record, an experiment
+        file) and the names it stated, for the experiment's line (what the caller gave, what
+        the file, what the defaults).
 
     Returns
     -------
@@ -142,7 +153,7 @@ def judge(data: Any, *, start: list[str] | dict[str, float | str] | None = None,
     if result.rows < 2:
         raise ReadError(f"{result.source}: {result.rows} row: a result needs at least two")
     experiment, where = make_experiment(start, interface, fmu)
-    found: list[Check] = [_reading_check(result), _experiment_check(experiment, where)]
+    found: list[Check] = [_reading_check(result), _experiment_check(experiment, where, stated_by)]
     grid, h = checks.time_grid(result, step)
     found.append(grid)
     ref = checks.reference(result, experiment)
@@ -153,7 +164,7 @@ def judge(data: Any, *, start: list[str] | dict[str, float | str] | None = None,
         found.append(Check("importer's values", "fail", "no theta or omega column: the file holds nothing of the "
                            "importer's to judge (theta_exact and omega_exact are the FMU's own outputs)"))
     found += [checks.error_check(result, ref, name, e) for name, e in errors.items()]
-    found.append(checks.isolated_values(result, ref, errors))
+    found.append(checks.isolated_values(result, ref, errors, experiment.interface))
     bound = checks.bound_check(result, ref, experiment, errors)
     found.append(bound)
     if bound.status == "pass" and experiment.interface == "ME":

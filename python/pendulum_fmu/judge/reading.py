@@ -13,7 +13,8 @@ Ecos and fmi-cross-check results, and this package's own ``simulate -o``:
   ``iterations``, libcosim's ``StepCount``, ``x``, ``y``, ...) are ignored; in a pandas
   DataFrame the time may be its index (named as a time column, or unnamed and not the
   default 0, 1, 2, ...);
-- any subset of ``theta``, ``omega``, ``theta_exact``, ``omega_exact`` (at least one).
+- any subset of ``theta``, ``omega``, ``theta_exact``, ``omega_exact`` (at least one);
+- a CSV file gzipped (``run.csv.gz``, as CI artifacts often are), by its signature.
 
 CSV is parsed by Arrow (``pyarrow.csv``) into strings, only the columns used; the numbers
 and the print format are computed on whole columns (:mod:`pendulum_fmu.judge.print_format`).
@@ -53,6 +54,8 @@ _BLANK_LINE = re.compile(rb"\n[ \t]+\r?\n")
 """A line of blanks only (Arrow skips an empty line, not one of blanks)."""
 HEAD_BYTES = 1 << 16
 """The bytes read to recognise a file (Parquet's signature, the CSV header)."""
+GZIP_MAGIC = b"\x1f\x8b"
+"""The first two bytes of a gzip file (RFC 1952): a gzipped CSV is read uncompressed."""
 PANDAS_INDEX = "__index_level_0__"
 """The column pandas stores an unnamed index in, in Parquet."""
 
@@ -369,13 +372,29 @@ def _frame_columns(frame: Any) -> dict[str, Any]:
     return columns
 
 
+def _gunzip(path: Path) -> bytes:
+    """The content of a gzipped file (a CSV result as CI artifacts often are)."""
+    import gzip  # noqa: PLC0415
+    import zlib  # noqa: PLC0415
+
+    try:
+        with gzip.open(path, "rb") as handle:
+            raw = handle.read()
+    except (OSError, EOFError, zlib.error) as error:
+        raise ReadError(f"{path}: a gzip file that cannot be uncompressed ({error})") from None
+    if raw[:4] == b"PAR1":
+        raise ReadError(f"{path}: a gzipped Parquet file: uncompress it first (Parquet compresses itself)")
+    return raw
+
+
 def read_result(data: Any, instance: str | None = None) -> Result:
     """Read a result from a file or from memory.
 
     Parameters
     ----------
     data : str, Path, pandas.DataFrame, numpy structured array or mapping of name to array
-        A CSV or Parquet file (Parquet recognised by its ``PAR1`` signature), or a table.
+        A CSV or Parquet file (Parquet recognised by its ``PAR1`` signature), a gzipped CSV
+        file (by its signature ``1f 8b``, whatever its name), or a table.
     instance : str, optional
         The instance whose columns to use when the result holds several (``pend1.theta``,
         ``pend2.theta``); required then.
@@ -398,6 +417,8 @@ def read_result(data: Any, instance: str | None = None) -> Result:
             raise ReadError(f"{path}: {error.strerror or error}") from None
         if head[:4] == b"PAR1":
             return _read_parquet(path, instance)
+        if head[:2] == GZIP_MAGIC:
+            return read_csv_bytes(_gunzip(path), str(path), instance)
         return read_csv_file(path, head, instance)
     if hasattr(data, "columns") and hasattr(data, "index") and hasattr(data, "__getitem__"):  # a pandas DataFrame
         return _from_columns(_frame_columns(data), type(data).__name__, instance)

@@ -22,9 +22,11 @@ def judge_with_experiment(data: Any, *, start: list[str] | None = None, interfac
                           fmu: Path | None = None) -> tuple[Verdict, Settings | None]:
     """:func:`pendulum_fmu.judge.judge` with the experiment a file states beneath the arguments.
 
-    The experiment is the ``_ref.opt`` of a result in a cross-check folder, else the FMI-LS-REF
-    ``.exp`` of ``fmu`` (or of the FMU found): its start time and tolerance unless ``start``
-    gives them, its interface (a cross-check folder's ``cs``/``me``) unless ``interface`` does,
+    The experiment is the result's own record (what this package writes with every time
+    series: its start values, parameters, solver, interface, tolerance and step), else the
+    ``_ref.opt`` of a result in a cross-check folder, else the FMI-LS-REF ``.exp`` of ``fmu``
+    (or of the FMU found): its values, start time and tolerance unless ``start`` gives them,
+    its interface (a cross-check folder's ``cs``/``me``, the record's) unless ``interface`` does,
     and its step unless ``step`` does, for a result that is a run of the experiment (its span
     and its number of steps, :meth:`Settings.covers`): when the step read from such a file's
     times (rounded to 6 digits) is not the experiment's, the file is judged again with the
@@ -38,13 +40,20 @@ def judge_with_experiment(data: Any, *, start: list[str] | None = None, interfac
     settings = experiment_settings(data, fmu)
     pairs = apply_settings(settings, start)
     chosen: Literal["CS", "ME"] = interface or (settings.interface if settings is not None else None) or "CS"
-    verdict = judge(data, start=pairs, interface=chosen, instance=instance, step=step, fmu=fmu)
+    stated_by = None
+    if settings is not None:
+        named = {pair.partition("=")[0].strip() for pair in start or []}
+        stated = tuple(name for name, _ in settings.values) + ("startTime",) + (
+            ("tolerance",) if settings.tolerance is not None else ())
+        stated_by = (settings.source, tuple(name for name in stated if name not in named))
+    verdict = judge(data, start=pairs, interface=chosen, instance=instance, step=step, fmu=fmu, stated_by=stated_by)
     if settings is None or step is not None or settings.step is None:
         return verdict, settings
     grid = next((check.figures for check in verdict.checks if check.name == "time grid"), {})
     if {"start", "end", "rows", "step"} <= grid.keys() and settings.covers(grid["start"], grid["end"], grid["rows"]) \
             and grid["step"] != settings.step:
-        verdict = judge(data, start=pairs, interface=chosen, instance=instance, step=settings.step, fmu=fmu)
+        verdict = judge(data, start=pairs, interface=chosen, instance=instance, step=settings.step, fmu=fmu,
+                        stated_by=stated_by)
     return verdict, settings
 
 

@@ -8,6 +8,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from pendulum_fmu.fmu.runner import FmuRunner
+from pendulum_fmu.output.experiment_record import record_of, write_record
 from pendulum_fmu.study.figures import plot_comparison_grid, plot_period_ratio, plot_solutions
 from pendulum_fmu.study.hard_cases import HARD_HEADER, hard_rows, hard_summary, run_hard_cases
 from pendulum_fmu.study.report import SPEED_FIGURE, markdown_table, write_html, write_report, write_speed_and_hard_cases
@@ -101,6 +102,10 @@ def write_study(fmu: Path, out: Path, periods: float = 10.0,
     write_speed_and_hard_cases(out, speed, hard)
     say("runs.csv, report.md and report.html")
     write_csv(runs, out / "runs.csv")
+    # each run's experiment, picked out by its interface and amplitude (docs/results.md)
+    write_record(out / "runs.csv", [({"interface": run.method.interface,
+                                      "amplitude_deg": f"{run.pendulum.amplitude_deg:g}"}, record_of(run, fmu, "study"))
+                                    for run in runs])
     rows = table_rows(runs)
     table = format_table(rows)
     write_report(out, table, periods, speed, hard)
