@@ -199,14 +199,23 @@ def read_law(time: np.ndarray, values: dict[str, np.ndarray], resolution: dict[s
     return held_fit(a, tol, signals, k) or mean_fit(a, h, signals, omega, k)
 
 
-def _period(refreshed: np.ndarray) -> int | None:
-    """m when the input was refreshed at exactly every m-th step from the first on, else None."""
-    steps = np.flatnonzero(refreshed)
-    if steps.size < 3 or steps[0] != 0:
-        return None
-    gaps = np.unique(np.diff(steps))
-    if gaps.size == 1 and gaps[0] > 1 and refreshed.size - 1 - steps[-1] < gaps[0]:
-        return int(gaps[0])
+def _multirate_period(lags: np.ndarray, base: int) -> int | None:
+    """m when Body's input was refreshed at every m-th step from the first on, else None.
+
+    Such a master's lag at step k is ``base + k mod m``; where theta barely moves over a step (a
+    turning point) a held value also equals the fresh one to round-off and the step reads as
+    ``base``, which fits too. The schedule must be what most held steps show, so an input stale
+    now and then is not taken for one.
+    """
+    k = np.arange(lags.size)
+    known = lags >= 0
+    for m in range(2, MAX_LAG - base + 2):
+        scheduled = base + k % m
+        held = known & (scheduled > base)
+        fits = (lags == scheduled) | (lags == base)
+        if held.any() and np.all(fits[known]) and \
+                np.count_nonzero(lags[held] == scheduled[held]) >= 0.5 * np.count_nonzero(held):
+            return m
     return None
 
 
@@ -283,10 +292,8 @@ def _lag_findings(lags: np.ndarray) -> tuple[list[Finding], Schedule | None]:
                                                 f"the same communication point at {early.size} of {total} steps "
                                                 f"(first at step {early[0]}): Gravity was fed and read before Body's "
                                                 "input there"))
-    # held over a step = one lag more than the step before: the value was not refreshed
-    refreshed = np.concatenate(([True], ~((lags[1:] == lags[:-1] + 1) & (lags[1:] > base))))
-    period = _period(refreshed)
-    if period is not None and np.all(lags[refreshed][1:] == base):
+    period = _multirate_period(lags, base)
+    if period is not None:
         return findings, Schedule(base, period)
     stale = lags - base
     late = stale[(stale > 0) & (lags >= 0)]
