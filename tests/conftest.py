@@ -56,7 +56,7 @@ def built_wheel(tmp_path_factory: pytest.TempPathFactory) -> Path:
     env = dict(os.environ, PENDULUM_FMU_BUILD_DIR=str(REPO / "build" / "wheel-cmake"))
     # The same pinned zig as the test environment's (python/requirements.lock), at a path that
     # stays: its cache of the C runtimes then survives from run to run (80 s saved a run).
-    import ziglang  # noqa: PLC0415
+    import ziglang
     env["PENDULUM_ZIG"] = str(Path(ziglang.__file__).with_name("zig"))
     env.pop("PENDULUM_FMU", None)
     built = subprocess.run([sys.executable, "-m", "pip", "wheel", ".", "--no-deps", "-v", "-w", str(wheels)],

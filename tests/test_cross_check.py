@@ -50,7 +50,8 @@ def exported(fmu_path: Path, fmu3_path: Path, tmp_path_factory: pytest.TempPathF
 
 def test_export_covers_every_version_interface_and_platform(exported: Path, fmu_path: Path,
                                                             fmu3_path: Path) -> None:
-    folders = sorted(p.relative_to(exported / "fmus").parts[:3] for p in exported.glob("fmus/*/*/*/PendulumFMU/*/Pendulum"))
+    folders = sorted(p.relative_to(exported / "fmus").parts[:3]
+                     for p in exported.glob("fmus/*/*/*/PendulumFMU/*/Pendulum"))
     wanted_2 = {n.split("/")[1] for n in zipfile.ZipFile(fmu_path).namelist() if n.startswith("binaries/")
                 and n.count("/") == 2 and n.split("/")[2]}
     names_3 = {"x86_64-linux": "linux64", "x86_64-windows": "win64", "x86_64-darwin": "darwin64",

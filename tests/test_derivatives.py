@@ -103,7 +103,7 @@ def _period(L: mp.mpf, g: mp.mpf, theta: mp.mpf, omega: mp.mpf) -> mp.mpf:
 
 def _analytic(unknown: str, known: str, s: dict[str, float], initial: bool) -> float:
     """d unknown / d known from the equation, by hand (the FMU's C code is not consulted)."""
-    L, g, th, om = s["L"], s["g"], s["theta"], s["omega"]
+    L, g, th = s["L"], s["g"], s["theta"]
     table = {
         ("theta", "theta"): 1.0, ("omega", "omega"): 1.0, ("der(theta)", "omega"): 1.0,
         ("der(omega)", "theta"): -g / L * math.cos(th), ("der(omega)", "L"): g * math.sin(th) / L**2,

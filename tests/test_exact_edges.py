@@ -15,8 +15,8 @@ import mpmath as mp
 import pytest
 from fmpy.fmi1 import FMICallException
 
-from pendulum_fmu.fmu.exact_port import ExactPort
 from pendulum_fmu.bench.reference import closed_form, exact_frequency, max_abs_diff
+from pendulum_fmu.fmu.exact_port import ExactPort
 from test_exact_properties import errors
 
 THETA_TOL = 5e-14

@@ -28,8 +28,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from pendulum_fmu.bench.reference import (DIGITS, closed_form, exact_frequency, frequency, max_abs_diff,
-                                          omega_scale)
+from pendulum_fmu.bench.reference import DIGITS, closed_form, exact_frequency, frequency, max_abs_diff, omega_scale
 from pendulum_fmu.fmu.exact_port import ExactPort
 from reference_cache import cached
 

@@ -27,8 +27,8 @@ import mpmath as mp
 import numpy as np
 import pytest
 
-from pendulum_fmu.fmu.exact_port import ExactPort
 from pendulum_fmu.bench.reference import closed_form
+from pendulum_fmu.fmu.exact_port import ExactPort
 
 NEAR_TOL = 5e-14
 """theta and omega bound up to a few periods."""

@@ -14,10 +14,10 @@ import zipfile
 from pathlib import Path
 from xml.etree import ElementTree
 
+import fmpy
 import mpmath as mp
 import numpy as np
 import pytest
-import fmpy
 from fmpy import extract, read_model_description, simulate_fmu
 from fmpy.fmi3 import FMU3Slave
 from fmpy.validation import validate_fmu

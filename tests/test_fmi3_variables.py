@@ -83,8 +83,9 @@ def test_default_step_is_the_seed_studys_communication_step(
         both: tuple[ModelDescription, ModelDescription]) -> None:
     """stepSize is one POINTS_PER_PERIOD-th of the exact period of the start state (mpmath), so
     container tools that read it step as the seed study does."""
-    from pendulum_fmu.study.seed import POINTS_PER_PERIOD  # noqa: PLC0415
-    import mpmath as mp  # noqa: PLC0415
+    import mpmath as mp
+
+    from pendulum_fmu.study.seed import POINTS_PER_PERIOD
     for md in both:
         start = {v.name: float(v.start) for v in md.modelVariables if v.name in ("theta", "L", "g")}
         with mp.workdps(40):

@@ -121,7 +121,8 @@ def test_honest_runs_are_honest(corpus_root: Path) -> None:
                                  times - start)
             scale = 1e-6 if case.engine.startswith("Ecos") else 1e-12  # Ecos prints %.6f
             w0 = math.sqrt(float(case.start["g"]) / float(case.start["L"]))
-            assert np.max(np.abs(table[column["theta_exact"]] - theta)) <= scale * max(1.0, float(np.max(np.abs(theta))))
+            largest = max(1.0, float(np.max(np.abs(theta))))
+            assert np.max(np.abs(table[column["theta_exact"]] - theta)) <= scale * largest
             assert np.max(np.abs(table[column["omega_exact"]] - omega)) <= scale * max(w0, float(np.max(np.abs(omega))))
             checked += 1
     assert checked > 250

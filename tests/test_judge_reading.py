@@ -16,8 +16,8 @@ import numpy as np
 import pytest
 
 from pendulum_fmu.judge import ReadError, judge
-from pendulum_fmu.judge.fixed_step import identify_fixed_step
 from pendulum_fmu.judge.experiment import make_experiment
+from pendulum_fmu.judge.fixed_step import identify_fixed_step
 from pendulum_fmu.judge.print_format import Format
 from pendulum_fmu.judge.reading import read_csv_bytes, read_result
 
@@ -115,7 +115,8 @@ def test_random_dialect_files_read_as_the_line_by_line_reader_reads_them(tmp_pat
         delimiter = [",", ";", "\t", " ", ", "][trial % 5]
         quote = delimiter != " " and rng.random() < 0.4
 
-        def cell(name: str, value: float, semicolon: bool = delimiter == ";", quoted: bool = quote) -> str:
+        def cell(name: str, value: float, semicolon: bool = delimiter == ";", quoted: bool = quote,
+                 styles: dict[str, str] = styles) -> str:
             text = repr(float(value)) if styles[name] == "%r" else styles[name] % value
             text = text.replace(".", ",") if semicolon else text
             return f'"{text}"' if quoted else text

@@ -12,9 +12,9 @@ import pytest
 from fmpy import simulate_fmu
 from scipy.special import ellipk
 
-from pendulum_fmu.fmu.period import measured_period
 from fmpy_runs import Scenario, simulate
 from fmu_rebuild import rebuild_from_sources
+from pendulum_fmu.fmu.period import measured_period
 from reference_cache import cached
 
 SEED_AMPLITUDES = (75.0, 80.0, 85.0, 90.0)

@@ -79,7 +79,7 @@ ORDER_CASES = [
 def test_convergence_order_on_p1(unzipped: Path, md: ModelDescription, solver: str, tols: tuple[float, ...],
                                  order: float, band: float) -> None:
     results = [_p1(unzipped, md, solver, tol) for tol in tols]
-    for (_, n1), (_, n2) in zip(results, results[1:]):
+    for (_, n1), (_, n2) in zip(results, results[1:], strict=False):
         assert n2 / n1 == pytest.approx(2.0, rel=0.1), f"steps {n1} -> {n2}: the step did not halve"
     # the order over the whole range of steps (DOPRI5's projected errors alternate between the
     # halvings: 7.35 then 3.90 since issue 21, 5.6 over both)
@@ -120,7 +120,7 @@ def test_default_error_near_the_top_shrinks_with_the_tolerance(p2_default: list[
     # there theta = pi - 1.7e-4 is held to ulp(pi), 2.5e-12 of its distance from the saddle,
     # and each passage's rounding shifts the time spent up there.
     floor = 5e-11
-    for (tol1, e1, _), (tol2, e2, _) in zip(p2_default, p2_default[1:]):
+    for (tol1, e1, _), (tol2, e2, _) in zip(p2_default, p2_default[1:], strict=False):
         # within 2 tol: omega's absolute tolerance is tol w0 since issue 21 (the same steps at
         # every L and g), and tol 1e-6 gives 1.8e-6 here (the certificate's bound: 100 tol)
         assert e1 <= max(2 * tol1, floor) and e2 <= max(2 * tol2, floor)

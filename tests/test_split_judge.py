@@ -24,7 +24,7 @@ L = 2.0
 
 @pytest.mark.parametrize("H", [0.02, 0.005])
 @pytest.mark.parametrize("master", MASTERS, ids=lambda m: m.name)
-def test_names_each_master(master: Master, H: float, tmp_path: Path) -> None:  # noqa: N803
+def test_names_each_master(master: Master, H: float, tmp_path: Path) -> None:
     """120 deg, omega0 0.5 rad/s, L = 2 (given with --start), 1.5 s: named, and it passes
     when it is the Gauss-Seidel master of its coupling (the best of the kind)."""
     run = simulate(master.scheme, master.coupling, H, 1.5, THETA0, OMEGA0, L)

@@ -81,12 +81,12 @@ def write_run(fmu: Path, rows: int, path: Path) -> Path:
     Path
         ``path``.
     """
-    import numpy as np  # noqa: PLC0415
-    import pyarrow as pa  # noqa: PLC0415
-    import pyarrow.csv as pacsv  # noqa: PLC0415
+    import numpy as np
+    import pyarrow as pa
+    import pyarrow.csv as pacsv
 
-    from pendulum_fmu.fmu.runner import FmuRunner  # noqa: PLC0415
-    from pendulum_fmu.spec import Method, Pendulum, TimeGrid  # noqa: PLC0415
+    from pendulum_fmu.fmu.runner import FmuRunner
+    from pendulum_fmu.spec import Method, Pendulum, TimeGrid
 
     grid = TimeGrid(stop=(rows - 1) * OUTPUT_INTERVAL, unit="s", output_interval=OUTPUT_INTERVAL)
     with FmuRunner(fmu) as runner:

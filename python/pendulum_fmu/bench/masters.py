@@ -54,13 +54,13 @@ class Point:
 
     name: str
     kind: str
-    H: float  # noqa: N815
+    H: float
     error: float
     seconds: float
     note: str = ""
 
 
-def engine_error(path: Path, H: float) -> float:  # noqa: N803
+def engine_error(path: Path, H: float) -> float:
     """Largest |theta - exact| of an engine's file, at the times its rows belong to."""
     from pendulum_fmu import exact
 
@@ -103,7 +103,7 @@ def measure(steps: tuple[float, ...] = STEPS, stop: float = STOP, engines: bool 
     """
     points = []
     for master in MASTERS:
-        for H in steps:  # noqa: N806
+        for H in steps:
             run = run_master(master, H, stop)
             points.append(Point(master.name, "master", H, run.error, run.seconds))
     if not engines:
@@ -114,7 +114,7 @@ def measure(steps: tuple[float, ...] = STEPS, stop: float = STOP, engines: bool 
                 continue
             for version in fmi_versions:
                 name = f"{engine} (FMI {version})"
-                for H in steps:  # noqa: N806
+                for H in steps:
                     path = Path(folder) / f"{engine}-{version}-{H:g}.csv"
                     try:
                         run = run_engine(engine, H, stop, path, version)
@@ -139,7 +139,8 @@ def orders(points: list[Point]) -> dict[str, list[float]]:
 def table(points: list[Point]) -> list[str]:
     """The Markdown table: one row per master or engine and H."""
     found = orders(points)
-    lines = ["| master or engine | H (s) | error in theta (rad) | wall s | order | note |", "|---|---:|---:|---:|---:|---|"]
+    lines = ["| master or engine | H (s) | error in theta (rad) | wall s | order | note |",
+             "|---|---:|---:|---:|---:|---|"]
     position: dict[str, int] = {}
     for p in points:
         index = position.get(p.name, 0)

@@ -78,7 +78,8 @@ def run(args: argparse.Namespace) -> int:
         try:
             split = judge_split(args.result, start=args.start, master=args.master, instance=args.instance)
         except (ReadError, ValueError) as error:
-            print(f"pendulum-fmu judge: {'unreadable: ' if isinstance(error, ReadError) else ''}{error}", file=sys.stderr)
+            print(f"pendulum-fmu judge: {'unreadable: ' if isinstance(error, ReadError) else ''}{error}",
+                  file=sys.stderr)
             return 2
         print("\n".join(split.lines))
         return split.exit_code

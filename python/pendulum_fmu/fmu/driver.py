@@ -31,11 +31,11 @@ from typing import Any, Literal, Protocol
 import numpy as np
 
 from pendulum_fmu.errors import BuildError, SimulationError
-from pendulum_fmu.interrupt import deferred_interrupt
-from pendulum_fmu.interrupt import pending as interrupt_pending
 from pendulum_fmu.fmu.library import c_address, find_library, library_file, load_library, platform_folder
 from pendulum_fmu.fmu.log import FmuLog
 from pendulum_fmu.fmu.python_drive import Ending, PythonStretch
+from pendulum_fmu.interrupt import deferred_interrupt
+from pendulum_fmu.interrupt import pending as interrupt_pending
 
 ABI = 1
 """The interface version this module speaks (``PENDULUM_DRIVER_ABI`` in the C header)."""

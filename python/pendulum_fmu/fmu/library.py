@@ -181,7 +181,7 @@ def thread_count(points: int, workers: int | None = None) -> int:
 def chunks(points: int, threads: int) -> list[tuple[int, int]]:
     """``threads`` contiguous ranges ``[start, stop)`` covering ``points``, near-equal, aligned to :data:`ALIGN`."""
     bounds = [min(points, (points * k // threads) // ALIGN * ALIGN) for k in range(threads)] + [points]
-    return [(a, b) for a, b in zip(bounds, bounds[1:]) if b > a]
+    return [(a, b) for a, b in zip(bounds, bounds[1:], strict=False) if b > a]
 
 
 _pool: list[ThreadPoolExecutor] = []
@@ -206,7 +206,7 @@ def _in_threads(evaluate: Callable[[int, int], object], points: int, threads: in
         future.result()
 
 
-def exact(theta0: ArrayLike, omega0: ArrayLike, L: ArrayLike, g: ArrayLike,  # noqa: N803 (physics names)
+def exact(theta0: ArrayLike, omega0: ArrayLike, L: ArrayLike, g: ArrayLike,
           t: ArrayLike, workers: int | None = None) -> tuple[np.ndarray, np.ndarray]:
     """theta(t) and omega(t) of the pendulum theta'' + (g/L) sin(theta) = 0, exactly.
 

@@ -60,7 +60,7 @@ class Reference:
 def reference(result: Result, experiment: Experiment) -> Reference:
     """pendulum_fmu.exact at the file's own times, counted from the experiment's start time,
     and for Model Exchange the allowance of :func:`bound`."""
-    from pendulum_fmu.fmu.library import exact  # noqa: PLC0415
+    from pendulum_fmu.fmu.library import exact
 
     t = result.time - experiment.start_time
     theta, omega = exact(experiment.theta0, experiment.omega0, experiment.L, experiment.g, t)

@@ -79,7 +79,8 @@ def diagnose(result: Result, ref: checks.Reference, experiment: Experiment, erro
                          f"{found.agreement:.1e}: the importer's solver is {found.method} with a fixed step "
                          f"(error {theta_growth})", {"cause": "fixed step", "method": found.method, "step": found.step})
     found_alternative = alternatives.explain({k: result.values[k] for k in errors}, experiment, result.time, h,
-                                             state_fits(ref, experiment, errors), max(1e-6, _largest_resolution(result)))
+                                             state_fits(ref, experiment, errors),
+                                             max(1e-6, _largest_resolution(result)))
     if found_alternative is not None:
         explanation, _ = found_alternative
         return Check("diagnosis", "info", f"theta and omega: {explanation.line}",

@@ -171,7 +171,7 @@ def identify_fixed_step(result: Result, experiment: Experiment, h: float, error:
         The file's largest error against the exact solution (a file without error is not
         a fixed-step method's).
     """
-    from pendulum_fmu.fmu.library import exact  # noqa: PLC0415
+    from pendulum_fmu.fmu.library import exact
 
     names = [n for n in ("theta", "omega") if n in result.values]
     if not names or error <= 0 or not math.isfinite(error) or result.rows < 2:

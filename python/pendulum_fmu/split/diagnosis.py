@@ -35,7 +35,7 @@ class Finding:
     line: str
 
 
-def grid_findings(time: np.ndarray, H: float, resolution: float) -> list[Finding]:  # noqa: N803
+def grid_findings(time: np.ndarray, H: float, resolution: float) -> list[Finding]:
     """Drift of the communication points from t_0 + k H (H the median step)."""
     k = np.arange(time.size)
     off = time - (time[0] + k * H)
@@ -47,7 +47,7 @@ def grid_findings(time: np.ndarray, H: float, resolution: float) -> list[Finding
                              f"t = {time[worst]:.9g} s is {off[worst]:+.3g} s off t0 + k H (H = {H:.6g} s)")]
 
 
-def label_finding(time: np.ndarray, theta_exact: np.ndarray, problem: Problem, H: float) -> Finding | None:  # noqa: N803
+def label_finding(time: np.ndarray, theta_exact: np.ndarray, problem: Problem, H: float) -> Finding | None:
     """Rows labelled one step early: Body's ``theta_exact`` is the exact pendulum at t + H."""
     from pendulum_fmu.fmu.library import exact
 

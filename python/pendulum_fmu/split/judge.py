@@ -16,8 +16,9 @@ the file then behaves as that master).
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass, field
-from typing import Any, Sequence
+from typing import Any
 
 import numpy as np
 
@@ -56,7 +57,7 @@ class SplitVerdict:
 
     passed: bool
     lines: list[str]
-    H: float  # noqa: N815
+    H: float
     error: float
     master: str | None
     findings: list[Finding] = field(default_factory=list)
@@ -147,7 +148,7 @@ def judge_split(data: Any, start: Sequence[str] = (), master: str | None = None,
     named = master_named(master) if master else None
     result = read_coupled(data, instance)
     time, theta = result.time, result.values["theta"]
-    H = float(np.median(np.diff(time))) if time.size >= 3 else math.nan  # noqa: N806
+    H = float(np.median(np.diff(time))) if time.size >= 3 else math.nan
     if not (H > 0 and np.all(np.isfinite(time)) and np.all(np.diff(time) > 0)):
         from pendulum_fmu.judge.reading import ReadError
 
@@ -212,7 +213,7 @@ def judge_split(data: Any, start: Sequence[str] = (), master: str | None = None,
 
 
 def _bound(named: Master | None, behaves: str | None, references: dict[str, tuple[float, float]], error: float,
-           factor: float, H: float) -> tuple[bool, str]:  # noqa: N803
+           factor: float, H: float) -> tuple[bool, str]:
     """The bound's line: against ``named``, else the best master of the coupling the file shows."""
     if named is not None:
         bound_master = named
@@ -226,5 +227,6 @@ def _bound(named: Master | None, behaves: str | None, references: dict[str, tupl
     text = (f"error {error:.3g} is {ratio:.3g} times {bound_master.describe()}'s {best:.3g} at H = {H:.6g}: "
             f"{'within' if within else 'above'} the bound of {factor:g} times")
     if named is not None and behaves is not None and behaves != named.name:
-        return False, f"it behaves as {master_named(behaves).describe()}, not as the {named.describe()} it names; {text}"
+        return False, (f"it behaves as {master_named(behaves).describe()}, not as the {named.describe()} "
+                       f"it names; {text}")
     return within, text

@@ -104,7 +104,7 @@ def aggregate(runs: list[Run]) -> list[Point]:
         bad = [r.status for r in members if r.status != "ok"]
         ok = not bad
 
-        def worst(values: list[float]) -> float:
+        def worst(values: list[float], ok: bool = ok) -> float:
             return max(values) if ok else math.nan
 
         points.append(Point(problem=problem, runner=runner, method=method, tol=tol,
@@ -173,7 +173,7 @@ def cost_at(points: list[Point], error: float, cost: str = "rhs_evaluations") ->
         return math.inf
     if kept[0][0] <= error:
         return kept[0][1]
-    for (e0, c0), (e1, c1) in zip(kept, kept[1:]):
+    for (e0, c0), (e1, c1) in zip(kept, kept[1:], strict=False):
         if e1 <= error <= e0:
             w = math.log(e0 / error) / math.log(e0 / e1)
             return math.exp((1.0 - w) * math.log(c0) + w * math.log(c1))

@@ -22,9 +22,10 @@ from __future__ import annotations
 
 import math
 import time
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any, Callable
+from typing import Any
 
 import numpy as np
 from fmpy import read_model_description, simulate_fmu
@@ -301,7 +302,7 @@ def run_fmu_me(unzipped: Path, grid: Grid, method: str, tol: float) -> Run:
                               record_events=False,
                               start_values={"L": LENGTH, "g": GRAVITY, "theta": case.theta0, "omega": 0.0},
                               output=["theta", "omega"], **options)
-    except Exception as error:  # fmpy raises plain Exceptions for solver failures
+    except Exception as error:  # noqa: BLE001 -- fmpy raises plain Exceptions for solver failures
         run.status, run.note = "failed", str(error).splitlines()[0][:120]
         return run
     finally:

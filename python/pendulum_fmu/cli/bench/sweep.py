@@ -3,8 +3,8 @@
 from __future__ import annotations
 
 import argparse
-import sys
 import statistics
+import sys
 
 import pendulum_fmu.bench.sweep as bench_sweep
 from pendulum_fmu.bench.sweep import bench_points, cores, measure
