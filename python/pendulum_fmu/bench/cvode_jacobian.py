@@ -155,7 +155,9 @@ def run_cvode(fmu: Path, use_jacobian: bool, amplitude_deg: float = 85.0, tolera
         getattr(sundials_cvode, name)(c_void_p(solver.cvode_mem), byref(value))
         counts.append(value.value)
     model.terminate()
-    return CvodeRun(use_jacobian, *counts, max_error=error)
+    steps, rhs_evaluations, difference_quotient_evaluations, jacobian_evaluations = counts
+    return CvodeRun(use_jacobian, steps, rhs_evaluations, difference_quotient_evaluations, jacobian_evaluations,
+                    max_error=error)
 
 
 def table(fmus: list[Path]) -> list[str]:

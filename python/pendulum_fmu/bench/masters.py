@@ -117,12 +117,12 @@ def measure(steps: tuple[float, ...] = STEPS, stop: float = STOP, engines: bool 
                 for H in steps:
                     path = Path(folder) / f"{engine}-{version}-{H:g}.csv"
                     try:
-                        run = run_engine(engine, H, stop, path, version)
+                        engine_run = run_engine(engine, H, stop, path, version)
                     except (EngineError, Exception) as error:  # noqa: BLE001 (any engine's own failure)
                         points.append(Point(name, "engine", H, math.nan, math.nan, f"cannot: {error}"))
                         break
                     note = _judged(path) if H >= JUDGED_FROM else ""
-                    points.append(Point(name, "engine", H, engine_error(path, H), run.seconds, note))
+                    points.append(Point(name, "engine", H, engine_error(path, H), engine_run.seconds, note))
     return points
 
 

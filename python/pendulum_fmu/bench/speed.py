@@ -37,6 +37,7 @@ import statistics
 import time
 from collections.abc import Callable
 from dataclasses import dataclass
+from functools import partial
 from pathlib import Path
 
 import numpy as np
@@ -148,13 +149,13 @@ def measure(fmu: Path, rounds: int = 10) -> list[MethodTimes]:
                 if isinstance(solve, str):
                     unavailable.append(MethodTimes(name, (), times.size, math.nan, solve))
                     continue
-                rtol, error = _loosest(lambda r, s=solve: s(pendulum, times, r), truth)
-                if rtol is None:
+                peer_rtol, error = _loosest(partial(solve, pendulum, times), truth)
+                if peer_rtol is None:
                     unavailable.append(MethodTimes(name, (), times.size, error,
                                               f"never <= {TARGET_ERROR:g} down to rtol {PEER_TOLERANCES[-1]:g}"))
                     continue
-                methods.append(_Method(name, lambda s=solve, r=rtol: s(pendulum, times, r), error,
-                                       f"rtol {rtol:g}, atol rtol/100"))
+                methods.append(_Method(name, partial(solve, pendulum, times, peer_rtol), error,
+                                       f"rtol {peer_rtol:g}, atol rtol/100"))
             seconds: dict[str, list[float]] = {m.name: [] for m in methods}
             for method in methods:
                 method.run()   # warm-up
@@ -175,11 +176,11 @@ def measure(fmu: Path, rounds: int = 10) -> list[MethodTimes]:
         for folder in scratch:
             shutil.rmtree(folder, ignore_errors=True)
     timings = [MethodTimes(m.name, tuple(seconds[m.name]), times.size, m.error, m.setting) for m in methods]
-    order = [PACKAGE, PACKAGE_PYTHON, *LOOP_ROWS, "fmpy FMU2Slave wrappers",
+    rows = [PACKAGE, PACKAGE_PYTHON, *LOOP_ROWS, "fmpy FMU2Slave wrappers",
              "fmpy simulate_fmu", "fmpy simulate_fmu, tuned", NUMBALSODA, "scipy ode dop853 (compiled)",
              "scipy solve_ivp DOP853"]
     every = timings + unavailable
-    return sorted(every, key=lambda t: order.index(t.name) if t.name in order else len(order))
+    return sorted(every, key=lambda t: rows.index(t.name) if t.name in rows else len(rows))
 
 
 def _package_methods(runner: FmuRunner, python_runner: FmuRunner, pendulum: Pendulum, grid: TimeGrid,

@@ -21,12 +21,16 @@ from collections.abc import Callable
 from concurrent.futures import ThreadPoolExecutor
 from functools import lru_cache
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
 from numpy.typing import ArrayLike
 
 from pendulum_fmu.errors import BuildError
 from pendulum_fmu.fmu.build import DEFAULT_BUILD_DIR
+
+if TYPE_CHECKING:
+    from _ctypes import CFuncPtr
 
 ABI = 1
 """The interface version this module speaks (``PENDULUM_EXACT_ABI`` in the C header)."""
@@ -53,7 +57,7 @@ def platform_folder() -> tuple[str, str]:
     return folder, "libpendulum_exact.so"
 
 
-def c_address(function: object) -> int:
+def c_address(function: CFuncPtr) -> int:
     """The C address of a ctypes function of a loaded library (0 for a NULL pointer)."""
     return ctypes.cast(function, ctypes.c_void_p).value or 0
 

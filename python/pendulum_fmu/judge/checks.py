@@ -126,13 +126,13 @@ def time_grid(result: Result, step: float | None = None) -> tuple[Check, float |
     unique = t[keep]
     positive = np.diff(unique)
     h = float(step) if step else nominal_step(float(np.median(positive)))
-    figures: dict[str, float | int | bool | str] = {"rows": n, "start": float(t[0]), "end": float(t[-1]),
+    figures: dict[str, float | int | bool | str | list[int]] = {"rows": n, "start": float(t[0]), "end": float(t[-1]),
                                                     "step": h, "repeated_times": int(repeated.size)}
     if repeated.size and not extra_final_row:
-        k = int(repeated[0])
+        j = int(repeated[0])
         figures["duplicate_rows"] = [int(r) + 1 for r in repeated[:20]]
-        return Check("time grid", "fail", f"{repeated.size} duplicate row(s): t = {t[k]:.10g} s is written again in "
-                     f"row {k + 1}; the pendulum has no events, so no time may repeat", figures), None
+        return Check("time grid", "fail", f"{repeated.size} duplicate row(s): t = {t[j]:.10g} s is written again in "
+                     f"row {j + 1}; the pendulum has no events, so no time may repeat", figures), None
     ratio = positive / h
     multiple = np.rint(ratio)
     on_grid = (multiple >= 1) & (np.abs(ratio - multiple) <= 1e-3 * multiple)

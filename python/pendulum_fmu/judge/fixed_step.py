@@ -147,7 +147,8 @@ def _rerun(method: str, parts: int, experiment: Experiment, steps: np.ndarray, r
     """theta and omega (rows x 2) of ``method`` run step by step from the start values."""
     c = experiment.g / experiment.L
     out = np.empty((rows, 2))
-    theta, omega = experiment.theta0, experiment.omega0
+    theta: Vector = experiment.theta0
+    omega: Vector = experiment.omega0
     out[0] = theta, omega
     for k in range(1, rows):
         theta, omega = advance(method, theta, omega, float(steps[k - 1]), parts, c)

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import math
 from pathlib import Path
+from typing import TYPE_CHECKING, Any
 
 import matplotlib
 
@@ -24,8 +25,11 @@ from pendulum_fmu.fmu.period import exact_period_ratio
 from pendulum_fmu.fmu.runner import Trajectory
 from pendulum_fmu.study.seed import PeriodCurve
 
-STYLE = {"font.size": 12, "axes.titlesize": 13, "axes.labelsize": 12, "legend.fontsize": 11,
-         "xtick.labelsize": 11, "ytick.labelsize": 11}
+if TYPE_CHECKING:
+    from matplotlib.typing import RcKeyType
+
+STYLE: dict[RcKeyType, Any] = {"font.size": 12, "axes.titlesize": 13, "axes.labelsize": 12, "legend.fontsize": 11,
+                                 "xtick.labelsize": 11, "ytick.labelsize": 11}
 NUMERIC_COLOR = "tab:blue"
 EXACT_COLOR = "black"
 ME_COLOR = "tab:orange"

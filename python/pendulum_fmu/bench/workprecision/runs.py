@@ -285,7 +285,7 @@ def run_fmu_me(unzipped: Path, grid: Grid, method: str, tol: float) -> Run:
     md = read_model_description(str(unzipped), validate=False)
     fmu = instantiate_fmu(str(unzipped), md, "ModelExchange")
     counter = [0]
-    fmu.getDerivatives = _counting(fmu.getDerivatives, counter)  # type: ignore[method-assign]
+    fmu.getDerivatives = _counting(fmu.getDerivatives, counter)
     case = grid.case
     options: dict[str, Any]
     every = 1
