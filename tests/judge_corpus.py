@@ -1,5 +1,5 @@
 """The judge's test corpus: honest runs that must pass and wrong runs that must fail, each
-wrong one with the reason its verdict line must name (issue 26, "Done when", first bullet).
+wrong one with the reason its verdict line must name.
 
 Generated, deterministic from a seed, into a folder: one CSV file a run, as the engine writes
 it, and ``manifest.json`` with each run's truth (what ``judge(..., start=..., interface=...)``

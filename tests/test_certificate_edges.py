@@ -1,4 +1,4 @@
-"""The step certificate at its edges (issue 26, item 7), against an independent mpmath reference.
+"""The step certificate at its edges, against an independent mpmath reference.
 
 Every Co-Simulation ``fmi2DoStep`` that returns OK certifies that the TRUE error is within the
 bound (``docs/certificate.md``)::
@@ -9,8 +9,8 @@ Here ``theta(t)``, ``omega(t)`` come from mpmath's Jacobi elliptic functions at 
 (:func:`true_state`, written for this test from the pendulum's closed form, not from the FMU's
 exact port), at the step's end time as the FMU holds it (a double), measured from the start
 time exactly. The runs: random states (libration, rotation, near the separatrix), L and g in
-1e-3 .. 1e3, tolerances 1e-4 .. 1e-12, start times 0 and +-1 .. 2^41, every solver. The issue's own
-cases are tests of their own: the start times that were refused, the rk4 case whose OK was
+1e-3 .. 1e3, tolerances 1e-4 .. 1e-12, start times 0 and +-1 .. 2^41, every solver. The cases once
+found wrong are tests of their own: the start times that were refused, the rk4 case whose OK was
 1 + 9.7e-6 of the true bound, and the tolerances below the floor that are now refused with
 their reason.
 """
@@ -214,7 +214,7 @@ def test_reference_solves_the_pendulum() -> None:
                 assert abs((om_plus - om_minus) / (2 * dt) + w0sq * mp.sin(th)) < 1e-18
 
 
-def test_issue_start_times_are_ok_and_within_the_true_bound(fmi2: Fmi2) -> None:
+def test_far_start_times_are_ok_and_within_the_true_bound(fmi2: Fmi2) -> None:
     """The steps the minimum step of absolute time refused ("step size underflow"): OK now, for
     every solver, within the true bound."""
     deg75 = math.radians(75.0)
@@ -227,7 +227,7 @@ def test_issue_start_times_are_ok_and_within_the_true_bound(fmi2: Fmi2) -> None:
 
 def test_rk4_first_crossing_is_not_ok_beyond_the_true_bound(fmi2: Fmi2) -> None:
     """rk4 at tol 1e-12 from theta0 = 0, omega0 = 6.264183967988169 (L = 1, g = 9.81), the
-    issue's case whose first crossing was OK at 1 + 9.7e-6 of the true bound: every OK on a grid
+    case whose first crossing was once OK at 1 + 9.7e-6 of the true bound: every OK on a grid
     of 0.05 s up to the first warning, and at each end time of a bisection of that crossing (one
     DoStep from 0 each: the steps do not depend on the grid), is within the true bound."""
     start = Start(0.0, 6.264183967988169, 1.0, 9.81)

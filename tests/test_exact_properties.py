@@ -1,4 +1,4 @@
-"""Random states against mpmath at adaptive precision (issue 11): the exact port everywhere.
+"""Random states against mpmath at adaptive precision: the exact port everywhere.
 
 States: theta0 uniform in [-4 pi, 4 pi]; L and g log-uniform in 1e-6 .. 1e6; omega0 at rest,
 across scales (1e-3 .. 1e2 times the separatrix speed, both signs) and within a few ulps of
@@ -34,7 +34,7 @@ NEAR_TOL = 5e-14
 """theta and omega bound up to a few periods."""
 
 FAR_TOL = 5e-14
-"""theta bound after 1e6 periods (issue 11, defect 3), relative to max(1, |theta|)."""
+"""theta bound after 1e6 periods, relative to max(1, |theta|)."""
 
 
 

@@ -1,4 +1,4 @@
-"""With one state per point, ``exact()`` adds at most 20 % to the C call it wraps (issue 27, item 3).
+"""With one state per point, ``exact()`` adds at most 20 % to the C call it wraps.
 
 CPU time of this process (``time.process_time``), best of five interleaved rounds, so the
 load of other processes on the machine does not count. The C call is ``pendulum_exact_many``

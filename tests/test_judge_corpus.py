@@ -1,4 +1,4 @@
-"""The judge against its corpus (tests/judge_corpus.py; issue 26): every honest run passes,
+"""The judge against its corpus (tests/judge_corpus.py): every honest run passes,
 every wrong run fails and names its reason, in the tuning part and in the held-out part.
 
 Both parts are generated once a session into a temporary folder and judged in two processes.

@@ -185,7 +185,7 @@ def test_container_of_two_pendulums_in_fmpy(fmu_path: Path, tmp_path: Path) -> N
     done = subprocess.run([str(fmucontainer), "-container", "two.csv:0.01"], cwd=tmp_path, capture_output=True,
                           text=True, timeout=300, check=False)
     assert (tmp_path / "two.fmu").exists(), done.stdout[-2000:] + done.stderr[-2000:]
-    # the container's modelDescription fails fmpy's validation (engines.md): run without it
+    # the container's modelDescription fails fmpy's validation (docs/importers.md): run without it
     result = simulate_fmu(str(tmp_path / "two.fmu"), stop_time=10.0, output_interval=0.01, validate=False)
     write_csv(tmp_path / "two_result.csv", result)
     with pytest.raises(ReadError, match="several instances"):

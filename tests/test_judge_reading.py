@@ -1,4 +1,4 @@
-"""The judge reads any file of any size, fast (issue 26, item 5): this package's own ``simulate``
+"""The judge reads any file of any size, fast: this package's own ``simulate``
 output, fmuCheck's extra final row, a DataFrame indexed by time, a numpy structured array;
 2 million rows in seconds; fixed-step methods recognised at any length; the print resolution
 of each cell as the cell-by-cell rule gives it."""
@@ -280,7 +280,7 @@ def test_a_fixed_step_method_is_recognised_on_100000_rows(symplectic: bool, part
 
 
 def test_two_million_euler_rows_recognised_in_well_under_a_second() -> None:
-    """Target: well under 1 s on this machine (issue 26); asserted at 3 s for a loaded machine."""
+    """Target: well under 1 s on this machine; asserted at 3 s for a loaded machine."""
     rows = np.array(euler_run(0.01, 19_999.99))
     data = read_result({"time": rows[:, 0], "theta": rows[:, 1], "omega": rows[:, 2]})
     assert data.rows >= 2_000_000
@@ -315,7 +315,7 @@ def test_an_honest_run_is_not_a_fixed_step_method(tmp_path: Path, fmu_path: Path
 # --- size and speed ------------------------------------------------------------------------------
 
 def test_two_million_rows_judged_in_seconds(tmp_path: Path, fmu_path: Path) -> None:
-    """Target 5 s warm on this machine (issue 26); asserted at 3 times that for a loaded machine."""
+    """Target 5 s warm on this machine; asserted at 3 times that for a loaded machine."""
     from pendulum_fmu.bench.judge import write_run
 
     small = write_run(fmu_path, 1_000, tmp_path / "small.csv")

@@ -1,4 +1,4 @@
-"""Ctrl-C at random moments through the installed ``pendulum-fmu`` console script (issue 27).
+"""Ctrl-C at random moments through the installed ``pendulum-fmu`` console script.
 
 A terminal's Ctrl-C reaches the whole process group: the command, its Dask nanny and worker
 processes and multiprocessing's resource tracker. The console script's main module is

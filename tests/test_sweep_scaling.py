@@ -1,4 +1,4 @@
-"""What a 2-core machine can show of the sweep's scaling (issue 27, item 1): the tasks it sends,
+"""What a 2-core machine can show of the sweep's scaling: the tasks it sends,
 the scheduler's own cost per task, 2 workers faster than 1 on runs of about 1 ms, and what
 ``bench sweep`` prints. The many-core figures come from ``scripts/measure-many-cores.sh``."""
 
@@ -59,7 +59,7 @@ def test_the_scheduler_costs_about_a_millisecond_a_task(fmu_path: Path) -> None:
 def test_two_workers_are_faster_than_one_on_1_ms_runs(fmu_path: Path) -> None:
     if cores()[2] < 2:
         pytest.skip("needs 2 usable cores: run it on a machine (or taskset) with two")
-    points = bench_points(1000, 10.0)     # ten periods of dopri5: about 1 ms a run (the issue's runs)
+    points = bench_points(1000, 10.0)     # ten periods of dopri5: about 1 ms a run
     one = measure(fmu_path, points, 1, 3)
     two = measure(fmu_path, points, 2, 3)
     per_run = statistics.median(one.seconds) / len(points)

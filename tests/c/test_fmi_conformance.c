@@ -1,5 +1,5 @@
 /* test_fmi_conformance.c: two conformance points of the FMI 2.0 library found by independent
- * importers (issue 21, item 6), tested as an importer meets them:
+ * importers, tested as an importer meets them:
  *  - with loggingOn, every call logs exactly one logCalls message (a layer that checks the
  *    mode twice logs twice);
  *  - fmi2FreeFMUstate frees only a live state of this instance: the state itself passed

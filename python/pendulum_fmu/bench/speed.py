@@ -1,6 +1,6 @@
 """Benchmark: one simulation from Python, the package's path against fmpy and compiled peers.
 
-The problem (issue 12): released from rest at 80 deg, L = 1 m, g = 9.81 m/s^2, 100 exact
+The problem: released from rest at 80 deg, L = 1 m, g = 9.81 m/s^2, 100 exact
 periods, 8 output points a period; every method must reach max |theta - theta_exact| <= 1e-9
 on the output points (the truth from pendulum_fmu.exact). Every method runs at the loosest
 tolerance of 1e-7 .. 1e-13 (decades) that reaches that error. After one warm-up each, the
@@ -20,7 +20,7 @@ for collecting another's garbage); best and median over the rounds are reported.
 - fmpy simulate_fmu: simulate_fmu("Pendulum.fmu", ...) as a user calls it (it extracts the
   FMU every call); tuned: extracted once, only theta recorded, the model description read once;
 - numbalsoda dop853: numbalsoda's C++ DOP853 with a numba-compiled right-hand side, called
-  once for the whole grid: the compiled peer of issue 18. Optional (it builds from source only,
+  once for the whole grid: the compiled peer. Optional (it builds from source only,
   with a Fortran compiler: apt-get install gfortran and pip install numba==0.68.1
   numbalsoda==0.3.4); without it its row says so;
 - scipy ode dop853: Hairer's compiled DOP853 (Fortran) with a Python right-hand side;

@@ -26,7 +26,7 @@ EXACT_AGREEMENT = 1e-13
 resolution: the FMU's exact outputs and the library are the same C code (bit for bit on one
 platform; within 1.1e-15 across the ones measured)."""
 CS_FACTOR = 100.0
-"""The certificate's bound (BOUND.md): 100 tol."""
+"""The certificate's bound (docs/certificate.md): 100 tol."""
 ME_FACTOR = 300.0
 """Model Exchange: the importer's solver may make a local error of 300 tol (times the scales
 max(1, |theta|), max(w0, |omega|)) per natural period 2 pi / w0, propagated by the pendulum's
@@ -326,7 +326,7 @@ def me_allowance(ref: Reference, experiment: Experiment) -> Allowance:
 def bound(name: str, ref: Reference, experiment: Experiment) -> np.ndarray:
     """The allowed |error| of ``name`` ("theta" or "omega") at each time.
 
-    Co-Simulation, the certificate's bound (BOUND.md): 100 tol max(1, |theta_e|) and
+    Co-Simulation, the certificate's bound (docs/certificate.md): 100 tol max(1, |theta_e|) and
     100 tol max(w0, |omega_e|). Model Exchange: a local error of ME_FACTOR tol (the same
     scales) per natural period 2 pi / w0, each propagated to the row's time by the pendulum's
     linearised flow (the energy error's phase drift included) and summed, plus ME_FACTOR tol

@@ -4,7 +4,7 @@ Each engine runs ``PendulumSplit.ssp`` (or its two FMUs) with a fixed macro step
 stop time and leaves ``time, Body.theta, Body.omega, Body.theta_exact, Body.omega_exact,
 Gravity.alpha`` (the columns the engine itself names; its own times). libcosim and Ecos run in
 a child process: libcosim aborts the process on an FMU error, Ecos needs tbb's library folder
-on ``LD_LIBRARY_PATH`` before the interpreter starts (/work/shared/reference/engines.md).
+on ``LD_LIBRARY_PATH`` before the interpreter starts (docs/importers.md).
 
 Engines: ``fmpy-ssp`` (``fmpy.ssp.simulation.simulate_ssp``), ``libcosim``
 (``CosimExecution.from_ssp_file``, FMI 2.0 only), ``ecos`` (``EcosSimulation(ssp_path=...)``),

@@ -1,5 +1,5 @@
 /* test_fmi3_conformance.c: the conformance points of tests/c/test_fmi_conformance.c for the
- * FMI 3.0 library (issue 21, item 6):
+ * FMI 3.0 library:
  *  - with loggingOn, every call logs exactly one logCalls message (fmi3GetFloat64,
  *    fmi3SetFloat64, fmi3GetInt32, fmi3GetInt64 and fmi3EnterInitializationMode once logged
  *    two: the layer and the shared instance each checked the mode);

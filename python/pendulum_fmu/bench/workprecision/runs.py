@@ -175,8 +175,8 @@ class _CountingRhs:
 
 
 PEER_ATOL_FACTOR = 1e-2
-"""scipy peers run at atol = rtol * PEER_ATOL_FACTOR (the issue's DOP853 reference uses
-rtol 1e-10 with atol 1e-12)."""
+"""scipy peers run at atol = rtol * PEER_ATOL_FACTOR (the DOP853 reference
+runs at rtol 1e-10 with atol 1e-12)."""
 
 
 def run_solve_ivp(grid: Grid, method: str, rtol: float, atol: float | None = None) -> Run:

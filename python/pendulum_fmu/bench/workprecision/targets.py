@@ -1,4 +1,4 @@
-"""The targets of the solver issue, each measured and judged.
+"""The solvers' work-precision targets, each measured and judged.
 
 1. The default solver reaches every error from 1e-4 to 1e-12 on P1 with fewer right-hand-side
    evaluations than DOP853 (scipy's ``solve_ivp`` and Hairer's ``dop853`` through
