@@ -227,7 +227,7 @@ def test_output_derivatives_are_the_exact_solutions(fmu_any: Path, regime: str) 
 
 
 def test_figures_of_the_jacobian_check(fmu_path: Path, fmu3_path: Path) -> None:
-    """Prints the README's figures (pytest -s): the largest relative deviation of the FMU's
+    """Prints docs/fmi.md's table (pytest -s): the largest relative deviation of the FMU's
     partials from the analytic ones and from central differences, per regime, both versions."""
     print("\nversion  regime               pairs  max rel. dev. analytic  max rel. dev. central diff.")
     for fmu in (fmu_path, fmu3_path):

@@ -13,7 +13,7 @@ Bounds (absolute theta error relative to max(1, |theta|); omega relative to its 
 5e-14 up to a few periods and after 1e6 periods, also within ulps of the separatrix (where
 m1 is formed in triple-double: in double-double the phase after 1e6 periods was 1.9e-12
 off there). ``python tests/test_exact_properties.py [FMU [COUNT]]`` prints the errors state
-by state and the worst cases (README, accuracy section).
+by state and the worst cases (docs/math.md, its accuracy).
 """
 
 from __future__ import annotations

@@ -116,7 +116,7 @@ def test_default_never_turns_the_libration_near_the_top_into_a_rotation(
 
 
 def test_default_error_near_the_top_shrinks_with_the_tolerance(p2_default: list[tuple[float, float, float]]) -> None:
-    # Down to the rounding floor of double precision near the top (1e-11 to 4e-11, README):
+    # Down to the rounding floor of double precision near the top (1e-11 to 4e-11):
     # there theta = pi - 1.7e-4 is held to ulp(pi), 2.5e-12 of its distance from the saddle,
     # and each passage's rounding shifts the time spent up there.
     floor = 5e-11

@@ -161,7 +161,7 @@ def run_cvode(fmu: Path, use_jacobian: bool, amplitude_deg: float = 85.0, tolera
 
 
 def table(fmus: list[Path]) -> list[str]:
-    """The lines of the README's CVODE figure: each FMU without and with its Jacobian."""
+    """The lines of the CVODE figure of docs/fmi.md: each FMU without and with its Jacobian."""
     lines = ["FMU                         Jacobian          steps  RHS evals  of which for J  J evals"
              "  max|theta-exact|"]
     for fmu in fmus:
