@@ -66,6 +66,14 @@ def built_wheel(tmp_path_factory: pytest.TempPathFactory) -> Path:
     return wheel
 
 
+def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
+    """A test that needs the wheel (built by ``pip wheel``, minutes) is ``slow``, whatever its file:
+    ``bash scripts/test.sh --fast`` leaves it out."""
+    for item in items:
+        if "built_wheel" in getattr(item, "fixturenames", ()):
+            item.add_marker(pytest.mark.slow)
+
+
 @pytest.hookimpl(hookwrapper=True)
 def pytest_runtest_makereport(item: pytest.Item, call: pytest.CallInfo[None]):  # type: ignore[no-untyped-def]
     """With ``PENDULUM_NO_SKIP=1`` (set by ``.ci/run``, whose install script provides every tool),

@@ -100,6 +100,7 @@ def test_bench_lists_the_benchmarks_available(capsys: pytest.CaptureFixture[str]
         assert module.NAME in out
 
 
+@pytest.mark.slow
 def test_bench_sweep_prints_runs_per_second(fmu_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     assert main(["bench", "sweep", "--runs", "24", "--periods", "2", "--workers", "1", "--repeat", "1",
                  "--fmu", str(fmu_path)]) == 0
@@ -122,6 +123,7 @@ def test_bench_accuracy_prints_every_regime_within_5e_14(fmu_path: Path, capsys:
     assert float(cases[-1][3]) > 1e-12  # the naive scipy evaluation after 1e6 periods is far worse
 
 
+@pytest.mark.slow
 def test_bench_speed_prints_the_package_beside_its_peers(fmu_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     """Every row at the same error target; the package's rows (C loop, the Python loop before it,
     the C loop alone with 2, 4 and 6 outputs) and the peers' in machine-readable lines."""

@@ -104,6 +104,7 @@ def _run_from(fmu: Path, start_time: float, interface: str = "CoSimulation", **o
                         output_interval=0.02, output=OUTPUTS, **options)  # type: ignore[arg-type]
 
 
+@pytest.mark.slow
 def test_judge_takes_the_experiment_from_a_ref_opt(fmu_path: Path, tmp_path: Path) -> None:
     """A run from t = 5 s: wrong against the default start time 0, right with the folder's
     _ref.opt, which also says Model Exchange (the folder's me) and its tolerance."""

@@ -179,6 +179,7 @@ ODE_CASES: dict[str, tuple[float, float, float, float, tuple[float, ...]]] = {
 }
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("case", list(ODE_CASES))
 def test_against_ode_integration(port: ExactPort, case: str) -> None:
     """theta and omega agree with a 50-digit Taylor integration of the ODE itself."""

@@ -268,6 +268,7 @@ def test_binary_and_missing_files_exit_2(tmp_path: Path) -> None:
 
 # --- the command line ---------------------------------------------------------------------------
 
+@pytest.mark.slow
 def test_cli_exit_codes_json_and_plot(cs_run: np.ndarray, fmu_path: Path, tmp_path: Path) -> None:
     write_csv(tmp_path / "good.csv", cs_run)
     done = judge_cli(str(tmp_path / "good.csv"), "--start", "theta=80deg", "--json", str(tmp_path / "v.json"),

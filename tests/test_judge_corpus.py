@@ -23,7 +23,7 @@ import judge_corpus as corpus
 from engine_runs import missing
 from judge_corpus import Case, Outcome
 
-pytestmark = pytest.mark.filterwarnings("ignore::RuntimeWarning")
+pytestmark = [pytest.mark.slow, pytest.mark.engines, pytest.mark.filterwarnings("ignore::RuntimeWarning")]
 
 
 def _require_fmus() -> None:

@@ -29,6 +29,8 @@ from fmpy.util import write_csv
 from engine_runs import FMUTOOL_INSTALL, ecos_environment, missing, run_ecos, run_libcosim, tbb_library_folder
 from pendulum_fmu.judge import ReadError, judge
 
+pytestmark = pytest.mark.engines
+
 THETA0 = math.radians(80.0)
 STARTS = {"theta": THETA0, "L": 2.0}
 JUDGED_AS = ["theta=80deg", "L=2"]

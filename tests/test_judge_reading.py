@@ -279,6 +279,7 @@ def test_a_fixed_step_method_is_recognised_on_100000_rows(symplectic: bool, part
     assert found.every_step < 1e-9
 
 
+@pytest.mark.slow
 def test_two_million_euler_rows_recognised_in_well_under_a_second() -> None:
     """Target: well under 1 s on this machine; asserted at 3 s for a loaded machine."""
     rows = np.array(euler_run(0.01, 19_999.99))
@@ -314,6 +315,7 @@ def test_an_honest_run_is_not_a_fixed_step_method(tmp_path: Path, fmu_path: Path
 
 # --- size and speed ------------------------------------------------------------------------------
 
+@pytest.mark.slow
 def test_two_million_rows_judged_in_seconds(tmp_path: Path, fmu_path: Path) -> None:
     """Target 5 s warm on this machine; asserted at 3 times that for a loaded machine."""
     from pendulum_fmu.bench.judge import write_run
@@ -333,6 +335,7 @@ def test_two_million_rows_judged_in_seconds(tmp_path: Path, fmu_path: Path) -> N
     assert seconds < 3 * 5.0
 
 
+@pytest.mark.slow
 def test_bench_judge_prints_its_table(fmu_path: Path) -> None:
     done = cli("bench", "judge", "--rows", "1000", "--interface", "CS", "ME", "--fmu", str(fmu_path))
     assert done.returncode == 0, done.stderr

@@ -38,6 +38,8 @@ from platform_runs import (
 sys.path.insert(0, str(REPO_ROOT / "cmake"))
 from fat_macho import fat_binary, thin_slice
 
+pytestmark = [pytest.mark.slow, pytest.mark.engines]
+
 AGREEMENT = 1e-13
 """Largest allowed |difference| from the linux64 binary, per value: agreement to 1e-13 across platforms."""
 GLIBC_FLOOR = (2, 17)

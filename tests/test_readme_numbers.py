@@ -20,6 +20,8 @@ from pathlib import Path
 
 import pytest
 
+pytestmark = pytest.mark.slow
+
 REPO = Path(__file__).resolve().parents[1]
 README = (REPO / "README.md").read_text(encoding="utf-8")
 FIGURES = (REPO / "docs" / "figures.md").read_text(encoding="utf-8")
@@ -122,7 +124,8 @@ def test_accuracy_worst_case_is_the_printed_one(accuracy: dict[str, list[str]]) 
     quoted, where = re.fullmatch(rf"at most ({NUMBER}) rad \(theta0 = (\w+)\)", figure).groups()
     every_regime = {case: float(cells[1]) for case, cells in accuracy.items() if "1e6 periods" not in case}
     worst = max(every_regime, key=every_regime.__getitem__)
-    assert agrees(quoted, every_regime[worst]), f"docs/figures.md says {quoted}; bench accuracy prints {every_regime[worst]}"
+    assert agrees(quoted, every_regime[worst]), \
+        f"docs/figures.md says {quoted}; bench accuracy prints {every_regime[worst]}"
     assert worst == "pi (the double)" and where == "pi", f"the worst case is now {worst}"
 
 
@@ -188,7 +191,8 @@ def test_speed_row_error_and_ratio_direction(fmu_path: Path) -> None:
     runs = {m.group(1): (float(m.group(2)), float(m.group(3))) for m in re.finditer(
         rf"bench_speed method='([^']+)' best_ms=({NUMBER}) median_ms={NUMBER} error=({NUMBER})", printed)}
     runner_ms, runner_error = runs["package, C loop (FmuRunner)"]
-    assert agrees(quoted_error, runner_error), f"docs/figures.md says error {quoted_error}; bench speed prints {runner_error}"
+    assert agrees(quoted_error, runner_error), \
+        f"docs/figures.md says error {quoted_error}; bench speed prints {runner_error}"
     fmpy_ms, _ = runs["fmpy simulate_fmu"]
     assert fmpy_ms / runner_ms > 5, f"the runner is only {fmpy_ms / runner_ms:.1f} times faster than simulate_fmu"
     assert "20x fmpy's `simulate_fmu`" in figure

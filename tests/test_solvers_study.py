@@ -107,6 +107,7 @@ def test_a_peer_run_is_measured_against_the_same_truth(unzipped: Path) -> None:
     assert tight.rhs_evaluations > 3 * loose.rhs_evaluations
 
 
+@pytest.mark.slow
 def test_bench_solvers_quick_run_writes_its_outputs(fmu_path: Path, driver: Path, tmp_path: Path) -> None:
     code = main(["bench", "solvers", "--fmu", str(fmu_path), "--driver", str(driver), "--out", str(tmp_path),
                  "--problems", "P1,P2", "--quick", "--no-peers"])

@@ -18,6 +18,8 @@ from pendulum_fmu.split.engines import EngineError, missing, run_engine
 from pendulum_fmu.split.judge import judge_split
 from pendulum_fmu.split.masters import observed_orders
 
+pytestmark = pytest.mark.engines
+
 STEPS = (0.02, 0.01, 0.005)
 STOP = 2.0
 BEHAVES = {

@@ -22,6 +22,8 @@ from pathlib import Path
 
 import pytest
 
+pytestmark = pytest.mark.slow
+
 MOMENTS = 50
 """SIGINTs sent, at moments spread from 0.2 s to the end of an uninterrupted sweep."""
 LIMIT_S = 5.0

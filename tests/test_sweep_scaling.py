@@ -16,6 +16,8 @@ from pendulum_fmu.cli.main import main
 from pendulum_fmu.sweep.cluster import TASK_SECONDS, dask_client, execute, task_size
 from pendulum_fmu.sweep.grid import SweepPoint
 
+pytestmark = pytest.mark.slow
+
 
 def test_a_sweep_sends_tasks_of_a_tenth_of_a_second(fmu_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     """The tasks really submitted: sized from the run the workers timed, every run once."""
