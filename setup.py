@@ -19,7 +19,7 @@ import-hook-driven build of the same tree. So:
   back at run time to ``find_fmu()``/``locate_fmu()``, which build or report a missing build.
 
 A regular install or wheel builds the multi-platform FMU (linux64, win64, darwin64; zig
-from the ``ziglang`` build requirement, README "Platforms") in ``build-wheel/``.
+from the ``ziglang`` build requirement, docs/platforms.md) in ``build-wheel/``.
 
 Environment: ``PENDULUM_FMU_SKIP_BUILD=1`` skips the build, ``PENDULUM_ZIG`` names the zig
 to cross-build with (default: the ``ziglang`` build requirement's), ``PENDULUM_FMU_BUILD_DIR``
@@ -75,7 +75,7 @@ def zig_path() -> str | None:
 
 def platform_options() -> list[str]:
     """CMake options for an FMU with linux64, win64 and darwin64 binaries (cross-built with
-    zig, README "Platforms"): what a py3-none-any wheel must carry."""
+    zig, docs/platforms.md): what a py3-none-any wheel must carry."""
     zig = zig_path()
     if zig is None:
         print("warning: pendulum-fmu: no ziglang in the build environment: the FMU gets only the "

@@ -1,4 +1,4 @@
-"""Print issue 27's scaling tables on this machine, from the installed ``pendulum-fmu`` package.
+"""Print the sweep's and exact()'s scaling tables on this machine, from the installed ``pendulum-fmu`` package.
 
 Run by ``scripts/measure-many-cores.sh`` (which builds and installs the wheel first) with the
 installed package's interpreter; the worker counts go up to the usable cores, doubling. Each
@@ -141,7 +141,7 @@ def main() -> int:
     usable = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else (os.cpu_count() or 1)
     workers = counts(args.max_workers or usable)
     quick = args.quick
-    print(f"# issue 27 tables\n\nmachine: {machine()}\n")
+    print(f"# scaling tables\n\nmachine: {machine()}\n")
     bench_sweep(script, 100 if quick else 1600, 10, workers, 1 if quick else 3)
     bench_sweep(script, 40 if quick else 800, 100, workers, 1 if quick else 3)
     exact_threads(200_000 if quick else 16_000_000, workers, 1 if quick else 3)

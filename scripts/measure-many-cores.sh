@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue 27's scaling tables, measured where they count: on a machine with many cores.
+# The sweep's and exact()'s scaling tables, measured where they count: on a machine with many cores.
 #   bash scripts/measure-many-cores.sh [--quick] [--max-workers N]
 # Builds the wheel of this checkout (pip wheel: CMake builds the FMU and the C libraries),
 # installs it with its sweep and bench extras into a fresh virtual environment under

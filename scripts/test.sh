@@ -1,11 +1,31 @@
 #!/usr/bin/env bash
-# All tests from scratch: C unit tests (ctest) in a normal and a sanitizer build, then pytest. Each
-# step says what it does; the builds show CMake's stages, ctest and pytest their own progress.
+# All tests from scratch: the linter and the type checker, C unit tests (ctest) in a normal and a
+# sanitizer build, valgrind, then pytest. Each step says what it does; the builds show CMake's
+# stages, ctest and pytest their own progress.
+#   bash scripts/test.sh [PYTEST ARGS...]          everything (CI, .ci/run: 25 to 50 minutes here)
+#   bash scripts/test.sh --fast [PYTEST ARGS...]   while working (2 to 5 minutes here): ruff, mypy,
+#       ctest -LE slow of the Release build (all but the libFuzzer run), and
+#       pytest -m "not slow and not engines" (the markers of pyproject.toml)
+fast=0
+if [ "${1:-}" = "--fast" ]; then
+    fast=1
+    shift
+fi
 source "$(dirname "${BASH_SOURCE[0]}")/setup-env.sh"
 jobs="$(nproc)"
+echo "== lint and types: ruff check python tests, mypy (settings in pyproject.toml)"
+ruff check python tests
+mypy
 echo "== C tests (Release; the build also makes the linux64/win64/darwin64 FMU, scripts/build-fmu.sh)"
 say "building build/ (seconds when up to date, minutes the first time) ..."
 run_step "$CMAKE_STAGES" bash scripts/build-fmu.sh
+export PENDULUM_FMU="$ROOT/build/Pendulum.fmu"
+if [ "$fast" = 1 ]; then
+    echo "== C tests, fast: all but the libFuzzer run (ctest -LE slow)"
+    ctest --test-dir build --output-on-failure -LE slow
+    echo "== Python tests, fast: not the slow ones nor the external engines (bash scripts/test.sh runs them)"
+    exec python -m pytest -m "not slow and not engines" "$@"
+fi
 ctest --test-dir build --output-on-failure
 echo "== C tests (AddressSanitizer + UndefinedBehaviorSanitizer)"
 say "building build-sanitize/ (Debug, ASan + UBSan; minutes the first time) ..."
@@ -26,5 +46,4 @@ for k in "${!harnesses[@]}"; do
         "build/tests/c/${harnesses[k]}"
 done
 echo "== Python tests"
-export PENDULUM_FMU="$ROOT/build/Pendulum.fmu"
 exec python -m pytest "$@"

@@ -56,7 +56,7 @@ def built_wheel(tmp_path_factory: pytest.TempPathFactory) -> Path:
     env = dict(os.environ, PENDULUM_FMU_BUILD_DIR=str(REPO / "build" / "wheel-cmake"))
     # The same pinned zig as the test environment's (python/requirements.lock), at a path that
     # stays: its cache of the C runtimes then survives from run to run (80 s saved a run).
-    import ziglang  # noqa: PLC0415
+    import ziglang
     env["PENDULUM_ZIG"] = str(Path(ziglang.__file__).with_name("zig"))
     env.pop("PENDULUM_FMU", None)
     built = subprocess.run([sys.executable, "-m", "pip", "wheel", ".", "--no-deps", "-v", "-w", str(wheels)],
@@ -64,6 +64,14 @@ def built_wheel(tmp_path_factory: pytest.TempPathFactory) -> Path:
     assert built.returncode == 0, built.stdout[-6000:] + built.stderr[-3000:]
     wheel, = wheels.glob("pendulum_fmu-*.whl")
     return wheel
+
+
+def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
+    """A test that needs the wheel (built by ``pip wheel``, minutes) is ``slow``, whatever its file:
+    ``bash scripts/test.sh --fast`` leaves it out."""
+    for item in items:
+        if "built_wheel" in getattr(item, "fixturenames", ()):
+            item.add_marker(pytest.mark.slow)
 
 
 @pytest.hookimpl(hookwrapper=True)

@@ -1,5 +1,5 @@
 """The judge's test corpus: honest runs that must pass and wrong runs that must fail, each
-wrong one with the reason its verdict line must name (issue 26, "Done when", first bullet).
+wrong one with the reason its verdict line must name.
 
 Generated, deterministic from a seed, into a folder: one CSV file a run, as the engine writes
 it, and ``manifest.json`` with each run's truth (what ``judge(..., start=..., interface=...)``
@@ -157,7 +157,7 @@ def log_between(u: float, low: float, high: float) -> float:
     return float(10 ** (math.log10(low) + u * (math.log10(high) - math.log10(low))))
 
 
-def regime(theta0: float, omega0: float, L: float, g: float) -> str:  # noqa: N803
+def regime(theta0: float, omega0: float, L: float, g: float) -> str:
     """The regime of a start state, by its energy: ``"libration <90 deg"`` and so on by
     amplitude, ``"rotation near separatrix"`` (k - 1 < 1e-3, k^2 the energy over the
     separatrix's), ``"rotation"``."""
@@ -230,7 +230,7 @@ def honest_specs(rng: np.random.Generator, count: int) -> list[dict[str, Any]]:
     """``count`` honest runs of fmpy (CS and ME, FMI 2.0 and 3.0) and scipy, drawn from ``rng``."""
     specs = []
     for index in range(count):
-        L, g = draw_parameters(rng)  # noqa: N806
+        L, g = draw_parameters(rng)
         w0 = math.sqrt(g / L)
         theta0, omega0 = draw_state(rng, w0)
         pick = rng.random()
@@ -260,10 +260,11 @@ def engine_specs(rng: np.random.Generator, count: int) -> list[dict[str, Any]]:
     """``count`` honest runs of libcosim (FMI 2.0) and Ecos (FMI 2.0 and 3.0), alternating."""
     specs = []
     for index in range(count):
-        L, g = draw_parameters(rng)  # noqa: N806
+        L, g = draw_parameters(rng)
         theta0, omega0 = draw_state(rng, math.sqrt(g / L))
         engine = "libcosim" if index % 2 == 0 else "Ecos"
-        specs.append({"index": index, "engine": engine, "fmi": "2.0" if engine == "libcosim" or index % 4 == 1 else "3.0",
+        specs.append({"index": index, "engine": engine,
+                      "fmi": "2.0" if engine == "libcosim" or index % 4 == 1 else "3.0",
                       "L": L, "g": g, "theta": theta0, "omega": omega0, "tolerance": DEFAULT_TOLERANCE,
                       "startTime": 0.0, "interface": "CS", "solver": "rkn",
                       "interval": float(f"{log_uniform(rng, 1e-3, 0.1):.2g}"),
@@ -277,9 +278,9 @@ def wrong_specs(rng: np.random.Generator, per_kind: int) -> list[dict[str, Any]]
     index = 0
     for kind in WRONG_KINDS:
         for _ in range(per_kind):
-            L, g = draw_parameters(rng)  # noqa: N806
+            L, g = draw_parameters(rng)
             if kind.startswith(("g = ", "L = ")):
-                L, g = 1.0, 9.81  # noqa: N806
+                L, g = 1.0, 9.81
             w0 = math.sqrt(g / L)
             theta0, omega0 = draw_moderate_state(rng, w0)
             interval = float(f"{log_uniform(rng, 2e-3, 0.1):.3g}")
@@ -300,7 +301,7 @@ _EXTRACTED: dict[str, tuple[str, Any]] = {}
 def _fmu(version: str, unpacked: Path) -> tuple[str, Any]:
     """The extracted FMU's folder and its model description, read once a process."""
     if version not in _EXTRACTED:
-        from fmpy import read_model_description  # noqa: PLC0415
+        from fmpy import read_model_description
 
         folder = unpacked / version
         _EXTRACTED[version] = (str(folder), read_model_description(str(folder)))
@@ -311,7 +312,7 @@ def unpack_fmus(folder: Path) -> Path:
     """Copy both FMUs to ``folder/fmus/Pendulum-<version>.fmu`` (the engines load the copy:
     the corpus stays one build's, whatever happens to ``build/`` meanwhile) and extract each
     once into ``folder/fmus/<version>`` for every fmpy run to share."""
-    from fmpy import extract  # noqa: PLC0415
+    from fmpy import extract
 
     unpacked = folder / "fmus"
     unpacked.mkdir(parents=True, exist_ok=True)
@@ -333,7 +334,7 @@ def fmpy_run(unpacked: Path, version: str, interface: str, starts: dict[str, flo
     ``start_time``; Co-Simulation with the tolerance passed as ``relative_tolerance``, or
     Model Exchange with CVODE at it; the four outputs, or every output when ``extra``. The
     FMU's messages of status Warning or worse are appended to ``warnings``."""
-    from fmpy import simulate_fmu  # noqa: PLC0415
+    from fmpy import simulate_fmu
 
     folder, description = _fmu(version, unpacked)
     found = warnings if warnings is not None else []
@@ -351,9 +352,9 @@ def fmpy_run(unpacked: Path, version: str, interface: str, starts: dict[str, flo
                         start_values=starts, output=None if extra else list(OUTPUTS))
 
 
-def exact_columns(theta0: float, omega0: float, L: float, g: float, t: np.ndarray) -> tuple[np.ndarray, np.ndarray]:  # noqa: N803
+def exact_columns(theta0: float, omega0: float, L: float, g: float, t: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """The exact solution at the times ``t`` (counted from the start)."""
-    from pendulum_fmu import exact  # noqa: PLC0415
+    from pendulum_fmu import exact
 
     return exact(theta0, omega0, L, g, t)
 
@@ -362,7 +363,7 @@ def scipy_run(spec: dict[str, Any]) -> dict[str, np.ndarray]:
     """A Model Exchange importer emulated by ``scipy.integrate.solve_ivp`` on the pendulum's
     ODE: rtol = tol, atol = tol times the scale (1, or (1, w0)), dense output at the grid; the
     exact columns as the FMU gives them at the same times."""
-    from scipy.integrate import solve_ivp  # noqa: PLC0415
+    from scipy.integrate import solve_ivp
 
     c = spec["g"] / spec["L"]
     start = spec["startTime"]
@@ -436,7 +437,7 @@ def make_honest(job: tuple[dict[str, Any], str]) -> Case | str:
             grid = spec["startTime"] + spec["interval"] * np.arange(spec["rows"])
             if len(result) != spec["rows"] or np.max(np.abs(result["time"] - grid)) > 1e-9 * max(1.0, grid[-1]):
                 return f"{name}: fmpy returned {len(result)} rows, not {spec['rows']} at the asked times"
-            from fmpy.util import write_csv  # noqa: PLC0415
+            from fmpy.util import write_csv
 
             engine = f"fmpy {spec['interface']} FMI {spec['fmi']}"
             write_csv(folder / f"{name}.csv", result)
@@ -456,7 +457,7 @@ def make_honest(job: tuple[dict[str, Any], str]) -> Case | str:
 def make_engine_run(job: tuple[dict[str, Any], str]) -> Case | str:
     """One libcosim or Ecos run in its own process (tests/engine_runs.py): libcosim's time
     series samples (full precision), Ecos's own CSV writer."""
-    from engine_runs import missing, run_ecos, run_libcosim  # noqa: PLC0415
+    from engine_runs import missing, run_ecos, run_libcosim
 
     spec, folder_text = job
     folder = Path(folder_text)
@@ -475,7 +476,8 @@ def make_engine_run(job: tuple[dict[str, Any], str]) -> Case | str:
     shutil.copyfile(run.files[key], folder / f"{name}.csv")
     shutil.rmtree(out, ignore_errors=True)
     rows = sum(1 for _ in (folder / f"{name}.csv").open()) - 1
-    return Case(f"{name}.csv", "honest", f"{spec['engine']} FMI {spec['fmi']}", "honest", told(spec, "CS", solver=False),
+    return Case(f"{name}.csv", "honest", f"{spec['engine']} FMI {spec['fmi']}", "honest",
+                told(spec, "CS", solver=False),
                 "CS", "rkn", regime(spec["theta"], spec["omega"], spec["L"], spec["g"]), rows, spec)
 
 
@@ -767,7 +769,8 @@ def generate(folder: Path, part: str = "tuning", processes: int = PROCESSES, eng
     if fraction < 1.0:
         honest = honest[: max(1, round(fraction * len(honest)))]
         machines = machines[: max(1, round(fraction * len(machines)))]
-        wrong = [s for s in wrong if s["index"] % sizes["wrong_per_kind"] < max(1, round(fraction * sizes["wrong_per_kind"]))]
+        per_kind = sizes["wrong_per_kind"]
+        wrong = [s for s in wrong if s["index"] % per_kind < max(1, round(fraction * per_kind))]
     where = str(folder)
     made = _pool_map(make_honest, [(s, where) for s in honest], processes)
     if engines:
@@ -789,7 +792,7 @@ def load(folder: Path) -> list[Case]:
 def judge_one(job: tuple[Case, str]) -> Outcome:
     """The judge's verdict on one case; a file the judge cannot read fails with the reason it
     gives, and an exception fails with its type and message."""
-    from pendulum_fmu.judge import ReadError, judge  # noqa: PLC0415
+    from pendulum_fmu.judge import ReadError, judge
 
     case, folder = job
     began = time.perf_counter()

@@ -45,7 +45,7 @@ class Problem:
     name: str
     theta0: float
     omega0: float
-    L: float  # noqa: N815 (physics name)
+    L: float
     g: float
     periods: float
     """Duration in periods of the motion (revolutions for a rotation)."""
@@ -99,8 +99,8 @@ MAX_STEPS = 100_000
 
 @lru_cache(maxsize=2)
 def _unzipped(fmu: Path) -> tuple[str, object]:
-    from fmpy import extract, read_model_description  # noqa: PLC0415
-    from fmpy.sundials import CVodeSolver  # noqa: PLC0415
+    from fmpy import extract, read_model_description
+    from fmpy.sundials import CVodeSolver
 
     max_step, tolerance, _ = CVodeSolver.__init__.__defaults__
     CVodeSolver.__init__.__defaults__ = (max_step, tolerance, MAX_STEPS)
@@ -109,7 +109,7 @@ def _unzipped(fmu: Path) -> tuple[str, object]:
 
 def run_cvode(fmu: Path, problem: Problem, tolerance: float) -> Run:
     """fmpy's CVODE through ``fmu``, Model Exchange, relative_tolerance = ``tolerance``."""
-    from fmpy import simulate_fmu  # noqa: PLC0415
+    from fmpy import simulate_fmu
 
     folder, description = _unzipped(fmu)
     t = problem.times
@@ -209,7 +209,8 @@ def main(argv: list[str]) -> int:
     print(f"ME_FACTOR = {checks.ME_FACTOR:g}. Each cell: the worst |error| / bound of the runs at their own tol "
           "(< 1 passes) / the smallest of the runs at 100 tol judged as tol (> 1 fails); n*: n looser runs "
           "whose allowed energy error reaches the separatrix (no value refused from then on)")
-    print(f"{'problem':24s}{'L':>6s}{'g':>6s}{'T':>7s}{'periods':>8s}{'rows':>6s}" + "".join(f"{n:>22s}" for n in chosen))
+    print(f"{'problem':24s}{'L':>6s}{'g':>6s}{'T':>7s}{'periods':>8s}{'rows':>6s}"
+          + "".join(f"{n:>22s}" for n in chosen))
     totals: dict[str, dict[float, Tally]] = {}
     for problem in problems("--quick" in argv):
         cells = []
@@ -231,7 +232,8 @@ def main(argv: list[str]) -> int:
     print(f"{'all':12s}" + "".join(f"{overall[f].cell():>24s}" for f in factors))
     print(f"\nLooser runs judged that fail, at ME_FACTOR {checks.ME_FACTOR:g}: " + ", ".join(
         f"{name} {by_factor[checks.ME_FACTOR].looser_failed} of "
-        f"{by_factor[checks.ME_FACTOR].runs // 2 - by_factor[checks.ME_FACTOR].unjudged}" for name, by_factor in totals.items()))
+        f"{by_factor[checks.ME_FACTOR].runs // 2 - by_factor[checks.ME_FACTOR].unjudged}"
+        for name, by_factor in totals.items()))
     mine = overall[checks.ME_FACTOR]
     print(f"ME_FACTOR {checks.ME_FACTOR:g}, {mine.runs} runs: largest honest ratio {mine.honest[0]:.3g} "
           f"({mine.honest[1]}); smallest looser ratio {mine.looser[0]:.3g} ({mine.looser[1]}); {mine.unjudged} "

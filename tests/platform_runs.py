@@ -5,7 +5,7 @@ the seed's runs printed bit for bit) are compiled for each target with that targ
 cross compiler and linked against the binary taken out of the FMU (or, for aarch64-linux,
 against the library built from the same sources and flags as the arm64 half of the dylib,
 ``build/cross/aarch64-linux/``). Used by tests/test_platforms.py; run as a script it prints
-the agreement table the README quotes::
+the agreement table docs/platforms.md quotes::
 
     .venv/bin/python tests/platform_runs.py [build/Pendulum.fmu]
 """

@@ -43,8 +43,8 @@ def gravity(k: float, u: Input) -> tuple[float, float, float]:
     return -k * s, -k * c * u.first, -k * (c * u.second - s * u.first ** 2)
 
 
-def simulate(scheme: str, coupling: str, H: float, stop: float, theta0: float = 1.3089969389957472,  # noqa: C901, N803
-             omega0: float = 0.0, L: float = 1.0, g: float = 9.81, lag: int | None = None,  # noqa: N803
+def simulate(scheme: str, coupling: str, H: float, stop: float, theta0: float = 1.3089969389957472,
+             omega0: float = 0.0, L: float = 1.0, g: float = 9.81, lag: int | None = None,
              drop: bool = False, alternate: bool = False, drift: float = 0.0, early_labels: bool = False) -> Run:
     """A coupled run at t_k = k H (with ``drift``: steps of H (1 + drift)^k).
 
@@ -123,7 +123,7 @@ def _converged_curvature(k: float, theta: float, omega: float, alpha: float, fir
     return c
 
 
-def exact_columns(run: Run, theta0: float, omega0: float, L: float, g: float,  # noqa: N803
+def exact_columns(run: Run, theta0: float, omega0: float, L: float, g: float,
                   shift: float = 0.0) -> tuple[np.ndarray, np.ndarray]:
     """The exact pendulum at the run's times (+ ``shift``), from pendulum_fmu.exact."""
     from pendulum_fmu import exact

@@ -50,12 +50,12 @@ class Setup:
     """A master and what is planted in it."""
 
     master: str
-    H: float  # noqa: N815
+    H: float
     stop: float
     theta0: float = THETA0
     omega0: float = 0.0
     g_gravity: float = G
-    L_gravity: float = L  # noqa: N815
+    L_gravity: float = L
     sign: float = 1.0
     signal: str = "theta"
     stale_at: frozenset[int] = frozenset()
@@ -73,7 +73,7 @@ def _body_step(theta: float, omega: float, u0: float, u1: float, u2: float, h: f
             omega + u0 * h + u1 * h * h / 2 + u2 * h ** 3 / 6)
 
 
-def run(setup: Setup) -> tuple[list[float], list[float], list[float]]:  # noqa: C901
+def run(setup: Setup) -> tuple[list[float], list[float], list[float]]:
     """The master's communication points: times, theta, omega."""
     k = setup.sign * setup.g_gravity / setup.L_gravity
 
@@ -196,7 +196,7 @@ def _start(rng: random.Random) -> tuple[float, float]:
     return math.radians(rng.choice([20.0, 45.0, 75.0, 110.0, 150.0])), rng.choice([0.0, 0.0, 0.5, -1.0])
 
 
-def generate(folder: Path, part: str) -> list[Case]:  # noqa: C901
+def generate(folder: Path, part: str) -> list[Case]:
     """Both kinds of case for one part, written under ``folder``."""
     rng = random.Random(SEEDS[part])
     folder.mkdir(parents=True, exist_ok=True)
@@ -236,7 +236,7 @@ def generate(folder: Path, part: str) -> list[Case]:  # noqa: C901
     for master, reproduces in HONEST.items():
         for _ in range(4):
             theta0, omega0 = _start(rng)
-            H = rng.choice(steps)  # noqa: N806
+            H = rng.choice(steps)
             # a master of its own printed short may sit within the print of a reference master
             emit(f"honest-{master}", "honest", Setup(master, H, rng.choice([2.0, 3.0]), theta0, omega0), reproduces,
                  fmt=None if reproduces else rng.choice(PRINTS[:3]))
@@ -255,7 +255,7 @@ def generate(folder: Path, part: str) -> list[Case]:  # noqa: C901
     for defect in DEFECTS:
         for _ in range(5):
             theta0, omega0 = _start(rng)
-            H = rng.choice(steps)  # noqa: N806
+            H = rng.choice(steps)
             master = rng.choice(["gs-zoh", "jacobi-zoh"] if defect in ("stale", "dropped") else
                                 ["gs-zoh", "jacobi-zoh", "gs-interp1", "strong"])
             if defect == "connection" and omega0 == 0:  # at rest, Gravity fed omega = 0 would be a dropped input

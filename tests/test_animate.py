@@ -79,7 +79,7 @@ def test_rendering_says_how_far_and_nothing_moving_crosses_the_readouts_or_the_l
     panels = [ax.get_window_extent(renderer) for ax in figure.axes]
     legend, = figure.legends
     assert legend.get_window_extent(renderer).y1 < min(panel.y0 for panel in panels)
-    for ax, panel in zip(figure.axes, panels):
+    for ax, panel in zip(figure.axes, panels, strict=True):
         readout, = [text for text in ax.texts if text.get_animated()]
         readout.set_text("theta =   186.20 deg,  |theta - theta_exact| = 1.3e-15 rad")
         assert readout.get_window_extent(renderer).y0 >= panel.y1

@@ -1,4 +1,4 @@
-"""The certificate's warning reaches the user end to end (issue 21): a Co-Simulation step beyond
+"""The certificate's warning reaches the user end to end: a Co-Simulation step beyond
 its bound (|theta - theta_exact| <= 100 tol max(1, |theta_exact|), the same for omega with the
 scale w0) returns fmi2Warning, and its message arrives in the sweep's table (column
 ``fmu_warning``) and on the command line, while a run within the bound carries none.

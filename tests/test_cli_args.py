@@ -9,10 +9,10 @@ from pathlib import Path
 
 import pytest
 
-from pendulum_fmu.fmu import locate
 from pendulum_fmu.cli.arguments import grid, positive
 from pendulum_fmu.cli.main import main
 from pendulum_fmu.errors import UsageError
+from pendulum_fmu.fmu import locate
 from pendulum_fmu.spec import Method, Pendulum, TimeGrid
 
 SUBCOMMANDS = ("simulate", "compare", "study", "animate", "sweep", "bench")

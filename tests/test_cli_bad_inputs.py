@@ -1,4 +1,4 @@
-"""Every bad input of issue 12: one line on stderr, a non-zero exit, no traceback, nothing written.
+"""Every bad input of the commands: one line on stderr, a non-zero exit, no traceback, nothing written.
 
 Each case runs from an empty working folder holding only what the case needs (a plain file
 ``afile``, a zip ``bad.fmu`` without ``modelDescription.xml``), and the folder must hold

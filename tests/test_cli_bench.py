@@ -59,7 +59,8 @@ def test_bench_exact_prints_batch_gsl_and_new_states_side_by_side(bench_exact: P
     assert float(values["batch_best"]) < float(values["eval_best"]) < float(values["init_eval_best"])
     if math.isnan(float(values["gsl_best"])):  # bench_exact configured without GSL: the command says so
         assert GSL_ABSENT in out and "nan" not in out.split("bench_exact ")[0]
-        pytest.skip("GSL column not timed: apt-get install libgsl-dev, then cmake -S . -B build and rebuild bench_exact")
+        pytest.skip("GSL column not timed: apt-get install libgsl-dev, then cmake -S . -B build "
+                    "and rebuild bench_exact")
     assert 0 < float(values["gsl_best"]) <= float(values["gsl_median"]) < 1e5
     assert GSL_ABSENT not in out
 
@@ -99,6 +100,7 @@ def test_bench_lists_the_benchmarks_available(capsys: pytest.CaptureFixture[str]
         assert module.NAME in out
 
 
+@pytest.mark.slow
 def test_bench_sweep_prints_runs_per_second(fmu_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     assert main(["bench", "sweep", "--runs", "24", "--periods", "2", "--workers", "1", "--repeat", "1",
                  "--fmu", str(fmu_path)]) == 0
@@ -116,11 +118,12 @@ def test_bench_accuracy_prints_every_regime_within_5e_14(fmu_path: Path, capsys:
     rows = [line.split("|")[1:-1] for line in capsys.readouterr().out.splitlines() if line.startswith("| ")]
     header, *cases = rows
     assert len(cases) == 12 and "separatrix, backward" in [c[0].strip() for c in cases]
-    for case, theta_error, omega_error, naive in cases:
+    for case, theta_error, omega_error, _naive in cases:
         assert float(theta_error) <= 5e-14 and float(omega_error) <= 5e-14, case
     assert float(cases[-1][3]) > 1e-12  # the naive scipy evaluation after 1e6 periods is far worse
 
 
+@pytest.mark.slow
 def test_bench_speed_prints_the_package_beside_its_peers(fmu_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     """Every row at the same error target; the package's rows (C loop, the Python loop before it,
     the C loop alone with 2, 4 and 6 outputs) and the peers' in machine-readable lines."""
@@ -144,7 +147,8 @@ def test_bench_fmi_versions_prints_both_tables(fmu_path: Path, fmu3_path: Path,
     out = capsys.readouterr().out
     seed = re.findall(r"^\| (75|80|85|90) \| (CS|ME) \| (\S+) \| (\S+) \| yes \|$", out, re.MULTILINE)
     assert len(seed) == 8 and all(float(two) == float(three) < 1e-6 for _, _, two, three in seed)
-    regimes = re.findall(r"^\| (?:10 deg|90 deg|pi - 1e-6|separatrix [-+] 1e-9|rotation backward) \| (\S+) \| (\S+) \|$",
+    regimes = re.findall(r"^\| (?:10 deg|90 deg|pi - 1e-6|separatrix [-+] 1e-9|rotation backward) "
+                         r"\| (\S+) \| (\S+) \|$",
                          out, re.MULTILINE)
     assert len(regimes) == 6 and all(float(theta) < 1e-14 for theta, _ in regimes)
     cvode = re.findall(r"^FMI (2\.0|3\.0) +(difference q\.|FMU \(exact\)) +(\d+) +(\d+) +(\d+) ", out, re.MULTILINE)

@@ -1,4 +1,4 @@
-"""Issue 19, as a new user meets the commands: the installed wheel, run from an empty folder.
+"""The commands as a new user meets them: the installed wheel, run from an empty folder.
 
 No command prints a traceback, whatever the input (a broken FMU, another model's FMU, a
 read-only destination, a sweep in which every run fails), whatever the signal (SIGINT 1 s and
@@ -18,6 +18,8 @@ import zipfile
 from pathlib import Path
 
 import pytest
+
+pytestmark = pytest.mark.slow
 
 REPO = Path(__file__).resolve().parents[1]
 
@@ -95,7 +97,7 @@ def bad_fmus(tmp_path_factory: pytest.TempPathFactory) -> dict[str, Path]:
     return {"broken": broken, "foreign": foreign}
 
 
-# -- defect 1: no traceback, no leftovers ---------------------------------------------------------
+# -- no traceback, no leftovers ---------------------------------------------------------
 @pytest.mark.parametrize("argv", FMU_COMMANDS, ids=[" ".join(a[:2]) for a in FMU_COMMANDS])
 def test_a_malformed_model_description_is_one_line_in_every_command(installed: Path, bad_fmus: dict[str, Path],
                                                                      folder: Path, argv: list[str]) -> None:
@@ -109,7 +111,7 @@ def test_a_malformed_model_description_is_one_line_in_every_command(installed: P
 def test_another_models_fmu_is_one_line_in_every_command(installed: Path, bad_fmus: dict[str, Path],
                                                           folder: Path, argv: list[str]) -> None:
     done = _run(installed, [*argv, "--fmu", str(bad_fmus["foreign"])], folder)
-    line = _one_clean_line(done, (2,))  # refused by name when the arguments are read (issue 19, defect 5)
+    line = _one_clean_line(done, (2,))  # refused by name when the arguments are read
     assert "is not the Pendulum FMU of pendulum-fmu" in line and "BouncingBall" in line, line
     _no_leftovers(folder)
 
@@ -140,7 +142,7 @@ def test_a_folder_given_as_the_fmu_is_named_a_folder(installed: Path, folder: Pa
 
 
 # g/L beyond the doubles: every run refused by the FMU at its initialization (g = 1e300 at L = 1
-# and L = 1e-300 at g = 9.81 run since the solvers' initial step scales its norms, issue 18)
+# and L = 1e-300 at g = 9.81 run: the solvers' initial step scales its norms)
 @pytest.mark.parametrize("argv", [["sweep", "-L", "1e-300", "-g", "1e10", "-o", "out/f1", "-q", "-j", "1"],
                                   ["sweep", "-a", "10:170:3", "-g", "1e308", "-L", "0.1", "-p", "1", "-q", "-j", "1"]],
                          ids=["L 1e-300", "g 1e308"])
@@ -217,7 +219,7 @@ def test_an_interrupt_while_the_table_is_written_leaves_no_file(installed: Path,
     _no_leftovers(folder)
 
 
-# -- defects 3 and 4: sizes before work, the FMU's reasons ------------------------------------------
+# -- sizes before work, the FMU's reasons ------------------------------------------
 def test_a_run_too_large_for_memory_is_refused_at_once(installed: Path, folder: Path) -> None:
     # refused before any work: the run itself would take hours (the command's timeout would end it)
     line = _one_clean_line(_run(installed, ["simulate", "-T", "1e6", "-n", "10000"], folder), (2,))
@@ -253,7 +255,7 @@ def test_a_refusal_of_the_fmu_gives_its_logged_reason(installed: Path, folder: P
                          "greater than 0"), line
 
 
-# -- defect 6: messages ------------------------------------------------------------------------------
+# -- messages ------------------------------------------------------------------------------
 @pytest.mark.parametrize(("argv", "expected"), [
     (["-t", "-1e-6"], "argument -t/--tolerance: must be a relative tolerance in (0, 1), e.g. 1e-8, got '-1e-6'"),
     (["-L", "-1e-3"], "argument -L/--length: must be a finite number > 0 m, got '-1e-3'"),
@@ -302,7 +304,7 @@ def test_installed_bench_exact_leaves_out_the_c_columns(installed: Path, folder:
     assert re.search(r"^ +80 deg +[\d.]+ +[\d.]+ +[\d.]+$", done.stdout, re.MULTILINE), done.stdout
 
 
-# -- defect 2: the smoke run of bench solvers (a source checkout: it needs the C driver) -----------
+# -- the smoke run of bench solvers (a source checkout: it needs the C driver) -----------
 def test_bench_solvers_quick_passes_with_an_honest_report(tmp_path: Path) -> None:
     import sys
 

@@ -13,8 +13,8 @@ from scipy.special import ellipk
 
 from pendulum_fmu.cli.main import main
 from pendulum_fmu.fmu.runner import FmuRunner
-from pendulum_fmu.spec import CS_SOLVERS, Method, Pendulum, TimeGrid
 from pendulum_fmu.output.tables import read_table
+from pendulum_fmu.spec import CS_SOLVERS, Method, Pendulum, TimeGrid
 
 
 def exact_period(amplitude_rad: float, length: float, gravity: float = 9.81) -> float:

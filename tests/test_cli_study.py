@@ -108,6 +108,7 @@ def test_html_table_matches_the_fmu_outputs(study_dir: Path, fmu_path: Path) -> 
         assert run.max_error < 1e-6
 
 
+@pytest.mark.slow
 def test_an_interrupted_study_leaves_the_folder_as_it_was(fmu_path: Path, tmp_path: Path,
                                                           monkeypatch: pytest.MonkeyPatch,
                                                           capsys: pytest.CaptureFixture[str]) -> None:

@@ -48,7 +48,8 @@ def test_the_command_prints_the_script(capsys: pytest.CaptureFixture[str]) -> No
 
 @pytest.mark.parametrize(("words", "expected"), [
     (("si",), ["simulate"]),
-    (("",), ["simulate", "compare", "study", "animate", "sweep", "bench", "judge", "cross-check", "suite", "completion"]),
+    (("",), ["simulate", "compare", "study", "animate", "sweep", "bench", "judge", "cross-check", "suite",
+             "completion"]),
     (("bench", "e"), ["exact"]),
     (("bench", "exact", "--am"), ["--amplitudes"]),
     (("simulate", "--solver", "r"), ["rk4", "rkn"]),

@@ -50,7 +50,8 @@ def exported(fmu_path: Path, fmu3_path: Path, tmp_path_factory: pytest.TempPathF
 
 def test_export_covers_every_version_interface_and_platform(exported: Path, fmu_path: Path,
                                                             fmu3_path: Path) -> None:
-    folders = sorted(p.relative_to(exported / "fmus").parts[:3] for p in exported.glob("fmus/*/*/*/PendulumFMU/*/Pendulum"))
+    folders = sorted(p.relative_to(exported / "fmus").parts[:3]
+                     for p in exported.glob("fmus/*/*/*/PendulumFMU/*/Pendulum"))
     wanted_2 = {n.split("/")[1] for n in zipfile.ZipFile(fmu_path).namelist() if n.startswith("binaries/")
                 and n.count("/") == 2 and n.split("/")[2]}
     names_3 = {"x86_64-linux": "linux64", "x86_64-windows": "win64", "x86_64-darwin": "darwin64",
@@ -103,6 +104,7 @@ def _run_from(fmu: Path, start_time: float, interface: str = "CoSimulation", **o
                         output_interval=0.02, output=OUTPUTS, **options)  # type: ignore[arg-type]
 
 
+@pytest.mark.slow
 def test_judge_takes_the_experiment_from_a_ref_opt(fmu_path: Path, tmp_path: Path) -> None:
     """A run from t = 5 s: wrong against the default start time 0, right with the folder's
     _ref.opt, which also says Model Exchange (the folder's me) and its tolerance."""

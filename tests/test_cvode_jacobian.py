@@ -1,6 +1,6 @@
 """fmpy's CVODE takes the FMU's Jacobian (pendulum-fmu bench fmi-versions): with it,
 CVODE evaluates no difference quotients and calls the FMU instead, and its solution is as
-accurate as with difference quotients. The figures themselves are the README's, not asserted."""
+accurate as with difference quotients. The figures themselves are docs/fmi.md's, not asserted."""
 
 from __future__ import annotations
 

@@ -103,7 +103,7 @@ def _period(L: mp.mpf, g: mp.mpf, theta: mp.mpf, omega: mp.mpf) -> mp.mpf:
 
 def _analytic(unknown: str, known: str, s: dict[str, float], initial: bool) -> float:
     """d unknown / d known from the equation, by hand (the FMU's C code is not consulted)."""
-    L, g, th, om = s["L"], s["g"], s["theta"], s["omega"]
+    L, g, th = s["L"], s["g"], s["theta"]
     table = {
         ("theta", "theta"): 1.0, ("omega", "omega"): 1.0, ("der(theta)", "omega"): 1.0,
         ("der(omega)", "theta"): -g / L * math.cos(th), ("der(omega)", "L"): g * math.sin(th) / L**2,
@@ -227,7 +227,7 @@ def test_output_derivatives_are_the_exact_solutions(fmu_any: Path, regime: str) 
 
 
 def test_figures_of_the_jacobian_check(fmu_path: Path, fmu3_path: Path) -> None:
-    """Prints the README's figures (pytest -s): the largest relative deviation of the FMU's
+    """Prints docs/fmi.md's table (pytest -s): the largest relative deviation of the FMU's
     partials from the analytic ones and from central differences, per regime, both versions."""
     print("\nversion  regime               pairs  max rel. dev. analytic  max rel. dev. central diff.")
     for fmu in (fmu_path, fmu3_path):

@@ -28,6 +28,7 @@ def words(text: str) -> str:
     return " ".join(text.split())
 
 
+@pytest.mark.slow
 def test_docs_build_strict(tmp_path: Path) -> None:
     """The site builds with no warning, and the generated references are filled in."""
     env = dict(os.environ, NO_MKDOCS_2_WARNING="1")

@@ -25,6 +25,8 @@ from pathlib import Path
 
 import pytest
 
+pytestmark = pytest.mark.slow
+
 REPO = Path(__file__).resolve().parents[1]
 DOCS = REPO / "docs"
 PAGES = sorted(p.stem for p in DOCS.glob("*.md"))
@@ -124,7 +126,8 @@ def test_page_maths_are_mathml_and_no_dollar_is_left(site: Path, page: str) -> N
     parsed = read_page(site, page)
     text = "".join(parsed.text)
     assert "$" not in text, \
-        f"{page}: a $ in the text a reader sees (an unrendered formula?): ...{text[max(0, text.index('$') - 80):text.index('$') + 40]!r}..."
+        f"{page}: a $ in the text a reader sees (an unrendered formula?): " \
+        f"...{text[max(0, text.index('$') - 80):text.index('$') + 40]!r}..."
     if page in MATH_PAGES:
         assert parsed.maths > 0, f"{page}: its formulas are not MathML (docs/hooks/maths.py did not run?)"
     for ascii_formula in ("w0^2", "sqrt(g/L)", "sin^2(theta"):
@@ -142,7 +145,7 @@ def test_page_images_are_pngs_of_the_site(site: Path, page: str) -> None:
         assert target.is_file(), f"{page}: <img src={source!r}> has no file in the built site"
         data = target.read_bytes()
         assert data.startswith(PNG_MAGIC), f"{page}: {source} is not a PNG"
-        from PIL import Image  # noqa: PLC0415 (pillow: the [animate] extra, in [test])
+        from PIL import Image  # pillow: the [animate] extra, in [test]
         with Image.open(target) as image:
             image.load()  # decodes the whole picture: a truncated file raises here
             assert image.width >= 400 and image.height >= 200, f"{page}: {source} is {image.size}, too small to read"
@@ -177,7 +180,7 @@ def test_page_screenshot_is_not_blank(site: Path, shots: Path, page: str) -> Non
         command.insert(1, "--no-sandbox")  # Chromium refuses to run as root with its sandbox
     done = subprocess.run(command, capture_output=True, text=True, timeout=120, check=False)
     assert done.returncode == 0 and shot.is_file(), f"chromium made no screenshot of {page}: {done.stderr[-1500:]}"
-    from PIL import Image, ImageStat  # noqa: PLC0415
+    from PIL import Image, ImageStat
     with Image.open(shot) as image:
         assert image.size == (1280, 2000)
         # the article's column (left of it the navigation, right the table of contents)
@@ -190,9 +193,9 @@ def test_page_screenshot_is_not_blank(site: Path, shots: Path, page: str) -> Non
 
 def test_maths_hook_leaves_code_and_prices_alone() -> None:
     """The hook's rules on a sample: formulas become MathML, code and a lone $ stay as written."""
-    import importlib.util  # noqa: PLC0415
+    import importlib.util
 
-    import markdown  # noqa: PLC0415
+    import markdown
 
     spec = importlib.util.spec_from_file_location("maths_hook", DOCS / "hooks" / "maths.py")
     assert spec is not None and spec.loader is not None

@@ -81,7 +81,8 @@ def _initialized(runner: FmuRunner, pendulum: Pendulum) -> object:
 
 @pytest.mark.parametrize("backend", ["c", "python"])
 @pytest.mark.parametrize("fixture", ["fmu_path", "fmu3_path"])
-def test_a_failing_do_step_stops_the_loop_with_its_reason(fixture: str, request: pytest.FixtureRequest, backend: driver.Backend) -> None:
+def test_a_failing_do_step_stops_the_loop_with_its_reason(fixture: str, request: pytest.FixtureRequest,
+                                                          backend: driver.Backend) -> None:
     fmu: Path = request.getfixturevalue(fixture)
     with FmuRunner(fmu, loop="c") as runner:
         slave = _initialized(runner, CASES[0])
@@ -99,7 +100,8 @@ def test_a_failing_do_step_stops_the_loop_with_its_reason(fixture: str, request:
 
 @pytest.mark.parametrize("backend", ["c", "python"])
 @pytest.mark.parametrize("fixture", ["fmu_path", "fmu3_path"])
-def test_a_failing_get_stops_the_loop_at_its_point(fixture: str, request: pytest.FixtureRequest, backend: driver.Backend) -> None:
+def test_a_failing_get_stops_the_loop_at_its_point(fixture: str, request: pytest.FixtureRequest,
+                                                   backend: driver.Backend) -> None:
     fmu: Path = request.getfixturevalue(fixture)
     with FmuRunner(fmu, loop="c") as runner:
         slave = _initialized(runner, CASES[0])
@@ -238,7 +240,8 @@ def test_warnings_go_on_and_worse_statuses_stop_the_loop(version: int, backend: 
     for status, name in ((3, "Error"), (4, "Fatal")):
         fmu = _ScriptedFmu(version, [status])
         with pytest.raises(SimulationError, match=rf"^DoStep at t = 0 s returned {name}$"):
-            driver.OutputLoop(fmu, version, [7], backend).run(times, np.zeros(6, dtype=[("a", np.float64)]), "a", FmuLog())
+            driver.OutputLoop(fmu, version, [7], backend).run(times, np.zeros(6, dtype=[("a", np.float64)]), "a",
+                                                              FmuLog())
 
 
 @pytest.mark.parametrize("backend", ["c", "python"])

@@ -1,6 +1,6 @@
-"""The exact port at its edges (issue 11): far times, g and L as given, huge angles, t = t0.
+"""The exact port at its edges: far times, g and L as given, huge angles, t = t0.
 
-Each reproducer of the issue runs through the FMU (Model Exchange, ``ExactPort``) against the
+Each hard case runs through the FMU (Model Exchange, ``ExactPort``) against the
 closed form in mpmath (``pendulum_fmu.bench.reference.closed_form``) with w0 = sqrt(g / L) taken exactly
 from the two doubles, which is the problem the FMU promises to solve.
 """
@@ -15,8 +15,8 @@ import mpmath as mp
 import pytest
 from fmpy.fmi1 import FMICallException
 
-from pendulum_fmu.fmu.exact_port import ExactPort
 from pendulum_fmu.bench.reference import closed_form, exact_frequency, max_abs_diff
+from pendulum_fmu.fmu.exact_port import ExactPort
 from test_exact_properties import errors
 
 THETA_TOL = 5e-14
@@ -43,7 +43,7 @@ def check_against_reference(port: ExactPort, theta0: float, omega0: float, lengt
     assert max_abs_diff(omega, ref_omega) <= THETA_TOL * omega_scale
 
 
-# name: (theta0, omega0, L, g, t0, times) -- defect 1: phases beyond 2^52 quarter periods
+# name: (theta0, omega0, L, g, t0, times) -- phases beyond 2^52 quarter periods
 FAR_TIMES: dict[str, tuple[float, float, float, float, float, list[float]]] = {
     "rotation at t = 1e16": (0.0, 3.0, 1.0, 1.0, 0.0, [1e16, 1e16 + 0.37]),
     "w0 = 1e10 at t = 1e6": (2.0, 0.0, 1e-10, 1e10, 0.0, [1e6]),
@@ -67,7 +67,7 @@ def test_beyond_the_resolved_phase_is_refused(port: ExactPort) -> None:
         port.evaluate([2.0**62])           # just beyond 2^60 quarter periods (w0 = 1)
 
 
-# defect 2: states within rounding of the separatrix, regime decided by the doubles L, g
+# states within rounding of the separatrix, regime decided by the doubles L, g
 NEAR_SEPARATRIX: dict[str, tuple[float, float, float, float, float, list[float]]] = {
     "librates, fl(w0) rotated": (-3.719371225035692, -11.457420237565678, 2.9079038128992127e-06,
                                  0.0011758347489732547, -4841.935070399459, [-4836.590767737427]),
@@ -133,13 +133,13 @@ def separatrix_neighbours(state: tuple[float, float, float, float, float],
     return neighbours
 
 
-DEFECT_3 = (-8.590185225219782, -0.00015596141618645683, 101418.16746011787, 0.003754548068946949, 1000.0)
+MILLION_PERIODS = (-8.590185225219782, -0.00015596141618645683, 101418.16746011787, 0.003754548068946949, 1000.0)
 
 
-@pytest.mark.parametrize("state", [DEFECT_3, *separatrix_neighbours(DEFECT_3, (-3, -1, 0, 1, 3))],
-                         ids=["issue", "-3 ulps", "-1 ulp", "rounded", "+1 ulp", "+3 ulps"])
+@pytest.mark.parametrize("state", [MILLION_PERIODS, *separatrix_neighbours(MILLION_PERIODS, (-3, -1, 0, 1, 3))],
+                         ids=["found", "-3 ulps", "-1 ulp", "rounded", "+1 ulp", "+3 ulps"])
 def test_next_to_the_separatrix_after_a_million_periods(
         port: ExactPort, state: tuple[float, float, float, float, float]) -> None:
-    """Defect 3: 5e-14 after 1e6 periods next to the separatrix (was 1.6e-10, 3.1e-9 beside it)."""
+    """5e-14 after 1e6 periods next to the separatrix (was 1.6e-10, 3.1e-9 beside it)."""
     theta_error, _ = errors(port, state, (1e6 + 0.37,))
     assert theta_error <= 5e-14

@@ -75,7 +75,7 @@ def test_threads_give_the_values_of_one_thread_bit_for_bit() -> None:
         one = exact(*args, workers=1)
         for workers in (2, 3, 7):
             split = exact(*args, workers=workers)
-            for a, b in zip(one, split):
+            for a, b in zip(one, split, strict=True):
                 assert a.tobytes() == b.tobytes(), workers
 
 
@@ -94,7 +94,7 @@ def test_large_arrays_are_split_over_the_usable_cores_and_small_ones_are_not(mon
             exact(0.5, 0.0, 1.0, 9.81, [0.0, 1.0], workers=bad)  # type: ignore[arg-type]
     parts = library.chunks(1_000_003, 3)
     assert parts[0][0] == 0 and parts[-1][1] == 1_000_003 and len(parts) == 3
-    assert all(b == c and b % library.ALIGN == 0 for (_, b), (c, _) in zip(parts, parts[1:]))
+    assert all(b == c and b % library.ALIGN == 0 for (_, b), (c, _) in zip(parts, parts[1:], strict=False))
     seen: set[str] = set()
     original = library._library()
 

@@ -28,8 +28,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from pendulum_fmu.bench.reference import (DIGITS, closed_form, exact_frequency, frequency, max_abs_diff,
-                                          omega_scale)
+from pendulum_fmu.bench.reference import DIGITS, closed_form, exact_frequency, frequency, max_abs_diff, omega_scale
 from pendulum_fmu.fmu.exact_port import ExactPort
 from reference_cache import cached
 
@@ -180,6 +179,7 @@ ODE_CASES: dict[str, tuple[float, float, float, float, tuple[float, ...]]] = {
 }
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("case", list(ODE_CASES))
 def test_against_ode_integration(port: ExactPort, case: str) -> None:
     """theta and omega agree with a 50-digit Taylor integration of the ODE itself."""

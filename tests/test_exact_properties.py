@@ -1,4 +1,4 @@
-"""Random states against mpmath at adaptive precision (issue 11): the exact port everywhere.
+"""Random states against mpmath at adaptive precision: the exact port everywhere.
 
 States: theta0 uniform in [-4 pi, 4 pi]; L and g log-uniform in 1e-6 .. 1e6; omega0 at rest,
 across scales (1e-3 .. 1e2 times the separatrix speed, both signs) and within a few ulps of
@@ -13,7 +13,7 @@ Bounds (absolute theta error relative to max(1, |theta|); omega relative to its 
 5e-14 up to a few periods and after 1e6 periods, also within ulps of the separatrix (where
 m1 is formed in triple-double: in double-double the phase after 1e6 periods was 1.9e-12
 off there). ``python tests/test_exact_properties.py [FMU [COUNT]]`` prints the errors state
-by state and the worst cases (README, accuracy section).
+by state and the worst cases (docs/math.md, its accuracy).
 """
 
 from __future__ import annotations
@@ -27,14 +27,14 @@ import mpmath as mp
 import numpy as np
 import pytest
 
-from pendulum_fmu.fmu.exact_port import ExactPort
 from pendulum_fmu.bench.reference import closed_form
+from pendulum_fmu.fmu.exact_port import ExactPort
 
 NEAR_TOL = 5e-14
 """theta and omega bound up to a few periods."""
 
 FAR_TOL = 5e-14
-"""theta bound after 1e6 periods (issue 11, defect 3), relative to max(1, |theta|)."""
+"""theta bound after 1e6 periods, relative to max(1, |theta|)."""
 
 
 

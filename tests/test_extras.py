@@ -152,7 +152,8 @@ def test_the_command_and_its_help_start_without_the_extras() -> None:
 
 def test_the_line_names_every_missing_module() -> None:
     assert extra_line("sweep", "sweep", ["distributed", "tqdm"]) == (
-        "pendulum-fmu sweep: needs the sweep extra: pip install 'pendulum-fmu[sweep]' (not installed: distributed, tqdm)")
+        "pendulum-fmu sweep: needs the sweep extra: pip install 'pendulum-fmu[sweep]' "
+        "(not installed: distributed, tqdm)")
 
 
 # --- the wheel with its core only ----------------------------------------------------------------

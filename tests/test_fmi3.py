@@ -14,10 +14,10 @@ import zipfile
 from pathlib import Path
 from xml.etree import ElementTree
 
+import fmpy
 import mpmath as mp
 import numpy as np
 import pytest
-import fmpy
 from fmpy import extract, read_model_description, simulate_fmu
 from fmpy.fmi3 import FMU3Slave
 from fmpy.validation import validate_fmu
@@ -112,6 +112,7 @@ def test_exact_port_against_mpmath_in_every_regime(fmu3_path: Path, regime: str)
     assert max_abs_diff(result["omega_exact"], omega) <= 1e-13 * max(1.0, float(max(abs(o) for o in omega)))
 
 
+@pytest.mark.slow
 def test_rebuilt_from_its_build_description_gives_the_same_results(fmu3_path: Path, tmp_path: Path) -> None:
     unzipped = rebuild_from_sources(fmu3_path, tmp_path)
     assert (unzipped / "binaries/x86_64-linux/Pendulum.so").exists()

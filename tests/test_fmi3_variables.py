@@ -86,7 +86,7 @@ def test_the_default_experiment_is_one_every_importer_accepts(
     (stop - start) / interval is 0; FMI4j refuses a doStep whose t + h passes stopTime unrounded,
     t written as k h; Ecos and fmpy sum the steps (t += h). Each must reach stopTime exactly
     after (stop - start) / h steps, and never pass it before."""
-    import math  # noqa: PLC0415
+    import math
     for md in both:
         default = md.defaultExperiment
         start, stop, h = float(default.startTime), float(default.stopTime), float(default.stepSize)

@@ -5,8 +5,8 @@ from __future__ import annotations
 import re
 import subprocess
 import zipfile
-from xml.etree import ElementTree
 from pathlib import Path
+from xml.etree import ElementTree
 
 from fmpy import read_model_description
 from fmpy.fmi2 import FMU2Slave

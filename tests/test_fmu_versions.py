@@ -1,6 +1,6 @@
 """Both of the project's FMUs in every command, and any other FMU refused in one line.
 
-Issue 19, defect 5: ``--fmu build/fmi3/Pendulum.fmu`` and ``--fmi-version 3`` work in every
+``--fmu build/fmi3/Pendulum.fmu`` and ``--fmi-version 3`` work in every
 command that takes ``--fmu`` (and in :class:`FmuRunner` and :func:`run_sweep`); an FMU of
 another model (another ``modelName``, a variable missing, or FMI 1.0) is refused before any
 run, in one line that names the file and says what differs, with exit code 2, no traceback
@@ -65,6 +65,7 @@ def _temp_folders() -> set[str]:
     return {p.name for p in Path(tempfile.gettempdir()).glob("pendulum-fmu-*")}
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("argv", COMMANDS, ids=[" ".join(a[:2]) for a in COMMANDS])
 def test_every_command_runs_the_fmi3_fmu(argv: list[str], fmu3_path: Path, tmp_path: Path,
                                          monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]) -> None:

@@ -18,6 +18,8 @@ import subprocess
 import sys
 from pathlib import Path
 
+import pytest
+
 PI_RAD = "3.141592653589793rad"
 CREEP = "1e-15"   # rad/s: over the top, just
 
@@ -43,6 +45,7 @@ def test_a_harmless_run_prints_no_warning(fmu_path: Path, tmp_path: Path) -> Non
     assert "hard case" not in done.stdout + done.stderr
 
 
+@pytest.mark.slow
 def test_sweep_table_carries_the_warning(fmu_path: Path, tmp_path: Path) -> None:
     out = tmp_path / "sweep"
     done = run_cli(["sweep", "-a", "170,180", "-w", CREEP, "-s", "rkn", "-t", "1e-8", "-p", "3", "-j", "1", "-q",

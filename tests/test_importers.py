@@ -8,6 +8,7 @@ import shutil
 from pathlib import Path
 
 import numpy as np
+import pytest
 from fmpy import read_model_description, simulate_fmu
 from fmpy.container_fmu import Configuration
 from fmpy.container_fmu.cli import create_container_fmu
@@ -16,6 +17,8 @@ from fmpy.cross_check.validate_vendor_repo import validate_test_fmu
 from fmpy.model_description import CoSimulation, ModelDescription, ModelVariable, Unknown
 
 from pendulum_fmu.fmu.cross_check import export
+
+pytestmark = pytest.mark.engines
 
 THETA0 = math.radians(80.0)
 OUTPUTS = ["theta", "omega", "theta_exact", "omega_exact"]

@@ -1,4 +1,4 @@
-"""The two helpers behind issue 19's fixes: SIGINT deferred around FMU calls, and work sized before it starts."""
+"""The two helpers that keep the commands safe: SIGINT deferred around FMU calls, and work sized before it starts."""
 
 from __future__ import annotations
 

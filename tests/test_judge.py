@@ -166,7 +166,7 @@ def test_non_monotone_times_fail(cs_run: np.ndarray) -> None:
 def test_a_print_too_coarse_for_the_bound_fails_as_such(cs_run: np.ndarray, tmp_path: Path) -> None:
     """Six significant digits (C's %g) cannot show 1e-6: the judge says so."""
     lines = ["time,theta,omega"] + [f"{t:g},{a:g},{b:g}" for t, a, b in zip(cs_run["time"], cs_run["theta"],
-                                                                          cs_run["omega"])]
+                                                                          cs_run["omega"], strict=True)]
     (tmp_path / "g.csv").write_text("\n".join(lines) + "\n")
     verdict = judge(tmp_path / "g.csv", start=["theta=80deg"])
     assert not verdict.passed
@@ -242,7 +242,8 @@ def test_unreadable_input_is_one_line_and_exit_2(tmp_path: Path, text: str, mess
 
 
 def test_semicolons_with_decimal_commas(cs_run: np.ndarray, tmp_path: Path) -> None:
-    rows = [";".join(repr(float(cs_run[c][k])).replace(".", ",") for c in ["time", "theta"]) for k in range(cs_run.size)]
+    rows = [";".join(repr(float(cs_run[c][k])).replace(".", ",") for c in ["time", "theta"])
+            for k in range(cs_run.size)]
     (tmp_path / "de.csv").write_text("\n".join(["time;theta", *rows]) + "\n")
     result = read_result(tmp_path / "de.csv")
     assert np.array_equal(result.values["theta"], cs_run["theta"])
@@ -267,6 +268,7 @@ def test_binary_and_missing_files_exit_2(tmp_path: Path) -> None:
 
 # --- the command line ---------------------------------------------------------------------------
 
+@pytest.mark.slow
 def test_cli_exit_codes_json_and_plot(cs_run: np.ndarray, fmu_path: Path, tmp_path: Path) -> None:
     write_csv(tmp_path / "good.csv", cs_run)
     done = judge_cli(str(tmp_path / "good.csv"), "--start", "theta=80deg", "--json", str(tmp_path / "v.json"),

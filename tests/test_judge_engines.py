@@ -29,6 +29,8 @@ from fmpy.util import write_csv
 from engine_runs import FMUTOOL_INSTALL, ecos_environment, missing, run_ecos, run_libcosim, tbb_library_folder
 from pendulum_fmu.judge import ReadError, judge
 
+pytestmark = pytest.mark.engines
+
 THETA0 = math.radians(80.0)
 STARTS = {"theta": THETA0, "L": 2.0}
 JUDGED_AS = ["theta=80deg", "L=2"]
@@ -185,7 +187,7 @@ def test_container_of_two_pendulums_in_fmpy(fmu_path: Path, tmp_path: Path) -> N
     done = subprocess.run([str(fmucontainer), "-container", "two.csv:0.01"], cwd=tmp_path, capture_output=True,
                           text=True, timeout=300, check=False)
     assert (tmp_path / "two.fmu").exists(), done.stdout[-2000:] + done.stderr[-2000:]
-    # the container's modelDescription fails fmpy's validation (engines.md): run without it
+    # the container's modelDescription fails fmpy's validation (docs/importers.md): run without it
     result = simulate_fmu(str(tmp_path / "two.fmu"), stop_time=10.0, output_interval=0.01, validate=False)
     write_csv(tmp_path / "two_result.csv", result)
     with pytest.raises(ReadError, match="several instances"):

@@ -1,4 +1,4 @@
-"""The judge reads any file of any size, fast (issue 26, item 5): this package's own ``simulate``
+"""The judge reads any file of any size, fast: this package's own ``simulate``
 output, fmuCheck's extra final row, a DataFrame indexed by time, a numpy structured array;
 2 million rows in seconds; fixed-step methods recognised at any length; the print resolution
 of each cell as the cell-by-cell rule gives it."""
@@ -16,8 +16,8 @@ import numpy as np
 import pytest
 
 from pendulum_fmu.judge import ReadError, judge
-from pendulum_fmu.judge.fixed_step import identify_fixed_step
 from pendulum_fmu.judge.experiment import make_experiment
+from pendulum_fmu.judge.fixed_step import identify_fixed_step
 from pendulum_fmu.judge.print_format import Format
 from pendulum_fmu.judge.reading import read_csv_bytes, read_result
 
@@ -115,7 +115,8 @@ def test_random_dialect_files_read_as_the_line_by_line_reader_reads_them(tmp_pat
         delimiter = [",", ";", "\t", " ", ", "][trial % 5]
         quote = delimiter != " " and rng.random() < 0.4
 
-        def cell(name: str, value: float, semicolon: bool = delimiter == ";", quoted: bool = quote) -> str:
+        def cell(name: str, value: float, semicolon: bool = delimiter == ";", quoted: bool = quote,
+                 styles: dict[str, str] = styles) -> str:
             text = repr(float(value)) if styles[name] == "%r" else styles[name] % value
             text = text.replace(".", ",") if semicolon else text
             return f'"{text}"' if quoted else text
@@ -278,6 +279,7 @@ def test_a_fixed_step_method_is_recognised_on_100000_rows(symplectic: bool, part
     assert found.every_step < 1e-9
 
 
+@pytest.mark.slow
 def test_two_million_euler_rows_recognised() -> None:
     """Every row checked on two million rows (its time is printed, and measured by
     ``pendulum-fmu bench judge``; no test asserts a timing)."""
@@ -313,6 +315,7 @@ def test_an_honest_run_is_not_a_fixed_step_method(tmp_path: Path, fmu_path: Path
 
 # --- size and speed ------------------------------------------------------------------------------
 
+@pytest.mark.slow
 def test_two_million_rows_judged(tmp_path: Path, fmu_path: Path) -> None:
     """Two million rows judged whole (the time is printed; ``pendulum-fmu bench judge`` measures
     it; no test asserts a timing)."""
@@ -331,6 +334,7 @@ def test_two_million_rows_judged(tmp_path: Path, fmu_path: Path) -> None:
     assert verdict.check("read").figures["rows"] == 2_000_000
 
 
+@pytest.mark.slow
 def test_bench_judge_prints_its_table(fmu_path: Path) -> None:
     done = cli("bench", "judge", "--rows", "1000", "--interface", "CS", "ME", "--fmu", str(fmu_path))
     assert done.returncode == 0, done.stderr

@@ -8,9 +8,9 @@ import math
 
 import numpy as np
 import pytest
-from me_bound_table import FMUS, Problem, run_cvode, run_scipy
 from scipy.optimize import brentq
 
+from me_bound_table import FMUS, Problem, run_cvode, run_scipy
 from pendulum_fmu.fmu.library import exact
 from pendulum_fmu.fmu.period import exact_period_ratio
 from pendulum_fmu.judge import checks, judge, sensitivity
@@ -23,11 +23,11 @@ ORBITS = {"libration 75 deg": (math.radians(75.0), 0.0, 1.0, 9.81),
           "rotation, omega0 < 0": (0.4, -2.0 * math.sqrt(9.81 / 2.2) * (1 + 1e-3), 2.2, 9.81)}
 
 
-def _experiment(theta0: float, omega0: float, L: float, g: float, tolerance: float = 1e-8):  # noqa: N803
+def _experiment(theta0: float, omega0: float, L: float, g: float, tolerance: float = 1e-8):
     return make_experiment({"theta": theta0, "omega": omega0, "L": L, "g": g, "tolerance": tolerance}, "ME")[0]
 
 
-def _state(theta0: float, omega0: float, L: float, g: float, t: float) -> np.ndarray:  # noqa: N803
+def _state(theta0: float, omega0: float, L: float, g: float, t: float) -> np.ndarray:
     theta, omega = exact(theta0, omega0, L, g, np.array([t]))
     return np.array([theta[0], omega[0]])
 

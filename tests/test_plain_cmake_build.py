@@ -12,7 +12,10 @@ import sys
 from pathlib import Path
 
 import numpy as np
+import pytest
 from fmpy import read_model_description, simulate_fmu
+
+pytestmark = pytest.mark.slow
 
 REPO = Path(__file__).resolve().parents[1]
 

@@ -18,14 +18,30 @@ import pytest
 from fmpy import supported_platforms
 
 from pendulum_fmu.fmu.build import REPO_ROOT
-from platform_runs import (AARCH64, FMI3_HARNESS, HARNESS, INSTALL, LINUX64, WIN64, Target, build_program,
-                           extract_fmu, fma_errors, max_differences, results_of, run_program, zig_win64)
+from platform_runs import (
+    AARCH64,
+    FMI3_HARNESS,
+    HARNESS,
+    INSTALL,
+    LINUX64,
+    WIN64,
+    Target,
+    build_program,
+    extract_fmu,
+    fma_errors,
+    max_differences,
+    results_of,
+    run_program,
+    zig_win64,
+)
 
 sys.path.insert(0, str(REPO_ROOT / "cmake"))
-from fat_macho import fat_binary, thin_slice  # noqa: E402
+from fat_macho import fat_binary, thin_slice
+
+pytestmark = [pytest.mark.slow, pytest.mark.engines]
 
 AGREEMENT = 1e-13
-"""Largest allowed |difference| from the linux64 binary, per value (the issue's bound)."""
+"""Largest allowed |difference| from the linux64 binary, per value: agreement to 1e-13 across platforms."""
 GLIBC_FLOOR = (2, 17)
 MACOS_FLOOR = {"x86_64": "10.13", "arm64": "11.0"}
 MACHO_LINKER_SYMBOLS = {"__mh_dylib_header", "___dso_handle"}

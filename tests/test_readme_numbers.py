@@ -1,10 +1,11 @@
-"""Every number README.md quotes beside a command is what that command prints.
+"""Every number the headline figures (docs/figures.md) and README.md's examples quote beside a
+command is what that command prints.
 
-Each test runs the README's command (or its example, as written there) and compares the
-figure the README quotes with the one printed, at the README's own number of significant
-digits: a change that moves a figure fails here until the README says so. Timings are not
-compared (the README marks them "measured"); where the headline table quotes a ratio of
-timings, only its direction is held, with generous bounds.
+Each test runs the command of a row of the headline table (or the README's example, as written
+there) and compares the figure quoted with the one printed, at the page's own number of
+significant digits: a change that moves a figure fails here until the page says so. Timings are
+not compared (the table marks them "measured"); where the table quotes a ratio of timings, only
+its direction is held, with generous bounds.
 
 The headline table's last column says which rows this file holds ("test") and which are
 measured on a quiet machine and not asserted ("measured").
@@ -19,23 +20,27 @@ from pathlib import Path
 
 import pytest
 
+pytestmark = pytest.mark.slow
+
 REPO = Path(__file__).resolve().parents[1]
 README = (REPO / "README.md").read_text(encoding="utf-8")
+FIGURES = (REPO / "docs" / "figures.md").read_text(encoding="utf-8")
+"""The headline figures: the table of measured figures, each with its command."""
 TESTS_C = REPO / "build" / "tests" / "c"
 NUMBER = r"[-+]?\d+(?:\.\d+)?(?:e[-+]?\d+)?"
 
 
 def headline(what: str) -> tuple[str, str]:
     """The (figure, held by) cells of the headline table's row whose first cell starts with ``what``."""
-    for line in README.splitlines():
+    for line in FIGURES.splitlines():
         cells = [cell.strip() for cell in line.strip().strip("|").split("|")]
         if line.startswith("|") and cells[0].startswith(what):
             return cells[1], cells[-1]
-    raise AssertionError(f"README.md's headline table has no row '{what} ...'")
+    raise AssertionError(f"docs/figures.md's headline table has no row '{what} ...'")
 
 
 def significant(quoted: str) -> int:
-    """The significant digits of a number as the README writes it (``9.7e-13``: 2; ``471``: 3)."""
+    """The significant digits of a number as the page writes it (``9.7e-13``: 2; ``471``: 3)."""
     mantissa = re.split(r"[eE]", quoted)[0].lstrip("+-").replace(".", "").lstrip("0")
     return max(len(mantissa), 1)
 
@@ -90,7 +95,7 @@ def test_study_errors_are_the_printed_range(study_table: dict[tuple[int, str], l
     low, high = re.findall(NUMBER, figure.replace(" to ", " "))[:2]
     errors = [float(cells[5]) for (_, kind), cells in study_table.items() if kind == interface]
     assert agrees(low, min(errors)) and agrees(high, max(errors)), \
-        f"README.md says {figure} for {interface}; the study prints {min(errors):.3g} to {max(errors):.3g}"
+        f"docs/figures.md says {figure} for {interface}; the study prints {min(errors):.3g} to {max(errors):.3g}"
 
 
 def test_study_page_table_is_the_printed_one(study_table: dict[tuple[int, str], list[str]]) -> None:
@@ -119,7 +124,8 @@ def test_accuracy_worst_case_is_the_printed_one(accuracy: dict[str, list[str]]) 
     quoted, where = re.fullmatch(rf"at most ({NUMBER}) rad \(theta0 = (\w+)\)", figure).groups()
     every_regime = {case: float(cells[1]) for case, cells in accuracy.items() if "1e6 periods" not in case}
     worst = max(every_regime, key=every_regime.__getitem__)
-    assert agrees(quoted, every_regime[worst]), f"README.md says {quoted}; bench accuracy prints {every_regime[worst]}"
+    assert agrees(quoted, every_regime[worst]), \
+        f"docs/figures.md says {quoted}; bench accuracy prints {every_regime[worst]}"
     assert worst == "pi (the double)" and where == "pi", f"the worst case is now {worst}"
 
 
@@ -128,8 +134,8 @@ def test_accuracy_after_a_million_periods_is_the_printed_one(accuracy: dict[str,
     assert held == "test"
     ours, naive = re.findall(NUMBER, figure)[:2]
     cells = next(cells for case, cells in accuracy.items() if "1e6 periods" in case)
-    assert agrees(ours, float(cells[1])), f"README.md says {ours}; bench accuracy prints {cells[1]}"
-    assert agrees(naive, float(cells[3])), f"README.md says scipy's {naive}; bench accuracy prints {cells[3]}"
+    assert agrees(ours, float(cells[1])), f"docs/figures.md says {ours}; bench accuracy prints {cells[1]}"
+    assert agrees(naive, float(cells[3])), f"docs/figures.md says scipy's {naive}; bench accuracy prints {cells[3]}"
 
 
 def test_certificate_table_counts_are_the_printed_ones() -> None:
@@ -143,12 +149,12 @@ def test_certificate_table_counts_are_the_printed_ones() -> None:
     printed = run(str(program), "table")
     summary = re.search(r"separatrix grid: (\d+) runs, (\d+) beyond the bound at some step \(all warned\)", printed)
     assert summary is not None, f"test_certificate table no longer prints its summary:\n{printed[-1500:]}"
-    assert (runs, beyond) == summary.groups(), f"README.md says {beyond} of {runs}; it prints {summary.group(0)}"
+    assert (runs, beyond) == summary.groups(), f"docs/figures.md says {beyond} of {runs}; it prints {summary.group(0)}"
     # the grid's rows: 1 - m, c, tol, then one cell a solver ('*' warned, '-' beyond its reach);
     # a cell beyond the bound (> 1) without its '*' would be a silent run
     cells = [cell for line in printed.splitlines() if re.match(r"-?\d\.\d\de-\d\d\s", line)
              for cell in line.split()[3:]]
-    assert len(cells) == int(runs), f"the grid has {len(cells)} cells, README.md says {runs} runs"
+    assert len(cells) == int(runs), f"the grid has {len(cells)} cells, docs/figures.md says {runs} runs"
     beyond_cells = [cell for cell in cells if float(cell.rstrip("*-")) > 1]
     unwarned = [cell for cell in beyond_cells if "*" not in cell]
     assert len(beyond_cells) == int(beyond), f"{len(beyond_cells)} cells beyond the bound: {beyond_cells}"
@@ -180,21 +186,22 @@ def test_solver_evaluation_ratio_is_the_printed_one(fmu_path: Path, tmp_path: Pa
               if line.startswith("| 1e-")]
     assert len(ratios) == 9, f"{len(ratios)} error levels, not 1e-4 .. 1e-12"
     assert agrees(low, min(ratios)) and agrees(high, max(ratios)), \
-        f"README.md says {figure}; bench solvers prints {min(ratios)} to {max(ratios)}"
+        f"docs/figures.md says {figure}; bench solvers prints {min(ratios)} to {max(ratios)}"
 
 
 def test_speed_row_error_and_ratio_direction(fmu_path: Path) -> None:
     """``bench speed``: the error the speed row is measured at is the printed one (it does not
     depend on the machine); its timings are measured, and only their direction is held: the
-    package's runner at least 5 times faster than fmpy's ``simulate_fmu`` (the README: 20x)."""
+    package's runner at least 5 times faster than fmpy's ``simulate_fmu`` (the table: 20x)."""
     figure, held = headline("100 periods from Python at error")
     assert held == "measured"
-    quoted_error = re.search(rf"at error ({NUMBER})", README).group(1)
+    quoted_error = re.search(rf"at error ({NUMBER})", FIGURES).group(1)
     printed = cli("bench", "speed", "--repeat", "3", "--fmu", str(fmu_path), timeout=600)
     runs = {m.group(1): (float(m.group(2)), float(m.group(3))) for m in re.finditer(
         rf"bench_speed method='([^']+)' best_ms=({NUMBER}) median_ms={NUMBER} error=({NUMBER})", printed)}
     runner_ms, runner_error = runs["package, C loop (FmuRunner)"]
-    assert agrees(quoted_error, runner_error), f"README.md says error {quoted_error}; bench speed prints {runner_error}"
+    assert agrees(quoted_error, runner_error), \
+        f"docs/figures.md says error {quoted_error}; bench speed prints {runner_error}"
     fmpy_ms, _ = runs["fmpy simulate_fmu"]
     assert fmpy_ms / runner_ms > 5, f"the runner is only {fmpy_ms / runner_ms:.1f} times faster than simulate_fmu"
     assert "20x fmpy's `simulate_fmu`" in figure
@@ -223,7 +230,7 @@ def test_judge_example_prints_the_quoted_diagnosis(fmu_path: Path, tmp_path: Pat
 
 def test_every_headline_row_says_how_it_is_held() -> None:
     """Each row of the headline table is either compared here or marked as a measurement."""
-    rows = [line for line in README.split("## Headline figures", 1)[1].split("\n## ", 1)[0].splitlines()
+    rows = [line for line in FIGURES.splitlines()
             if line.startswith("|") and not line.startswith("|---") and not line.startswith("| what")]
     assert len(rows) >= 8
     for line in rows:

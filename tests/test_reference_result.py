@@ -98,7 +98,8 @@ def _related(archive: zipfile.ZipFile) -> dict[str, ElementTree.Element]:
 def test_manifest_follows_the_standard(fmu_any: Path) -> None:
     archive = zipfile.ZipFile(fmu_any)
     manifest = ElementTree.fromstring(archive.read(FOLDER + "fmi-ls-manifest.xml"))
-    assert (manifest.get(LS + "fmi-ls-version"), manifest.get(LS + "fmi-ls-description")) == (LS_VERSION, LS_DESCRIPTION)
+    assert (manifest.get(LS + "fmi-ls-version"),
+            manifest.get(LS + "fmi-ls-description")) == (LS_VERSION, LS_DESCRIPTION)
     names = set(archive.namelist())
     related = manifest.findall("Related")
     assert {r.get("role") for r in related} == {"result", "experiment/validation", "document"}

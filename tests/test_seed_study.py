@@ -12,9 +12,9 @@ import pytest
 from fmpy import simulate_fmu
 from scipy.special import ellipk
 
-from pendulum_fmu.fmu.period import measured_period
 from fmpy_runs import Scenario, simulate
 from fmu_rebuild import rebuild_from_sources
+from pendulum_fmu.fmu.period import measured_period
 from reference_cache import cached
 
 SEED_AMPLITUDES = (75.0, 80.0, 85.0, 90.0)
@@ -45,6 +45,7 @@ def _mpmath_pendulum(theta0: float, w0: float, times: list[float]) -> list[float
     return [float(v) for v in cached("odefun35", (theta0, w0, tuple(times)), compute)[0]]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("amplitude", (75.0, 90.0))
 def test_theta_exact_against_mpmath_ode_solution(fmu_any: Path, amplitude: float) -> None:
     scenario = Scenario(amplitude_deg=amplitude, periods=1.0, points_per_period=8)
@@ -81,6 +82,7 @@ def test_coarse_and_fine_communication_grids_agree(fmu_any: Path) -> None:
     assert np.max(np.abs(common["theta"] - coarse.result["theta"])) <= 1e-9
 
 
+@pytest.mark.slow
 def test_fmu_rebuilt_from_its_sources_gives_the_same_results(fmu_path: Path, tmp_path: Path) -> None:
     unzipped = rebuild_from_sources(fmu_path, tmp_path)
     assert (unzipped / "binaries/linux64/Pendulum.so").exists()

@@ -63,7 +63,7 @@ def _p1(unzipped: Path, md: ModelDescription, solver: str, tol: float) -> tuple[
 # RK4 and the composition take a fixed step h ~ tol^(1/4) and tol^(1/8): tol / 16 and
 # tol / 256 halve it exactly (the RK4 range starts where its h^5 term no longer counts; the
 # composition's range ends above its rounding floor: its step rule asks 1e-3 tol of the phase
-# per unit time, issue 11).
+# per unit time).
 # The adaptive pairs' steps halve when tol falls by about 2^(q): 32 for DOPRI5, 2048 for
 # the 12th-order pair; their order is read from the steps actually taken. DOPRI5 is
 # 5th-order; its energy projection adds accuracy (observed 5.6 over the range), never loses it.
@@ -79,10 +79,10 @@ ORDER_CASES = [
 def test_convergence_order_on_p1(unzipped: Path, md: ModelDescription, solver: str, tols: tuple[float, ...],
                                  order: float, band: float) -> None:
     results = [_p1(unzipped, md, solver, tol) for tol in tols]
-    for (_, n1), (_, n2) in zip(results, results[1:]):
+    for (_, n1), (_, n2) in zip(results, results[1:], strict=False):
         assert n2 / n1 == pytest.approx(2.0, rel=0.1), f"steps {n1} -> {n2}: the step did not halve"
     # the order over the whole range of steps (DOPRI5's projected errors alternate between the
-    # halvings: 7.35 then 3.90 since issue 21, 5.6 over both)
+    # halvings: 7.35 then 3.90 under the certificate's step rules, 5.6 over both)
     (e1, n1), (e2, n2) = results[0], results[-1]
     observed = math.log(e1 / e2) / math.log(n2 / n1)
     assert abs(observed - order) <= band, f"{solver}: errors {e1:.3g} -> {e2:.3g}, observed order {observed:.2f}"
@@ -116,12 +116,12 @@ def test_default_never_turns_the_libration_near_the_top_into_a_rotation(
 
 
 def test_default_error_near_the_top_shrinks_with_the_tolerance(p2_default: list[tuple[float, float, float]]) -> None:
-    # Down to the rounding floor of double precision near the top (1e-11 to 4e-11, README):
+    # Down to the rounding floor of double precision near the top (1e-11 to 4e-11):
     # there theta = pi - 1.7e-4 is held to ulp(pi), 2.5e-12 of its distance from the saddle,
     # and each passage's rounding shifts the time spent up there.
     floor = 5e-11
-    for (tol1, e1, _), (tol2, e2, _) in zip(p2_default, p2_default[1:]):
-        # within 2 tol: omega's absolute tolerance is tol w0 since issue 21 (the same steps at
+    for (tol1, e1, _), (tol2, e2, _) in zip(p2_default, p2_default[1:], strict=False):
+        # within 2 tol: omega's absolute tolerance is tol w0 (the same steps at
         # every L and g), and tol 1e-6 gives 1.8e-6 here (the certificate's bound: 100 tol)
         assert e1 <= max(2 * tol1, floor) and e2 <= max(2 * tol2, floor)
         assert e2 < e1 or e1 < floor, f"tol {tol1:g} -> {tol2:g}: error {e1:.3g} -> {e2:.3g}"

@@ -40,7 +40,7 @@ def test_cost_at_interpolates_in_log_log_and_knows_what_is_out_of_reach() -> Non
 def test_aggregate_takes_the_worst_error_and_sums_the_cost() -> None:
     runs = [Run("P1", a, 10.0, "c", "rkn", 1e-8, rhs_evaluations=100 + i, max_err=e, energy_err_max=0.0,
                 energy_err_first=0.0, energy_err_last=0.0, max_abs_theta=1.0, wall_s=1.0)
-            for i, (a, e) in enumerate(zip((75.0, 80.0, 85.0, 90.0), (1e-9, 3e-9, 2e-9, 1e-10)))]
+            for i, (a, e) in enumerate(zip((75.0, 80.0, 85.0, 90.0), (1e-9, 3e-9, 2e-9, 1e-10), strict=True))]
     (p,) = aggregate(runs)
     assert (p.max_err, p.rhs_evaluations, p.periods, p.wall_per_period) == (3e-9, 406, 40.0, 0.1)
     runs[2].status = "skipped"
@@ -107,6 +107,7 @@ def test_a_peer_run_is_measured_against_the_same_truth(unzipped: Path) -> None:
     assert tight.rhs_evaluations > 3 * loose.rhs_evaluations
 
 
+@pytest.mark.slow
 def test_bench_solvers_quick_run_writes_its_outputs(fmu_path: Path, driver: Path, tmp_path: Path) -> None:
     code = main(["bench", "solvers", "--fmu", str(fmu_path), "--driver", str(driver), "--out", str(tmp_path),
                  "--problems", "P1,P2", "--quick", "--no-peers"])

@@ -27,6 +27,7 @@ def test_bench_masters_prints_the_table_and_draws_the_figure(tmp_path: Path,
     assert figure.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n" and figure.stat().st_size > 20_000
 
 
+@pytest.mark.engines
 def test_bench_masters_with_one_engine() -> None:
     """Ecos (or whichever engines are installed) joins the masters with its own rows."""
     points = measure((0.02, 0.01), 1.0)

@@ -18,6 +18,8 @@ from pendulum_fmu.split.engines import EngineError, missing, run_engine
 from pendulum_fmu.split.judge import judge_split
 from pendulum_fmu.split.masters import observed_orders
 
+pytestmark = pytest.mark.engines
+
 STEPS = (0.02, 0.01, 0.005)
 STOP = 2.0
 BEHAVES = {
@@ -46,7 +48,7 @@ def _skip_unless_installed(engine: str) -> None:
 def test_engine_runs_is_judged_and_converges(engine: str, version: int, tmp_path: Path) -> None:
     _skip_unless_installed(engine)
     verdicts = []
-    for H in STEPS:  # noqa: N806
+    for H in STEPS:
         run = run_engine(engine, H, STOP, tmp_path / f"{engine}-{H}.csv", version)
         verdicts.append(judge_split(run.csv))
     expected = BEHAVES[(engine, version)]
@@ -61,7 +63,8 @@ def test_engine_runs_is_judged_and_converges(engine: str, version: int, tmp_path
     errors = [v.error for v in verdicts]
     for order in observed_orders(list(STEPS), errors):
         assert abs(order - 1.0) < 0.2, errors
-    assert math.isfinite(errors[-1]) and errors[-1] < 20 * STEPS[-1]  # 11 H (Jacobi), 3.7 H (Gauss-Seidel), 17 H (fmpy.ssp)
+    # 11 H (Jacobi), 3.7 H (Gauss-Seidel), 17 H (fmpy.ssp)
+    assert math.isfinite(errors[-1]) and errors[-1] < 20 * STEPS[-1]
 
 
 @pytest.mark.parametrize(("engine", "version"), sorted(CANNOT), ids=lambda v: str(v))

@@ -36,7 +36,7 @@ but not written again here)."""
 
 @pytest.mark.parametrize("H", [0.02, 0.005])
 @pytest.mark.parametrize("master", SIX, ids=lambda m: m.name)
-def test_names_each_master(master: Master, H: float, tmp_path: Path) -> None:  # noqa: N803
+def test_names_each_master(master: Master, H: float, tmp_path: Path) -> None:
     """120 deg, omega0 0.5 rad/s, L = 2 (given with --start), 1.5 s: conformant, named, and its
     error is that master's on the same rows (the rank says so)."""
     run_ = simulate(master.scheme, master.coupling, H, 1.5, THETA0, OMEGA0, L)
@@ -54,7 +54,7 @@ def test_names_each_master(master: Master, H: float, tmp_path: Path) -> None:  #
 def test_the_macro_step_is_read_exactly() -> None:
     """Times made by adding H in binary (an engine's loop) or printed with 6 digits: H is the
     decimal the engine was given, where the median of the differences is off."""
-    for H in (1e-4, 1e-5, 0.01, 0.002):  # noqa: N806
+    for H in (1e-4, 1e-5, 0.01, 0.002):
         n = round(1.0 / H)
         added = np.cumsum(np.concatenate(([0.0], np.full(n, H))))
         assert float(np.median(np.diff(added))) != H or H == 0.01
@@ -200,7 +200,7 @@ def test_decimated_output_is_identified_at_its_macro_step(tmp_path: Path) -> Non
 
 def test_accuracy_decides_only_on_a_stated_criterion(tmp_path: Path) -> None:
     paths = []
-    for H in (0.02, 0.01, 0.005, 0.0025):  # noqa: N806
+    for H in (0.02, 0.01, 0.005, 0.0025):
         r = simulate("jacobi", "zoh", H, 2.0)
         paths.append(write_csv(r, tmp_path / f"j{H}.csv"))
     single = judge_split(paths[1])
@@ -240,7 +240,7 @@ def test_command_line(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> Non
     assert figure.stat().st_size > 10_000
     folder = tmp_path / "runs"
     folder.mkdir()
-    for H in (0.02, 0.01):  # noqa: N806
+    for H in (0.02, 0.01):
         write_csv(simulate("gauss-seidel", "zoh", H, 1.0), folder / f"{H}.csv")
     assert main(["judge", str(folder), "--system", "split", "--json", str(report)]) == 0
     assert "order" in capsys.readouterr().out and len(json.loads(report.read_text())["runs"]) == 2

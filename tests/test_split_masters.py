@@ -87,7 +87,7 @@ def test_strong_coupling_converges_in_a_few_passes_and_reports_them() -> None:
     assert one_pass is not None and np.all(one_pass == 1)
     # the fixed point: each step is Body's closed form for the quadratic input through alpha_k,
     # alpha'_k = -(g/L) cos(theta_k) omega_k and alpha_(k+1) = -(g/L) sin(theta_(k+1)) of the step's own end
-    H, k = 0.01, 9.81  # noqa: N806
+    H, k = 0.01, 9.81
     theta, omega, alpha = fine.theta, fine.omega, -k * np.sin(fine.theta)
     slope = -k * np.cos(theta[:-1]) * omega[:-1]
     c = 2 * (alpha[1:] - alpha[:-1] - slope * H) / H ** 2

@@ -22,7 +22,7 @@ from pendulum_fmu.split.pair import ALPHA, OMEGA, OMEGA_EXACT, THETA, THETA_EXAC
 PROBLEM = Problem(L=1.5, g=9.81, theta0=2.5, omega0=-0.75)
 
 
-def gauss_seidel(pair: Pair, first: int, last: int, H: float = 0.03) -> np.ndarray:  # noqa: N803
+def gauss_seidel(pair: Pair, first: int, last: int, H: float = 0.03) -> np.ndarray:
     """Macro steps first..last-1 of Gauss-Seidel (FMI 2.0: the output derivatives passed on as
     input derivatives), every output after each step in a row."""
     rows = []

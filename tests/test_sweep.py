@@ -14,12 +14,12 @@ import numpy as np
 import pyarrow as pa
 import pytest
 from PIL import Image
-from processes import stop
 from scipy.special import ellipk
 
 from pendulum_fmu.cli.main import main
-from pendulum_fmu.sweep.run import JOURNAL, JOURNAL_FMU, read_sweep_table
 from pendulum_fmu.sweep.grid import COLUMNS, TIMING_COLUMNS
+from pendulum_fmu.sweep.run import JOURNAL, JOURNAL_FMU, read_sweep_table
+from processes import stop
 
 GRID = ["--amplitudes", "30,75:90:4", "--lengths", "1,2", "--solvers", "dopri5,cvode", "--periods", "3",
         "--points-per-period", "20"]

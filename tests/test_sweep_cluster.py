@@ -1,6 +1,6 @@
 """A sweep on a real Dask cluster: ``dask scheduler`` and ``dask worker`` started as processes of
 their own (the console scripts beside this interpreter) on 127.0.0.1, a worker killed in the
-middle of the sweep, and a scheduler that is not there (issue 27, item 2)."""
+middle of the sweep, and a scheduler that is not there."""
 
 from __future__ import annotations
 
@@ -16,6 +16,7 @@ from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
+
 from processes import stop
 
 RUNS = 400

@@ -1,4 +1,4 @@
-"""Ctrl-C at random moments through the installed ``pendulum-fmu`` console script (issue 27).
+"""Ctrl-C at random moments through the installed ``pendulum-fmu`` console script.
 
 A terminal's Ctrl-C reaches the whole process group: the command, its Dask nanny and worker
 processes and multiprocessing's resource tracker. The console script's main module is
@@ -21,6 +21,8 @@ import time
 from pathlib import Path
 
 import pytest
+
+pytestmark = pytest.mark.slow
 
 MOMENTS = 50
 """SIGINTs sent, at moments spread from 0.2 s to the end of an uninterrupted sweep."""

@@ -13,6 +13,7 @@ from pathlib import Path
 import pytest
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("inherited", [signal.SIG_DFL, signal.SIG_IGN], ids=["SIGINT default", "SIGINT ignored"])
 def test_ctrl_c_prints_one_line_and_leaves_the_finished_runs(fmu_path: Path, tmp_path: Path,
                                                              inherited: signal.Handlers) -> None:

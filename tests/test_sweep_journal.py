@@ -5,10 +5,10 @@ from __future__ import annotations
 import math
 from pathlib import Path
 
-from pendulum_fmu.sweep.journal import Journal, read_journal
 from pendulum_fmu.sizing import SECONDS_PER_POINT, SECONDS_PER_SWEEP_RUN, sweep_run_seconds
 from pendulum_fmu.sweep.cluster import TASK_SECONDS, TASKS_PER_THREAD, batches, estimated_run_seconds, task_size
 from pendulum_fmu.sweep.grid import COLUMNS, SweepGrid, SweepPoint
+from pendulum_fmu.sweep.journal import Journal, read_journal
 
 
 def _row(point: SweepPoint, error: float) -> dict[str, object]:

@@ -23,6 +23,8 @@ COST = 0.004
 tasks' sizes are known in advance (a run timed on a loaded machine sized them differently from
 one run to the next, and a test that compared them failed while the sizing was right)."""
 
+pytestmark = pytest.mark.slow
+
 
 def test_a_sweep_sends_tasks_of_a_tenth_of_a_second(fmu_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     """The tasks really submitted: sized from the run cost the workers' timing returns (here

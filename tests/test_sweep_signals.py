@@ -1,4 +1,4 @@
-"""A sweep's local workers leave Ctrl-C to the command (issue 27, item 4): SIGINT blocked in every
+"""A sweep's local workers leave Ctrl-C to the command: SIGINT blocked in every
 worker from its start, and the command's own handler never set in a spawned process."""
 
 from __future__ import annotations

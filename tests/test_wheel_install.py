@@ -18,6 +18,8 @@ from pathlib import Path
 
 import pytest
 
+pytestmark = pytest.mark.slow
+
 REPO = Path(__file__).resolve().parents[1]
 
 
@@ -95,7 +97,8 @@ def test_the_installed_package_runs_its_shipped_c_loop(installed: Path, tmp_path
 def test_the_installed_package_finds_the_split_pendulum(installed: Path, tmp_path: Path) -> None:
     """split_path gives the wheel's own PendulumSplit.ssp for FMI 2.0 and 3.0 (not the checkout's build/)."""
     python = installed.parent / "python"
-    script = "import pendulum_fmu; print(pendulum_fmu.split_path(fmi_version=2)); print(pendulum_fmu.split_path(fmi_version=3))"
+    script = ("import pendulum_fmu; print(pendulum_fmu.split_path(fmi_version=2)); "
+              "print(pendulum_fmu.split_path(fmi_version=3))")
     done = _run([str(python), "-c", script], tmp_path, _clean_env())
     assert done.returncode == 0, done.stderr[-3000:]
     site = installed.parent.parent / "lib"

@@ -34,8 +34,8 @@ if TYPE_CHECKING:
     from pendulum_fmu.fmu.locate import locate_fmu
     from pendulum_fmu.fmu.runner import FmuRunner, Trajectory
     from pendulum_fmu.spec import SOLVERS, Method, Pendulum, TimeGrid
-    from pendulum_fmu.sweep.run import run_sweep
     from pendulum_fmu.sweep.grid import SweepGrid, SweepPoint
+    from pendulum_fmu.sweep.run import run_sweep
 
 
 def fmu_path(fmi_version: int | None = None) -> Path:
@@ -62,6 +62,7 @@ def __getattr__(name: str) -> Any:
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
-__all__ = ["SOLVERS", "BuildError", "exact", "FmuRunner", "Method", "Pendulum", "SimulationError", "SweepGrid", "SweepPoint",
+__all__ = ["SOLVERS", "BuildError", "exact", "FmuRunner", "Method", "Pendulum", "SimulationError", "SweepGrid",
+           "SweepPoint",
            "TimeGrid", "Trajectory", "UsageError", "__version__", "fmu_path", "locate_fmu", "run_sweep",
            "split_path"]

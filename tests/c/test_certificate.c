@@ -1,4 +1,4 @@
-/* test_certificate.c: every Co-Simulation step that returns OK holds its bound (issue 21):
+/* test_certificate.c: every Co-Simulation step that returns OK holds its bound:
  *   |theta - theta_exact| <= 100 tol max(1, |theta_exact|),
  *   |omega - omega_exact| <= 100 tol max(w0, |omega_exact|),
  * recomputed here from the exact port (itself checked against mpmath at 50 digits by
@@ -10,10 +10,11 @@
  *     1e-10, four solvers, 10 periods at 20 steps a period: no step OK beyond its bound, and
  *     warnings only where certificate_reachable says no double-precision solver can hold it;
  *   - random states (libration, rotation, near the separatrix), four solvers, several tol;
- *   - the issue's reproducers (1 - m = 1.1e-19 with rkn at 1e-12; the scale ladder);
+ *   - the hard cases (1 - m = 1.1e-19 with rkn at 1e-12; the scale ladder);
  *   - the certificate changes no number: theta, omega and the solver's counts are bit-identical
  *     with it on and off (Instance.certificate_off);
- *   - one message at the first crossing and one per tenfold growth, with what the issue asks;
+ *   - one message at the first crossing and one per tenfold growth, naming the solver, its
+ *     tolerance, 1 - m and the solvers that can hold the bound;
  *   - an FMU state carries the certificate's field, and a forged value is refused.
  *
  * Arguments: `table` prints the grid's table (docs/certificate.md), `cost` times a step with
@@ -56,7 +57,7 @@ static int setup(Instance *inst, const Start *s, int solver, double tol, int cer
     return core_start(inst, "certificate", host_log, certificate_off, s, solver, tol, 0.0);
 }
 
-/* Departure from the bound in units of the bound, written out again from the issue's words. */
+/* Departure from the bound in units of the bound, written out again from the bound's definition. */
 static double departure(const Instance *inst)
 {
     double th_e, om_e;
@@ -213,7 +214,7 @@ static void test_bit_identical_on_off(void)
 /* ---- the messages: first crossing, then each tenfold growth --------------------------- */
 static void test_messages(void)
 {
-    /* the issue's case: 1 - m = 1.1e-19, rkn at tol 1e-12, five steps of 16.505 s */
+    /* the hardest case: 1 - m = 1.1e-19, rkn at tol 1e-12, five steps of 16.505 s */
     const Start s = {3.0849789226170623, 0.034294831419746555, 374.6912982074549, 137.53188593324322};
     Instance inst;
     Log log;
@@ -312,7 +313,7 @@ static Run ladder_run(double L, double g)
 
 static void test_scale_ladder(void)
 {
-    /* the issue's ladder: (L, g) with g / L from 1e-12 to 1e12; rounding makes 1 - m differ
+    /* the scale ladder: (L, g) with g / L from 1e-12 to 1e12; rounding makes 1 - m differ
      * between them (it is ~1e-15 here), so the steps must agree and no step be OK beyond
      * its bound */
     const double Ls[] = {1.0 / 9.81, 1.0, 1e-3, 1e-6, 1e6, 1e3};

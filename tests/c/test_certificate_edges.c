@@ -1,7 +1,7 @@
-/* test_certificate_edges.c: the step certificate at its edges (issue 26, item 7).
+/* test_certificate_edges.c: the step certificate at its edges.
  *
  *   - the start time: the same problem takes the same internal steps (accepted, rejected,
- *     right-hand sides) from every start time, for every solver, and the issue's two steps that
+ *     right-hand sides) from every start time, for every solver, and the two steps that
  *     were refused with "step size underflow" (L = 1e-6, g = 1e6 from startTime 1e7; L = 1,
  *     g = 9.81 from startTime 2^41) return OK;
  *   - the tolerance floor: a Co-Simulation experiment below INTEGRATOR_TOLERANCE_FLOOR (1e-14),
@@ -132,7 +132,7 @@ static void test_start_times(void)
     const double deg75 = 75.0 * PI / 180.0;
     const Start tiny = {deg75, 0.0, 1e-6, 1e6};
     const Start earth = {deg75, 0.0, 1.0, 9.81};
-    /* the issue's two steps */
+    /* the two steps once refused */
     compare_start_times("L 1e-6, g 1e6, one step", &tiny, 1e-8, 1e7, 6.283185307179586e-07, 1);
     compare_start_times("L 1, g 9.81, one step", &earth, 1e-8, 0x1p41, 0.224, 1);
     /* several steps, other start times and tolerances */

@@ -178,7 +178,7 @@ static void test_complete_integral(void)
 
 /* {u, m (double), m1, sn, cn, dn, am} at m = 1 - m1 exactly (mpmath ellipfun at 80 digits;
  * am continuous: n pi + atan2(sn, cn) of u - 2 n K). The row u = 50, m = 0.99999999997^2 is
- * scipy issue 8480 (scipy's ellipj gives cn = -3.9e10 there). */
+ * scipy/scipy#8480 on GitHub (scipy's ellipj gives cn = -3.9e10 there). */
 static const double JACOBI_TABLE[][7] = {
     {0.3, 0.5, 0.5, 0.2934127331684554, 0.9559858618277871, 0.9782405041743613, 0.2977947491298303},
     {1.0, 0.5, 0.5, 0.8030018248956439, 0.5959765676721407, 0.8231610016315962, 0.9323150798838539},

@@ -1,4 +1,4 @@
-/* test_exact.c: checks of fmu_src/exact.{h,c}, the exact solution of theta'' + w0^2 sin theta = 0.
+/* test_exact.c: checks of fmu_src/math/exact.{h,c}, the exact solution of theta'' + w0^2 sin theta = 0.
  *
  * Tabulated values were generated once with mpmath 1.4.1 at 50 significant digits from the
  * closed form (documentation/math.html: libration 2 atan2(k sn u, dn u), rotation 2 am(v | 1/m),

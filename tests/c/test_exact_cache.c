@@ -1,5 +1,5 @@
-/* test_exact_cache.c: the exact state at the current time is evaluated once per time (issue 18,
- * targets 3 and 4). An instance keeps theta_exact and omega_exact of its current time
+/* test_exact_cache.c: the exact state at the current time is evaluated once per time.
+ * An instance keeps theta_exact and omega_exact of its current time
  * (Instance.exact_now, model.h): the certificate after a DoStep, a GetReal or the output
  * derivatives evaluate it first, the others reuse it. The instance counts its evaluations
  * (exact_now.evaluations), so this test counts them without any timing:

@@ -1,7 +1,7 @@
-/* test_fmi_edges.c: the FMI-side reproducers of issue 11, each refused with fmi2Error and a
- * logged reason: functions of the other interface (defect 5), steps that would move time
- * backwards (6), forged and corrupted FMU states (7), steps out of reach of the step budget
- * (8). Runs under ASan/UBSan and valgrind in the test command. */
+/* test_fmi_edges.c: the FMI-side hard cases, each refused with fmi2Error and a
+ * logged reason: functions of the other interface, steps that would move time
+ * backwards, forged and corrupted FMU states, steps out of reach of the step budget.
+ * Runs under ASan/UBSan and valgrind in the test command. */
 #include <float.h>
 #include <math.h>
 #include <stdarg.h>
@@ -226,7 +226,7 @@ static void test_forged_states(fmi2Type type)
     fmi2Byte *blob = malloc(size), *forged = malloc(size);
     fmi2SerializeFMUstate(c, state, blob, size);
 
-    /* the issue's two reproducers: Landen level count 2^30, theta = NaN */
+    /* two forged states: Landen level count 2^30, theta = NaN */
     memcpy(forged, blob, size);
     ModelData data;
     memcpy(&data, forged + sizeof(Header), sizeof data);

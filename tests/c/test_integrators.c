@@ -470,7 +470,7 @@ static void test_default_near_separatrix(void)
                it.stats.rhs_evals, it.stats.rejected);
         check(ok && max_abs < PI, "P2 tol %g: max |theta| = %.17g", tol, max_abs);
         /* within 2 tol: since omega's absolute tolerance is tol w0 (the same steps at every
-         * scale, issue 21), tol 1e-6 gives 1.8e-6 here (the certificate's bound is 100 tol) */
+         * scale), tol 1e-6 gives 1.8e-6 here (the certificate's bound is 100 tol) */
         check(err <= fmax(2.0 * tol, floor_err), "P2 tol %g: error %.3g above twice the tolerance", tol,
               err);
         check(err < prev || prev < floor_err, "P2 tol %g: error %.3g did not shrink (%.3g)",

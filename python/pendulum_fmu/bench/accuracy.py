@@ -17,8 +17,7 @@ from pathlib import Path
 
 import numpy as np
 
-from pendulum_fmu.bench.reference import (DIGITS, closed_form, exact_frequency, frequency, max_abs_diff,
-                                          omega_scale)
+from pendulum_fmu.bench.reference import DIGITS, closed_form, exact_frequency, frequency, max_abs_diff, omega_scale
 from pendulum_fmu.fmu.exact_port import ExactPort
 
 CASES: dict[str, tuple[float, float, float, float]] = {  # name: theta0 (rad), omega0 (rad/s), L (m), g (m/s^2)

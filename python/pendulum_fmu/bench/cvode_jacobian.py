@@ -155,12 +155,15 @@ def run_cvode(fmu: Path, use_jacobian: bool, amplitude_deg: float = 85.0, tolera
         getattr(sundials_cvode, name)(c_void_p(solver.cvode_mem), byref(value))
         counts.append(value.value)
     model.terminate()
-    return CvodeRun(use_jacobian, *counts, max_error=error)
+    steps, rhs_evaluations, difference_quotient_evaluations, jacobian_evaluations = counts
+    return CvodeRun(use_jacobian, steps, rhs_evaluations, difference_quotient_evaluations, jacobian_evaluations,
+                    max_error=error)
 
 
 def table(fmus: list[Path]) -> list[str]:
-    """The lines of the README's CVODE figure: each FMU without and with its Jacobian."""
-    lines = ["FMU                         Jacobian          steps  RHS evals  of which for J  J evals  max|theta-exact|"]
+    """The lines of the CVODE figure of docs/fmi.md: each FMU without and with its Jacobian."""
+    lines = ["FMU                         Jacobian          steps  RHS evals  of which for J  J evals"
+             "  max|theta-exact|"]
     for fmu in fmus:
         version = read_model_description(str(fmu)).fmiVersion
         for use_jacobian in (False, True):

@@ -27,6 +27,7 @@ from __future__ import annotations
 import math
 import subprocess
 import time
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -332,6 +333,7 @@ def run(executable: Path | None, n: int, amplitudes_deg: tuple[float, ...], roun
         One result per amplitude, in the given order.
     """
     c_timings = run_c_benchmark(executable, n, amplitudes_deg) if executable is not None else {}
+    kinds: dict[str, Callable[..., float]]
     kinds = {"python": time_library, "scipy": time_scipy, "python_states": time_library_states,
              "scipy_states": time_scipy_states}
     samples: dict[tuple[float, str], list[float]] = {(a, k): [] for a in amplitudes_deg for k in kinds}

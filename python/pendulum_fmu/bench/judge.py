@@ -10,7 +10,7 @@ rerun, since it passes).
 Every case runs in a child process of its own, warm: the child imports the judge and judges
 a 1,000-row file first, then times ``read_result`` on the file, then ``judge`` on it (which
 reads it again: "judge s" is the whole verdict), and reports its peak resident memory
-(``ru_maxrss``, the imports included). The targets are those of issue 26: 1,000 rows in
+(``ru_maxrss``, the imports included). The targets: a verdict on 1,000 rows in
 under 1 s; 2 million rows in under 5 s (CS) and 30 s (ME); under 1 GB.
 """
 
@@ -34,7 +34,7 @@ SMALL_ROWS = 1_000
 
 
 def target_seconds(rows: int, interface: str) -> float:
-    """The time a verdict may take (issue 26, item 5): 1 s up to 1,000 rows, else 5 s in CS
+    """The time a verdict may take: 1 s up to 1,000 rows, else 5 s in CS
     and 30 s in ME (the 2-million-row targets, kept for every larger file)."""
     if rows <= SMALL_ROWS:
         return 1.0
@@ -81,12 +81,12 @@ def write_run(fmu: Path, rows: int, path: Path) -> Path:
     Path
         ``path``.
     """
-    import numpy as np  # noqa: PLC0415
-    import pyarrow as pa  # noqa: PLC0415
-    import pyarrow.csv as pacsv  # noqa: PLC0415
+    import numpy as np
+    import pyarrow as pa
+    import pyarrow.csv as pacsv
 
-    from pendulum_fmu.fmu.runner import FmuRunner  # noqa: PLC0415
-    from pendulum_fmu.spec import Method, Pendulum, TimeGrid  # noqa: PLC0415
+    from pendulum_fmu.fmu.runner import FmuRunner
+    from pendulum_fmu.spec import Method, Pendulum, TimeGrid
 
     grid = TimeGrid(stop=(rows - 1) * OUTPUT_INTERVAL, unit="s", output_interval=OUTPUT_INTERVAL)
     with FmuRunner(fmu) as runner:

@@ -56,13 +56,13 @@ class Point:
 
     name: str
     kind: str
-    H: float  # noqa: N815
+    H: float
     error: float
     seconds: float
     note: str = ""
 
 
-def engine_error(path: Path, H: float) -> float:  # noqa: N803
+def engine_error(path: Path, H: float) -> float:
     """Largest |theta - exact| of an engine's file, at the times its rows belong to."""
     from pendulum_fmu import exact
 
@@ -101,7 +101,7 @@ def measure(steps: tuple[float, ...] = STEPS, stop: float = STOP, engines: bool 
     """
     points = []
     for master in MASTERS:
-        for H in steps:  # noqa: N806
+        for H in steps:
             run = run_master(master, H, stop)
             points.append(Point(master.name, "master", H, run.error, run.seconds))
     if not engines:
@@ -112,15 +112,15 @@ def measure(steps: tuple[float, ...] = STEPS, stop: float = STOP, engines: bool 
                 continue
             for version in fmi_versions:
                 name = f"{engine} (FMI {version})"
-                for H in steps:  # noqa: N806
+                for H in steps:
                     path = Path(folder) / f"{engine}-{version}-{H:g}.csv"
                     try:
-                        run = run_engine(engine, H, stop, path, version)
+                        engine_run = run_engine(engine, H, stop, path, version)
                     except (EngineError, Exception) as error:  # noqa: BLE001 (any engine's own failure)
                         points.append(Point(name, "engine", H, math.nan, math.nan, f"cannot: {error}"))
                         break
                     note = _judged(path)
-                    points.append(Point(name, "engine", H, engine_error(path, H), run.seconds, note))
+                    points.append(Point(name, "engine", H, engine_error(path, H), engine_run.seconds, note))
     return points
 
 
@@ -196,7 +196,7 @@ def judge_seconds(rows: int) -> tuple[float, float, str]:
     from pendulum_fmu.split.judge import judge_split
     from pendulum_fmu.split.masters import master_named
 
-    H = STOP / rows  # noqa: N806
+    H = STOP / rows
     with tempfile.TemporaryDirectory(prefix="pendulum-bench-split-judge-") as folder:
         paths = []
         for name, step in (("small", 0.01), ("large", H)):

@@ -30,7 +30,7 @@ def exact_frequency(length: float, gravity: float) -> mp.mpf:
         return mp.sqrt(mp.mpf(gravity) / mp.mpf(length))
 
 
-def closed_form(theta0: float, omega0: float, w0: float | mp.mpf, times: Sequence[float],
+def closed_form(theta0: float, omega0: float, w0: float | mp.mpf, times: Sequence[float] | np.ndarray,
                 t0: float = 0.0, digits: int = DIGITS) -> tuple[list[mp.mpf], list[mp.mpf], mp.mpf]:
     """Exact solution by mpmath's elliptic functions, at ``DIGITS`` digits.
 
@@ -40,7 +40,7 @@ def closed_form(theta0: float, omega0: float, w0: float | mp.mpf, times: Sequenc
         Initial state at ``t0`` (taken exactly as binary doubles).
     w0 : float or mpmath.mpf
         sqrt(g / L) (the exact root of the doubles g / L, see :func:`exact_frequency`).
-    times : sequence of float
+    times : sequence of float or ndarray
         Evaluation times.
     t0 : float
         Time at which the initial state is posed.

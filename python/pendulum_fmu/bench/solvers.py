@@ -28,8 +28,8 @@ import math
 import shutil
 import sys
 import time
+from collections.abc import Callable
 from pathlib import Path
-from typing import Callable
 
 from fmpy import extract, read_model_description
 
@@ -37,10 +37,23 @@ from pendulum_fmu.bench.workprecision.analysis import Point, aggregate, best_met
 from pendulum_fmu.bench.workprecision.cdriver import Floor, run_driver, shared_library
 from pendulum_fmu.bench.workprecision.problems import Grid, cases, make_grid
 from pendulum_fmu.bench.workprecision.report import cost_table, energy_table, plot_problem, write_csv
-from pendulum_fmu.bench.workprecision.runs import (SOLVE_IVP_METHODS, Run, run_fmu_cs, run_fmu_me, run_ode_dop853,
-                      run_solve_ivp)
-from pendulum_fmu.bench.workprecision.targets import (T1_LEVELS, TargetOutcome, default_near_separatrix, default_vs_dop853, fmpy_against_dop853,
-                         grid_independence, wall_against_floor)
+from pendulum_fmu.bench.workprecision.runs import (
+    SOLVE_IVP_METHODS,
+    Run,
+    run_fmu_cs,
+    run_fmu_me,
+    run_ode_dop853,
+    run_solve_ivp,
+)
+from pendulum_fmu.bench.workprecision.targets import (
+    T1_LEVELS,
+    TargetOutcome,
+    default_near_separatrix,
+    default_vs_dop853,
+    fmpy_against_dop853,
+    grid_independence,
+    wall_against_floor,
+)
 from pendulum_fmu.spec import CS_SOLVERS
 
 FMU_TOLS: tuple[float, ...] = tuple(float(f"1e-{k}") for k in range(3, 13))
@@ -242,7 +255,8 @@ def study(fmu: Path, driver: Path, out: Path, problems: list[str], budget_s: flo
         write_csv(out / "points.csv", aggregated)
         write_csv(out / "floors.csv", floors)
         for problem in problems:
-            plot_problem(aggregated, floors, problem, TITLES[problem].format(periods=p3_periods), out / f"wp_{problem}.png")
+            plot_problem(aggregated, floors, problem, TITLES[problem].format(periods=p3_periods),
+                         out / f"wp_{problem}.png")
 
         verdicts: list[TargetOutcome] = []
         t1_rows: list[tuple[float, float, float, float]] = []

@@ -1,6 +1,6 @@
 """Benchmark: one simulation from Python, the package's path against fmpy and compiled peers.
 
-The problem (issue 12): released from rest at 80 deg, L = 1 m, g = 9.81 m/s^2, 100 exact
+The problem: released from rest at 80 deg, L = 1 m, g = 9.81 m/s^2, 100 exact
 periods, 8 output points a period; every method must reach max |theta - theta_exact| <= 1e-9
 on the output points (the truth from pendulum_fmu.exact). Every method runs at the loosest
 tolerance of 1e-7 .. 1e-13 (decades) that reaches that error. After one warm-up each, the
@@ -20,7 +20,7 @@ for collecting another's garbage); best and median over the rounds are reported.
 - fmpy simulate_fmu: simulate_fmu("Pendulum.fmu", ...) as a user calls it (it extracts the
   FMU every call); tuned: extracted once, only theta recorded, the model description read once;
 - numbalsoda dop853: numbalsoda's C++ DOP853 with a numba-compiled right-hand side, called
-  once for the whole grid: the compiled peer of issue 18. Optional (it builds from source only,
+  once for the whole grid: the compiled peer. Optional (it builds from source only,
   with a Fortran compiler: apt-get install gfortran and pip install numba==0.68.1
   numbalsoda==0.3.4); without it its row says so;
 - scipy ode dop853: Hairer's compiled DOP853 (Fortran) with a Python right-hand side;
@@ -37,6 +37,7 @@ import statistics
 import time
 from collections.abc import Callable
 from dataclasses import dataclass
+from functools import partial
 from pathlib import Path
 
 import numpy as np
@@ -148,13 +149,13 @@ def measure(fmu: Path, rounds: int = 10) -> list[MethodTimes]:
                 if isinstance(solve, str):
                     unavailable.append(MethodTimes(name, (), times.size, math.nan, solve))
                     continue
-                rtol, error = _loosest(lambda r, s=solve: s(pendulum, times, r), truth)
-                if rtol is None:
+                peer_rtol, error = _loosest(partial(solve, pendulum, times), truth)
+                if peer_rtol is None:
                     unavailable.append(MethodTimes(name, (), times.size, error,
                                               f"never <= {TARGET_ERROR:g} down to rtol {PEER_TOLERANCES[-1]:g}"))
                     continue
-                methods.append(_Method(name, lambda s=solve, r=rtol: s(pendulum, times, r), error,
-                                       f"rtol {rtol:g}, atol rtol/100"))
+                methods.append(_Method(name, partial(solve, pendulum, times, peer_rtol), error,
+                                       f"rtol {peer_rtol:g}, atol rtol/100"))
             seconds: dict[str, list[float]] = {m.name: [] for m in methods}
             for method in methods:
                 method.run()   # warm-up
@@ -175,11 +176,11 @@ def measure(fmu: Path, rounds: int = 10) -> list[MethodTimes]:
         for folder in scratch:
             shutil.rmtree(folder, ignore_errors=True)
     timings = [MethodTimes(m.name, tuple(seconds[m.name]), times.size, m.error, m.setting) for m in methods]
-    order = [PACKAGE, PACKAGE_PYTHON, *LOOP_ROWS, "fmpy FMU2Slave wrappers",
+    rows = [PACKAGE, PACKAGE_PYTHON, *LOOP_ROWS, "fmpy FMU2Slave wrappers",
              "fmpy simulate_fmu", "fmpy simulate_fmu, tuned", NUMBALSODA, "scipy ode dop853 (compiled)",
              "scipy solve_ivp DOP853"]
     every = timings + unavailable
-    return sorted(every, key=lambda t: order.index(t.name) if t.name in order else len(order))
+    return sorted(every, key=lambda t: rows.index(t.name) if t.name in rows else len(rows))
 
 
 def _package_methods(runner: FmuRunner, python_runner: FmuRunner, pendulum: Pendulum, grid: TimeGrid,

@@ -48,9 +48,9 @@ class SuiteTiming:
 def measure(engines: tuple[str, ...] = ENGINES, timeout: float = 120.0) -> list[SuiteTiming]:
     """Run the Pendulum cases through each engine in turn; return the timings."""
     chosen = cases.select(None, ("pendulum",))
-    import matplotlib.figure  # noqa: F401, PLC0415 (warm: the first engine timed pays no import the second does not)
+    import matplotlib.figure  # noqa: F401 (warm: the first engine timed pays no import the second does not)
 
-    import pendulum_fmu.judge  # noqa: F401, PLC0415
+    import pendulum_fmu.judge  # noqa: F401
     timings = []
     with tempfile.TemporaryDirectory(prefix="pendulum-bench-suite-") as folder:
         for name in engines:

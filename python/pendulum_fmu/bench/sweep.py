@@ -6,7 +6,8 @@ worker count a local cluster is started (not timed), every worker loads the FMU,
 whole sweep is timed from the first submission to the last result; the median of
 ``--repeat`` sweeps is reported, with the efficiency (the speed-up over the first worker count
 divided by the workers' ratio) and the scheduler's own cost per task, timed with empty tasks
-on the same cluster; the sweep puts about 0.1 s of runs in a task (``sweep/cluster.py``). Each worker count runs with the workers' output loop in C
+on the same cluster; the sweep puts about 0.1 s of runs in a task (``sweep/cluster.py``).
+Each worker count runs with the workers' output loop in C
 (the package's path) and in Python (the path before it; ``PENDULUM_FMU_LOOP=python`` in
 the workers' environment), so that the runs per second per worker are seen before and after.
 """

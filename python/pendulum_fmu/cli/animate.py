@@ -4,8 +4,16 @@ from __future__ import annotations
 
 import argparse
 
-from pendulum_fmu.cli.arguments import (add_fmu_argument, add_method_arguments, add_pendulum_arguments, integer, method_from,
-                        output_file, pendulum_from, positive)
+from pendulum_fmu.cli.arguments import (
+    add_fmu_argument,
+    add_method_arguments,
+    add_pendulum_arguments,
+    integer,
+    method_from,
+    output_file,
+    pendulum_from,
+    positive,
+)
 from pendulum_fmu.cli.extras import require_extra
 from pendulum_fmu.spec import StopUnit
 

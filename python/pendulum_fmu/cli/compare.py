@@ -4,8 +4,16 @@ from __future__ import annotations
 
 import argparse
 
-from pendulum_fmu.cli.arguments import (add_fmu_argument, add_method_arguments, add_pendulum_arguments, add_time_arguments,
-                        grid_from, method_from, output_file, pendulum_from)
+from pendulum_fmu.cli.arguments import (
+    add_fmu_argument,
+    add_method_arguments,
+    add_pendulum_arguments,
+    add_time_arguments,
+    grid_from,
+    method_from,
+    output_file,
+    pendulum_from,
+)
 
 NAME = "compare"
 HELP = "numerical against exact theta and the error over time, as one PNG"

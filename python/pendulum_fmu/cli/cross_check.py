@@ -37,7 +37,7 @@ def configure(parser: argparse.ArgumentParser) -> None:
 def run(args: argparse.Namespace) -> int:
     """Export, print each model folder written, return 0."""
     from pendulum_fmu.errors import UsageError
-    from pendulum_fmu.fmu.cross_check import export, describe, platforms
+    from pendulum_fmu.fmu.cross_check import describe, export, platforms
     from pendulum_fmu.fmu.locate import locate_fmu
 
     fmus: list[Path] = args.fmu or [locate_fmu(None, fmi_version=2), locate_fmu(None, fmi_version=3)]

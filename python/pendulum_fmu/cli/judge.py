@@ -49,8 +49,8 @@ examples:
 def configure(parser: argparse.ArgumentParser) -> None:
     """Add the options of ``judge``."""
     parser.add_argument("result", metavar="RESULT", nargs="+",
-                        help="the result file: CSV (also gzipped) or Parquet; with --system split several files or folders of "
-                             "CSV files: runs of one master at different H (the observed order over them)")
+                        help="the result file: CSV (also gzipped) or Parquet; with --system split several files or "
+                             "folders of CSV files: runs of one master at different H (the observed order over them)")
     parser.add_argument("--start", action="append", default=[], metavar="NAME=VALUE",
                         help="a value the run set: theta (rad, or e.g. 80deg), omega, L, g, solver, tolerance; "
                              "repeat for several (the rest: the model description's defaults)")

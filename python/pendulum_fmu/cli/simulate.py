@@ -7,8 +7,17 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from pendulum_fmu.cli.arguments import (add_fmu_argument, add_method_arguments, add_pendulum_arguments, add_time_arguments,
-                        grid_from, method_from, output_file, pendulum_from, size_option)
+from pendulum_fmu.cli.arguments import (
+    add_fmu_argument,
+    add_method_arguments,
+    add_pendulum_arguments,
+    add_time_arguments,
+    grid_from,
+    method_from,
+    output_file,
+    pendulum_from,
+    size_option,
+)
 
 if TYPE_CHECKING:
     from pendulum_fmu.fmu.runner import Trajectory
@@ -70,8 +79,8 @@ def configure(parser: argparse.ArgumentParser) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Run ``simulate`` with parsed arguments."""
-    from pendulum_fmu.fmu.runner import FmuRunner
     from pendulum_fmu.cli.summary import summary_lines
+    from pendulum_fmu.fmu.runner import FmuRunner
     from pendulum_fmu.output.experiment_record import record_of, write_series
 
     pendulum, method, grid = pendulum_from(args), method_from(args), grid_from(args)
@@ -87,6 +96,7 @@ def run(args: argparse.Namespace) -> int:
     if args.out is not None:
         record = record_of(trajectory, args.fmu, NAME, description)
         write_series(trajectory_columns(trajectory), args.out, record, trajectory_metadata(trajectory))
-        beside = "" if args.out.name.lower().endswith(".parquet") else f" (its experiment: {args.out.name}.experiment.json)"
+        beside = "" if args.out.name.lower().endswith(".parquet") else \
+            f" (its experiment: {args.out.name}.experiment.json)"
         print(f"written   {args.out}{beside}")
     return 0

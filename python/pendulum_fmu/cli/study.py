@@ -42,9 +42,8 @@ def configure(parser: argparse.ArgumentParser) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Run the study with parsed arguments; write plots, CSV, table and reports to ``args.out``."""
-    from pendulum_fmu.study.job import write_study
-
     from pendulum_fmu.output.whole_folder import whole_folder
+    from pendulum_fmu.study.job import write_study
 
     def progress(line: str) -> None:
         print(f"study: {line} ...", file=sys.stderr, flush=True)

@@ -71,6 +71,6 @@ def warning_lines(warnings: tuple[str, ...]) -> list[str]:
     parts = [part for w in warnings for part in re.split(r" (?=certificate: at t = )", w)]
     matches = [CERTIFICATE.match(part) for part in parts]
     certificates = [m for m in matches if m is not None]
-    others = [part for part, m in zip(parts, matches) if m is None]
+    others = [part for part, m in zip(parts, matches, strict=True) if m is None]
     lines = [f"warning   the FMU: {'; '.join(others)}"] if others else []
     return lines + ([certificate_line(certificates)] if certificates else [])

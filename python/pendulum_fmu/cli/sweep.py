@@ -9,8 +9,18 @@ import math
 import re
 import sys
 
-from pendulum_fmu.cli.arguments import (add_fmu_argument, angle_degrees, describe, finite, grid, integer, output_folder,
-                                        positive, solver_list, tolerance)
+from pendulum_fmu.cli.arguments import (
+    add_fmu_argument,
+    angle_degrees,
+    describe,
+    finite,
+    grid,
+    integer,
+    output_folder,
+    positive,
+    solver_list,
+    tolerance,
+)
 from pendulum_fmu.cli.extras import require_extra
 from pendulum_fmu.errors import UsageError
 from pendulum_fmu.spec import CS_SOLVERS, DEFAULT_CS_SOLVER, ME_SOLVERS

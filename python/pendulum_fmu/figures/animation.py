@@ -5,8 +5,8 @@ from __future__ import annotations
 import math
 import os
 import sys
-from pathlib import Path
 from collections.abc import Callable
+from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -14,7 +14,6 @@ import numpy as np
 from pendulum_fmu.errors import UsageError
 from pendulum_fmu.fmu.runner import FmuRunner, Trajectory
 from pendulum_fmu.spec import Method, Pendulum, StopUnit, TimeGrid
-
 
 MAX_FRAMES = 1500
 """Most frames an animation may have (a minute at 25 frames/s; a GIF is assembled in memory)."""
@@ -114,7 +113,7 @@ def render(trajectory: Trajectory, out: Path, fps: int, trail: float = 1.0,
     colors = {"numeric": "tab:blue", "exact": "tab:orange"}
     moving: dict[str, tuple[Any, Any, Any, Any]] = {}
     limit = 1.22 * p.length
-    for ax, name in zip(axes, ("numeric", "exact")):
+    for ax, name in zip(axes, ("numeric", "exact"), strict=True):
         ax.set_xlim(-limit, limit)
         ax.set_ylim(-limit, limit)
         ax.set_aspect("equal")
@@ -134,7 +133,7 @@ def render(trajectory: Trajectory, out: Path, fps: int, trail: float = 1.0,
            (plt.Line2D([], [], ls="none", marker="o", color=colors["numeric"], mec="k", ms=9), "bob, numerical"),
            (plt.Line2D([], [], ls="none", marker="o", color=colors["exact"], mec="k", ms=9), "bob, exact"),
            (plt.Line2D([], [], color="0.5", lw=1.4, alpha=0.6), f"path, last {trail:g} s")]
-    fig.legend(*zip(*key), loc="lower center", ncol=len(key), fontsize=8, frameon=False)
+    fig.legend(*zip(*key, strict=True), loc="lower center", ncol=len(key), fontsize=8, frameon=False)
     heading = fig.text(0.5, 0.965, "", ha="center", va="top", fontsize=10, animated=True)
     canvas = fig.canvas
     canvas.draw()
@@ -151,7 +150,7 @@ def render(trajectory: Trajectory, out: Path, fps: int, trail: float = 1.0,
         for k in range(time.size):
             canvas.restore_region(background)  # type: ignore[attr-defined]
             start = max(0, k - trail_points)
-            for ax, name in zip(axes, ("numeric", "exact")):
+            for ax, name in zip(axes, ("numeric", "exact"), strict=True):
                 path, rod, bob, text = moving[name]
                 x, y = xy[name]
                 path.set_data(x[start:k + 1], y[start:k + 1])

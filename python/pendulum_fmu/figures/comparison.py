@@ -7,11 +7,11 @@ from pathlib import Path
 import matplotlib
 
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
+import matplotlib.pyplot as plt
+import numpy as np
 
-from pendulum_fmu.fmu.runner import FmuRunner, Trajectory  # noqa: E402
-from pendulum_fmu.spec import Method, Pendulum, TimeGrid  # noqa: E402
+from pendulum_fmu.fmu.runner import FmuRunner, Trajectory
+from pendulum_fmu.spec import Method, Pendulum, TimeGrid
 
 
 def positive_or_nan(values: np.ndarray) -> np.ndarray:

@@ -24,6 +24,7 @@ from __future__ import annotations
 
 import ctypes
 import time
+from collections.abc import Mapping
 from functools import lru_cache
 from pathlib import Path
 from typing import Any, Literal, Protocol
@@ -31,11 +32,11 @@ from typing import Any, Literal, Protocol
 import numpy as np
 
 from pendulum_fmu.errors import BuildError, SimulationError
-from pendulum_fmu.interrupt import deferred_interrupt
-from pendulum_fmu.interrupt import pending as interrupt_pending
 from pendulum_fmu.fmu.library import c_address, find_library, library_file, load_library, platform_folder
 from pendulum_fmu.fmu.log import FmuLog
 from pendulum_fmu.fmu.python_drive import Ending, PythonStretch
+from pendulum_fmu.interrupt import deferred_interrupt
+from pendulum_fmu.interrupt import pending as interrupt_pending
 
 ABI = 1
 """The interface version this module speaks (``PENDULUM_DRIVER_ABI`` in the C header)."""
@@ -197,7 +198,7 @@ class OutputLoop:
 
     def _check_layout(self, rows: np.ndarray, column: str, count: int) -> int:
         """Byte offset of ``column`` in a record, after checking the C loop may write there."""
-        fields = rows.dtype.fields or {}
+        fields: Mapping[str, Any] = rows.dtype.fields or {}
         names = list(rows.dtype.names or ())
         if rows.shape != (count,) or not rows.flags.c_contiguous or column not in fields or rows.itemsize % 8:
             raise ValueError("rows must be a contiguous structured array of one record per time")

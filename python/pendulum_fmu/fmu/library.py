@@ -21,12 +21,16 @@ from collections.abc import Callable
 from concurrent.futures import ThreadPoolExecutor
 from functools import lru_cache
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
 from numpy.typing import ArrayLike
 
 from pendulum_fmu.errors import BuildError
 from pendulum_fmu.fmu.build import DEFAULT_BUILD_DIR
+
+if TYPE_CHECKING:
+    from _ctypes import CFuncPtr
 
 ABI = 1
 """The interface version this module speaks (``PENDULUM_EXACT_ABI`` in the C header)."""
@@ -53,7 +57,7 @@ def platform_folder() -> tuple[str, str]:
     return folder, "libpendulum_exact.so"
 
 
-def c_address(function: object) -> int:
+def c_address(function: CFuncPtr) -> int:
     """The C address of a ctypes function of a loaded library (0 for a NULL pointer)."""
     return ctypes.cast(function, ctypes.c_void_p).value or 0
 
@@ -181,7 +185,7 @@ def thread_count(points: int, workers: int | None = None) -> int:
 def chunks(points: int, threads: int) -> list[tuple[int, int]]:
     """``threads`` contiguous ranges ``[start, stop)`` covering ``points``, near-equal, aligned to :data:`ALIGN`."""
     bounds = [min(points, (points * k // threads) // ALIGN * ALIGN) for k in range(threads)] + [points]
-    return [(a, b) for a, b in zip(bounds, bounds[1:]) if b > a]
+    return [(a, b) for a, b in zip(bounds, bounds[1:], strict=False) if b > a]
 
 
 _pool: list[ThreadPoolExecutor] = []
@@ -206,7 +210,7 @@ def _in_threads(evaluate: Callable[[int, int], object], points: int, threads: in
         future.result()
 
 
-def exact(theta0: ArrayLike, omega0: ArrayLike, L: ArrayLike, g: ArrayLike,  # noqa: N803 (physics names)
+def exact(theta0: ArrayLike, omega0: ArrayLike, L: ArrayLike, g: ArrayLike,
           t: ArrayLike, workers: int | None = None) -> tuple[np.ndarray, np.ndarray]:
     """theta(t) and omega(t) of the pendulum theta'' + (g/L) sin(theta) = 0, exactly.
 

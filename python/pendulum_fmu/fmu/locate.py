@@ -19,8 +19,8 @@ from functools import lru_cache
 from pathlib import Path
 from xml.etree import ElementTree
 
-from pendulum_fmu.fmu.build import DEFAULT_BUILD_DIR, PACKAGED_FMU, PACKAGED_FMU3, REPO_ROOT, build_fmu, fmu3_in, fmu_in
 from pendulum_fmu.errors import BuildError, UsageError
+from pendulum_fmu.fmu.build import DEFAULT_BUILD_DIR, PACKAGED_FMU, PACKAGED_FMU3, REPO_ROOT, build_fmu, fmu3_in, fmu_in
 from pendulum_fmu.fmu.identity import file_key, fmi_version_of, pendulum_problem
 
 SOURCES: tuple[str, ...] = ("fmu_src", "modelDescription.xml", "CMakeLists.txt", "cmake", "fmi3", "reference")

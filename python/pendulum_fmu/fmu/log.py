@@ -104,8 +104,12 @@ def shared_callbacks() -> Any:
     with _lock:
         if _callbacks is None:
             from fmpy import calloc, free
-            from fmpy.fmi2 import (fmi2CallbackAllocateMemoryTYPE, fmi2CallbackFreeMemoryTYPE, fmi2CallbackFunctions,
-                                   fmi2CallbackLoggerTYPE)
+            from fmpy.fmi2 import (
+                fmi2CallbackAllocateMemoryTYPE,
+                fmi2CallbackFreeMemoryTYPE,
+                fmi2CallbackFunctions,
+                fmi2CallbackLoggerTYPE,
+            )
             from fmpy.logging import addLoggerProxy
 
             callbacks = fmi2CallbackFunctions()

@@ -38,9 +38,9 @@ from fmpy.fmi3 import FMU3Model, FMU3Slave
 from pendulum_fmu.errors import BuildError, SimulationError, UsageError
 from pendulum_fmu.fmu import driver
 from pendulum_fmu.fmu.identity import FMI_VERSIONS, description_problem, read_description
+from pendulum_fmu.fmu.log import FmuLog, register, shared_callbacks, unique_instance_name, unregister
 from pendulum_fmu.interrupt import deferred_interrupt
 from pendulum_fmu.interrupt import pending as interrupt_pending
-from pendulum_fmu.fmu.log import FmuLog, register, shared_callbacks, unique_instance_name, unregister
 from pendulum_fmu.spec import CS_SOLVERS, Method, Pendulum, TimeGrid
 
 Loop = Literal["auto", "c", "python"]

@@ -53,7 +53,7 @@ def solution(experiment: Experiment, tau: np.ndarray, names: list[str], theta0: 
              omega0: float | None = None, length: float | None = None) -> Columns:
     """The exact solution at the times ``tau`` from the start: theta for the theta columns,
     omega for the omega columns."""
-    from pendulum_fmu.fmu.library import exact  # noqa: PLC0415
+    from pendulum_fmu.fmu.library import exact
 
     with np.errstate(all="ignore"):
         theta, omega = exact(experiment.theta0 if theta0 is None else theta0,
@@ -212,7 +212,8 @@ def explain(columns: Columns, experiment: Experiment, time: np.ndarray, step: fl
         lambda: clock(columns, experiment, tau, fits)]
     # a first time two steps or more after the start time is a start time not given; less, a lag
     offset = float(time[0]) - experiment.start_time
-    trials.insert(1 if step is None or abs(offset) >= 2 * step else 3, lambda: start_time(columns, experiment, time, fits))
+    trials.insert(1 if step is None or abs(offset) >= 2 * step else 3,
+                  lambda: start_time(columns, experiment, time, fits))
     for trial in trials:
         found = trial()
         if found is not None:

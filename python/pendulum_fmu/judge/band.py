@@ -95,8 +95,9 @@ def band_check(result: Result, ref: Reference) -> Check:
     fmpy's validation would pass the file, and by how much, next to the judge's own verdict.
     """
     exact = {"theta": ref.theta, "omega": ref.omega, "theta_exact": ref.theta, "omega_exact": ref.omega}
-    fractions = outside_fractions(result.time, result.time, {name: (np.asarray(values, dtype=float), exact[name])
-                                                             for name, values in result.values.items() if name in exact})
+    fractions = outside_fractions(result.time, result.time,
+                                  {name: (np.asarray(values, dtype=float), exact[name])
+                                   for name, values in result.values.items() if name in exact})
     figures: dict[str, object] = {"outside": fractions, "limit": LIMIT}
     if not fractions:
         return Check("fmpy band", "info", "no variable to compare", {**figures, "passes": None})

@@ -26,7 +26,7 @@ EXACT_AGREEMENT = 1e-13
 resolution: the FMU's exact outputs and the library are the same C code (bit for bit on one
 platform; within 1.1e-15 across the ones measured)."""
 CS_FACTOR = 100.0
-"""The certificate's bound (BOUND.md): 100 tol."""
+"""The certificate's bound (docs/certificate.md): 100 tol."""
 ME_FACTOR = 300.0
 """Model Exchange: the importer's solver may make a local error of 300 tol (times the scales
 max(1, |theta|), max(w0, |omega|)) per natural period 2 pi / w0, propagated by the pendulum's
@@ -72,7 +72,7 @@ class Reference:
 def reference(result: Result, experiment: Experiment) -> Reference:
     """pendulum_fmu.exact at the file's own times, counted from the experiment's start time,
     and for Model Exchange the allowance of :func:`bound`."""
-    from pendulum_fmu.fmu.library import exact  # noqa: PLC0415
+    from pendulum_fmu.fmu.library import exact
 
     t = result.time - experiment.start_time
     theta, omega = exact(experiment.theta0, experiment.omega0, experiment.L, experiment.g, t)
@@ -138,13 +138,13 @@ def time_grid(result: Result, step: float | None = None) -> tuple[Check, float |
     unique = t[keep]
     positive = np.diff(unique)
     h = float(step) if step else nominal_step(float(np.median(positive)))
-    figures: dict[str, float | int | bool | str] = {"rows": n, "start": float(t[0]), "end": float(t[-1]),
+    figures: dict[str, float | int | bool | str | list[int]] = {"rows": n, "start": float(t[0]), "end": float(t[-1]),
                                                     "step": h, "repeated_times": int(repeated.size)}
     if repeated.size and not extra_final_row:
-        k = int(repeated[0])
+        j = int(repeated[0])
         figures["duplicate_rows"] = [int(r) + 1 for r in repeated[:20]]
-        return Check("time grid", "fail", f"{repeated.size} duplicate row(s): t = {t[k]:.10g} s is written again in "
-                     f"row {k + 1}; the pendulum has no events, so no time may repeat", figures), None
+        return Check("time grid", "fail", f"{repeated.size} duplicate row(s): t = {t[j]:.10g} s is written again in "
+                     f"row {j + 1}; the pendulum has no events, so no time may repeat", figures), None
     ratio = positive / h
     multiple = np.rint(ratio)
     on_grid = (multiple >= 1) & (np.abs(ratio - multiple) <= 1e-3 * multiple)
@@ -413,7 +413,7 @@ def me_allowance(ref: Reference, experiment: Experiment) -> Allowance:
 def bound(name: str, ref: Reference, experiment: Experiment) -> np.ndarray:
     """The allowed |error| of ``name`` ("theta" or "omega") at each time.
 
-    Co-Simulation, the certificate's bound (BOUND.md): 100 tol max(1, |theta_e|) and
+    Co-Simulation, the certificate's bound (docs/certificate.md): 100 tol max(1, |theta_e|) and
     100 tol max(w0, |omega_e|). Model Exchange: a local error of ME_FACTOR tol (the same
     scales) per natural period 2 pi / w0, each propagated to the row's time by the pendulum's
     linearised flow (the energy error's phase drift included) and summed, plus ME_FACTOR tol

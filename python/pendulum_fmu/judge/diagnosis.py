@@ -81,7 +81,8 @@ def diagnose(result: Result, ref: checks.Reference, experiment: Experiment, erro
                          f"{found.agreement:.1e}: the importer's solver is {found.method} with a fixed step "
                          f"(error {theta_growth})", {"cause": "fixed step", "method": found.method, "step": found.step})
     found_alternative = alternatives.explain({k: result.values[k] for k in errors}, experiment, result.time, h,
-                                             state_fits(ref, experiment, errors), max(1e-6, _largest_resolution(result)))
+                                             state_fits(ref, experiment, errors),
+                                             max(1e-6, _largest_resolution(result)))
     if found_alternative is not None:
         explanation, _ = found_alternative
         return Check("diagnosis", "info", f"theta and omega: {explanation.line}",
@@ -105,7 +106,7 @@ def _model_exchange_run(result: Result, experiment: Experiment, errors: dict[str
     """A file judged as Co-Simulation that a Model Exchange run reproduces: a fixed-step method
     at the file's step (rerun row for row), or CVODE at the experiment's tolerance (its values
     within :data:`REPRODUCED` of the error). None when neither does."""
-    import dataclasses  # noqa: PLC0415
+    import dataclasses
 
     as_me = dataclasses.replace(experiment, interface="ME", solver=None)
     if h is not None:

@@ -68,9 +68,9 @@ def defaults(fmu: Path | None = None) -> tuple[dict[str, float | str], str]:
     ``fmu`` when given; else the FMU :func:`pendulum_fmu.fmu.locate.locate_fmu` finds without
     building; else the repository's ``modelDescription.xml``; else :data:`FALLBACK`.
     """
-    from pendulum_fmu.errors import BuildError  # noqa: PLC0415
-    from pendulum_fmu.fmu.build import REPO_ROOT  # noqa: PLC0415
-    from pendulum_fmu.fmu.locate import locate_fmu  # noqa: PLC0415
+    from pendulum_fmu.errors import BuildError
+    from pendulum_fmu.fmu.build import REPO_ROOT
+    from pendulum_fmu.fmu.locate import locate_fmu
 
     path: Path | None = fmu
     if path is None:
@@ -129,7 +129,8 @@ def parse_start(pairs: list[str] | dict[str, float | str] | None) -> dict[str, f
         except ValueError:
             raise UsageError("--start", f"{name}={raw!r} is not a number") from None
         if not math.isfinite(number) or (name in ("L", "g", "tolerance") and number <= 0):
-            raise UsageError("--start", f"{name}={raw!r}: must be finite{' and > 0' if name in ('L', 'g', 'tolerance') else ''}")
+            raise UsageError("--start",
+                             f"{name}={raw!r}: must be finite{' and > 0' if name in ('L', 'g', 'tolerance') else ''}")
         values[name] = number
     return values
 
@@ -145,7 +146,8 @@ def make_experiment(start: list[str] | dict[str, float | str] | None = None,
     return Experiment(theta0=float(merged["theta"]), omega0=float(merged["omega"]), L=float(merged["L"]),
                       g=float(merged["g"]), interface=interface, tolerance=float(merged["tolerance"]),
                       tolerance_stated="tolerance" in given,
-                      solver=str(given["solver"]) if "solver" in given else (str(base["solver"]) if interface == "CS" else None),
+                      solver=str(given["solver"]) if "solver" in given
+                      else (str(base["solver"]) if interface == "CS" else None),
                       given=tuple(sorted(given)), start_time=float(merged["startTime"])), where
 
 
@@ -266,7 +268,8 @@ def read_experiments(xml_text: str | bytes, source: str) -> Settings:
     start, stop, step = attribute("startTime"), attribute("stopTime"), attribute("stepSize")
     if start is None or stop is None or not stop > start:
         raise ValueError(f"{source}: the experiment needs a startTime and a later stopTime")
-    return Settings(source, start, stop, step if step else None, _number(experiment.get("tolerance"), "tolerance", source))
+    return Settings(source, start, stop, step if step else None,
+                    _number(experiment.get("tolerance"), "tolerance", source))
 
 
 def fmu_experiment(fmu: Path) -> Settings | None:
@@ -364,7 +367,7 @@ def recorded_settings(result: Path) -> Settings | None:
     UsageError
         The record exists but cannot be read (naming RESULT).
     """
-    from pendulum_fmu.output.experiment_record import read_record  # noqa: PLC0415
+    from pendulum_fmu.output.experiment_record import read_record
 
     try:
         found = read_record(result)
@@ -395,8 +398,8 @@ def experiment_settings(result: object, fmu: Path | None = None) -> Settings | N
         The record or the ``_ref.opt`` (naming RESULT) or the FMU's experiment (naming
         ``--fmu``) is unreadable.
     """
-    from pendulum_fmu.errors import BuildError  # noqa: PLC0415
-    from pendulum_fmu.fmu.locate import locate_fmu  # noqa: PLC0415
+    from pendulum_fmu.errors import BuildError
+    from pendulum_fmu.fmu.locate import locate_fmu
 
     if isinstance(result, (str, Path)):
         recorded = recorded_settings(Path(result))

@@ -147,7 +147,8 @@ def _rerun(method: str, parts: int, experiment: Experiment, steps: np.ndarray, r
     """theta and omega (rows x 2) of ``method`` run step by step from the start values."""
     c = experiment.g / experiment.L
     out = np.empty((rows, 2))
-    theta, omega = experiment.theta0, experiment.omega0
+    theta: Vector = experiment.theta0
+    omega: Vector = experiment.omega0
     out[0] = theta, omega
     for k in range(1, rows):
         theta, omega = advance(method, theta, omega, float(steps[k - 1]), parts, c)
@@ -171,7 +172,7 @@ def identify_fixed_step(result: Result, experiment: Experiment, h: float, error:
         The file's largest error against the exact solution (a file without error is not
         a fixed-step method's).
     """
-    from pendulum_fmu.fmu.library import exact  # noqa: PLC0415
+    from pendulum_fmu.fmu.library import exact
 
     names = [n for n in ("theta", "omega") if n in result.values]
     if not names or error <= 0 or not math.isfinite(error) or result.rows < 2:

@@ -30,7 +30,7 @@ class Fit:
 
     theta0: float
     omega0: float
-    L: float  # noqa: N815
+    L: float
     g: float
     residual: float
     """Largest |column - exact(fitted)| over the fitted columns."""
@@ -40,7 +40,8 @@ class Fit:
         1e-9 relative, or 10 times the columns' print ``resolution`` (relative)."""
         out = []
         relative = max(1e-9, 10 * resolution)
-        for name, fitted, stated in (("theta", self.theta0, experiment.theta0), ("omega", self.omega0, experiment.omega0),
+        for name, fitted, stated in (("theta", self.theta0, experiment.theta0),
+                                     ("omega", self.omega0, experiment.omega0),
                                      ("L", self.L, experiment.L)):
             if abs(fitted - stated) > relative * max(1.0, abs(stated)):
                 out.append(f"{name} = {fitted:.10g} (not {stated:.10g})")
@@ -55,9 +56,9 @@ def fit_parameters(t: np.ndarray, columns: dict[str, np.ndarray], experiment: Ex
     The start values begin at the file's first row when it is at t = 0, L at a scan of
     w0 over a factor of 2 either way; then scipy's least squares polishes all three.
     """
-    from scipy.optimize import least_squares  # noqa: PLC0415
+    from scipy.optimize import least_squares
 
-    from pendulum_fmu.fmu.library import exact  # noqa: PLC0415
+    from pendulum_fmu.fmu.library import exact
 
     thetas = [v for k, v in columns.items() if k.startswith("theta")]
     omegas = [v for k, v in columns.items() if k.startswith("omega")]
@@ -105,9 +106,9 @@ METHODS = fixed_step.METHODS
 def cvode_errors(fmu: Path, result: Result, experiment: Experiment, tolerances: list[float]) -> list[float]:
     """Largest |theta - exact| of fmpy's CVODE on the FMU (Model Exchange) at each tolerance,
     on the file's output grid."""
-    from fmpy import simulate_fmu  # noqa: PLC0415
+    from fmpy import simulate_fmu
 
-    from pendulum_fmu.fmu.library import exact  # noqa: PLC0415
+    from pendulum_fmu.fmu.library import exact
 
     start, stop = experiment.start_time, float(result.time[-1])
     interval = (stop - float(result.time[0])) / max(1, result.rows - 1)
@@ -126,7 +127,7 @@ def cvode_agreement(fmu: Path, result: Result, experiment: Experiment) -> float 
     """Largest |theta - CVODE's theta| over the file's rows, CVODE (fmpy's, Model Exchange) run
     at the experiment's tolerance on the file's grid; None when the rerun's times are not the
     file's (another grid, or no theta column)."""
-    from fmpy import simulate_fmu  # noqa: PLC0415
+    from fmpy import simulate_fmu
 
     if "theta" not in result.values:
         return None
@@ -144,7 +145,7 @@ def cvode_agreement(fmu: Path, result: Result, experiment: Experiment) -> float 
 def solver_name(solver: str | None) -> str:
     """The FMU's Co-Simulation solver by name: ``solver`` as given (a name or the enumeration's
     number, 1 = dopri5 ...), or the FMU's default."""
-    from pendulum_fmu.spec import CS_SOLVERS, DEFAULT_CS_SOLVER  # noqa: PLC0415
+    from pendulum_fmu.spec import CS_SOLVERS, DEFAULT_CS_SOLVER
 
     if solver is None:
         return DEFAULT_CS_SOLVER
@@ -157,8 +158,8 @@ def solver_name(solver: str | None) -> str:
 def fmu_errors(fmu: Path, result: Result, experiment: Experiment, tolerances: list[float]) -> list[float]:
     """Largest |theta - exact| of the FMU's own Co-Simulation solver at each tolerance, on the
     file's output step and span (from the start)."""
-    from pendulum_fmu.fmu.runner import FmuRunner  # noqa: PLC0415
-    from pendulum_fmu.spec import Method, Pendulum, TimeGrid  # noqa: PLC0415
+    from pendulum_fmu.fmu.runner import FmuRunner
+    from pendulum_fmu.spec import Method, Pendulum, TimeGrid
 
     span = float(result.time[-1]) - experiment.start_time
     interval = (float(result.time[-1]) - float(result.time[0])) / max(1, result.rows - 1)
@@ -172,7 +173,7 @@ def fmu_errors(fmu: Path, result: Result, experiment: Experiment, tolerances: li
 def effective_tolerance(error: float, tolerances: list[float], errors: list[float]) -> float | None:
     """The tolerance at which CVODE's error (log-log interpolated) equals ``error``; None when
     ``error`` is outside the range the runs span."""
-    pairs = sorted(zip(errors, tolerances))
+    pairs = sorted(zip(errors, tolerances, strict=True))
     logs_e = np.log10([e for e, _ in pairs])
     logs_t = np.log10([t for _, t in pairs])
     if error <= 0 or not (pairs[0][0] <= error <= pairs[-1][0]) or len(pairs) < 2:

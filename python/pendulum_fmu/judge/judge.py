@@ -48,6 +48,7 @@ def _experiment_check(experiment: Experiment, where: str, stated_by: tuple[str, 
 def _exact_fits(result: Result, ref: checks.Reference, experiment: Experiment) -> alternatives.Fits:
     """Exact columns fit an alternative when they equal it to FIT_AGREEMENT beyond the print
     (its rounding, and half a unit more: the alternative's own value is not printed)."""
+    allowed: dict[str, np.ndarray]
     allowed = {name: FIT_AGREEMENT * np.maximum(1.0, np.abs(result.values[name])) + result.resolution[name]
                + checks.print_rounding(result, ref, experiment, name) for name in ("theta_exact", "omega_exact")
                if name in result.values}

@@ -108,8 +108,7 @@ def _first_byte(text: pa.Array, characters: bytes) -> np.ndarray:
     raw = data.to_pybytes()[:bounds[-1]]
     present = [bytes([c]) for c in characters if bytes([c]) in raw[bounds[0]:]]
     if sum(raw.count(c, bounds[0]) for c in present) > len(text) // 64:
-        found = [_found(text, c.decode()) for c in present]
-        return _earliest(found)
+        return _earliest([_found(text, c.decode()) for c in present])
     hits = sorted(i for c in present for i in _positions(raw, c, int(bounds[0])))
     found = np.full(len(text), -1, dtype=np.int32)
     if hits:

@@ -193,7 +193,8 @@ def read_csv_text(text: str, source: str, instance: str | None = None) -> Result
             try:
                 numbers[name][r] = float(cell)
             except ValueError:
-                raise ReadError(f"{source}: row {r + 2}, column {header[c].strip()!r}: not a number: {cell!r}") from None
+                raise ReadError(f"{source}: row {r + 2}, column {header[c].strip()!r}: "
+                                f"not a number: {cell!r}") from None
     columns = {name: header[c].strip().strip('"') for name, c in wanted.items()}
     formats = {name: Format.of([row[c] for row in body]) for name, c in wanted.items()}
     return _assemble(numbers, formats, columns, used, source)
@@ -302,7 +303,7 @@ def _parse(body: pa.Buffer | str, width: int, delimiter: str, wanted: dict[str, 
     """Numbers and formats of the ``wanted`` columns (name -> index) of the CSV rows in
     ``body`` (bytes, or a file whose first ``skip_rows`` lines are skipped); the columns
     are converted in threads (Arrow and numpy release the interpreter)."""
-    import pyarrow.csv as pacsv  # noqa: PLC0415
+    import pyarrow.csv as pacsv
 
     names = [f"c{i}" for i in range(width)]
     used = {name: names[c] for name, c in wanted.items()}
@@ -344,7 +345,7 @@ def _from_columns(columns: dict[str, Any], source: str, instance: str | None) ->
 
 def _read_parquet(path: Path, instance: str | None) -> Result:
     """The used columns of a Parquet file (an unnamed pandas index stored with it may be the time)."""
-    import pyarrow.parquet as pq  # noqa: PLC0415
+    import pyarrow.parquet as pq
 
     try:
         names = list(pq.read_schema(path).names)
@@ -374,8 +375,8 @@ def _frame_columns(frame: Any) -> dict[str, Any]:
 
 def _gunzip(path: Path) -> bytes:
     """The content of a gzipped file (a CSV result as CI artifacts often are)."""
-    import gzip  # noqa: PLC0415
-    import zlib  # noqa: PLC0415
+    import gzip
+    import zlib
 
     try:
         with gzip.open(path, "rb") as handle:

@@ -72,19 +72,19 @@ def write_plot(verdict: Verdict, data: Any, path: Path) -> None:
     path : Path
         The PNG to write.
     """
-    import matplotlib  # noqa: PLC0415
+    import matplotlib
 
     matplotlib.use("Agg")
-    import matplotlib.pyplot as plt  # noqa: PLC0415
+    import matplotlib.pyplot as plt
 
-    from pendulum_fmu.judge import checks  # noqa: PLC0415
-    from pendulum_fmu.judge.reading import read_result  # noqa: PLC0415
+    from pendulum_fmu.judge import checks
+    from pendulum_fmu.judge.reading import read_result
 
     result = read_result(data, verdict.instance)
     ref = checks.reference(result, verdict.experiment)
     errors = checks.state_errors(result, ref)
     fig, axes = plt.subplots(len(errors) or 1, 1, figsize=(9, 3.2 * max(1, len(errors))), sharex=True, squeeze=False)
-    for ax, (name, error) in zip(axes[:, 0], errors.items()):
+    for ax, (name, error) in zip(axes[:, 0], errors.items(), strict=False):
         ax.semilogy(result.time, _log_values(np.abs(error)), lw=1, label=f"|{name} - {name}_exact|")
         _zero_ticks(ax, result.time, np.abs(error), "tab:blue")
         me = verdict.experiment.interface == "ME"

@@ -115,7 +115,8 @@ class Allowance:
         if self.regime in ("libration", "rotation"):
             text += f"; {self.regime}, T = {self.period:.6g} s, kappa = {self.kappa:.3g}"
         if math.isfinite(self.linear_until):
-            text += (f"; from t = {start_time + self.linear_until:.6g} s the allowed energy error reaches the separatrix: "
+            text += (f"; from t = {start_time + self.linear_until:.6g} s the allowed energy error reaches "
+                     "the separatrix: "
                      "no value refused")
         return text
 
@@ -171,7 +172,7 @@ def periodic_part(experiment: Experiment, period: float, kappa: float, d: float,
     the energy's distance to the separatrix (and, for a libration, to the bottom) and small
     enough that the perturbed orbit's phase moves by at most 1e-2 rad in one period.
     """
-    from pendulum_fmu.fmu.library import exact  # noqa: PLC0415
+    from pendulum_fmu.fmu.library import exact
 
     e = experiment
     c = e.g / e.L

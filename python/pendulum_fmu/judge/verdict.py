@@ -58,7 +58,7 @@ class Experiment:
 
     theta0: float
     omega0: float
-    L: float  # noqa: N815 (physics name)
+    L: float
     g: float
     interface: Literal["CS", "ME"]
     tolerance: float

@@ -183,9 +183,9 @@ def record_of(trajectory: Trajectory, fmu: Path, command: str, description: Any 
     description : fmpy ModelDescription, optional
         The FMU's model description, for its identity (read from ``fmu`` when not given).
     """
-    from pendulum_fmu import __version__  # noqa: PLC0415
-    from pendulum_fmu.fmu.identity import read_description  # noqa: PLC0415
-    from pendulum_fmu.fmu.runner import reference_period  # noqa: PLC0415
+    from pendulum_fmu import __version__
+    from pendulum_fmu.fmu.identity import read_description
+    from pendulum_fmu.fmu.runner import reference_period
 
     description = description if description is not None else read_description(Path(fmu))
     p, m = trajectory.pendulum, trajectory.method

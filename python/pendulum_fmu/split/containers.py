@@ -13,8 +13,8 @@ import subprocess
 import sys
 import tempfile
 import uuid
+from collections.abc import Callable
 from pathlib import Path
-from typing import Callable
 
 from pendulum_fmu.split.columns import COLUMNS, EngineError, write_columns
 from pendulum_fmu.split.locate import split_fmus
@@ -43,7 +43,7 @@ def _restore_fmpy_logger() -> None:
     addLoggerProxy(byref(callbacks))  # the proxy's target: the kept logger; callbacks itself is not used
 
 
-def _simulate(container: Path, H: float, stop: float, out: Path, names: dict[str, str]) -> Path:  # noqa: N803
+def _simulate(container: Path, H: float, stop: float, out: Path, names: dict[str, str]) -> Path:
     """Run ``container`` with fmpy at output interval H; write its outputs under our names."""
     from fmpy import simulate_fmu
 
@@ -56,7 +56,7 @@ def _simulate(container: Path, H: float, stop: float, out: Path, names: dict[str
     try:
         rows = simulate_fmu(str(container), start_time=0.0, stop_time=stop, step_size=H, output_interval=H,
                             output=list(names.values()), logger=collect)
-    except Exception as error:  # noqa: BLE001 (the engine's own words: its last logged message)
+    except Exception as error:  # the engine's own words: its last logged message
         told = f" ({messages[-1].strip()})" if messages else ""
         raise EngineError(f"{container.name} in fmpy: {error}{told}") from error
     finally:
@@ -65,7 +65,7 @@ def _simulate(container: Path, H: float, stop: float, out: Path, names: dict[str
     return out
 
 
-def build_fmpy_container(H: float, fmi_version: int, target: Path) -> Path:  # noqa: N803
+def build_fmpy_container(H: float, fmi_version: int, target: Path) -> Path:
     """Body and Gravity in fmpy's container FMU (an FMI 3.0 FMU whatever the inner FMUs' version),
     stepped in sequence (``parallelDoStep`` false) at fixed step ``H``."""
     from fmpy import read_model_description
@@ -74,7 +74,7 @@ def build_fmpy_container(H: float, fmi_version: int, target: Path) -> Path:  # n
     from fmpy.model_description import CoSimulation, DefaultExperiment, ModelDescription, ModelVariable
 
     components = []
-    for name, path in zip(("Body", "Gravity"), split_fmus(fmi_version)):
+    for name, path in zip(("Body", "Gravity"), split_fmus(fmi_version), strict=True):
         components.append(Component(name=name, filename=path, modelDescription=read_model_description(str(path))))
     body, gravity = components
 
@@ -110,7 +110,7 @@ def build_fmpy_container(H: float, fmi_version: int, target: Path) -> Path:  # n
     return target
 
 
-def run_fmpy_container(H: float, stop: float, out: Path, fmi_version: int = 2) -> Path:  # noqa: N803
+def run_fmpy_container(H: float, stop: float, out: Path, fmi_version: int = 2) -> Path:
     """fmpy's container FMU of Body and Gravity at step H, run by fmpy."""
     container = out.with_suffix(".fmu")
     try:
@@ -118,7 +118,7 @@ def run_fmpy_container(H: float, stop: float, out: Path, fmi_version: int = 2) -
         return _simulate(container, H, stop, out, {c: c for c in COLUMNS})
     except EngineError as error:
         raise EngineError(f"fmpy container_fmu: {error}") from error
-    except Exception as error:  # noqa: BLE001 (the engine's own error, told as it is)
+    except Exception as error:  # the engine's own error, told as it is
         raise EngineError(f"fmpy container_fmu: {type(error).__name__}: {error}") from error
 
 
@@ -137,7 +137,7 @@ def _fmucontainer_rules(folder: Path, fmi_version: int) -> Path:
     return rules
 
 
-def run_fmucontainer(H: float, stop: float, out: Path, fmi_version: int = 2) -> Path:  # noqa: N803
+def run_fmucontainer(H: float, stop: float, out: Path, fmi_version: int = 2) -> Path:
     """The FMU Manipulation Toolbox's ``fmucontainer`` of Body and Gravity at step H, run by fmpy."""
     tool = Path(sys.executable).parent / "fmucontainer"
     if not tool.exists():
@@ -153,7 +153,8 @@ def run_fmucontainer(H: float, stop: float, out: Path, fmi_version: int = 2) -> 
         built = folder / "PendulumSplitContainer.fmu"
         if done.returncode != 0 or not built.exists():
             lines = [line for line in (done.stdout + done.stderr).splitlines() if "ERROR" in line.upper()]
-            raise EngineError(f"fmucontainer: {(lines or (done.stdout + done.stderr).splitlines() or ['no output'])[-1]}")
+            last = (lines or (done.stdout + done.stderr).splitlines() or ["no output"])[-1]
+            raise EngineError(f"fmucontainer: {last}")
         return _simulate(built, H, stop, out, {c: c.replace(".", "_") for c in COLUMNS})
     finally:
         shutil.rmtree(folder, ignore_errors=True)

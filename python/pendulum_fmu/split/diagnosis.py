@@ -39,7 +39,7 @@ def _exact(problem: Problem, time: np.ndarray) -> np.ndarray:
 
 
 def label_shift(time: np.ndarray, values: dict[str, np.ndarray], resolution: dict[str, np.ndarray],
-                problem: Problem, H: float) -> int:  # noqa: N803
+                problem: Problem, H: float) -> int:
     """+1 when the rows are labelled one step early (the values at t + H are written at t), -1
     late, 0 neither (see the module's docstring)."""
     if "theta_exact" in values:
@@ -69,7 +69,7 @@ def label_shift(time: np.ndarray, values: dict[str, np.ndarray], resolution: dic
     return 0
 
 
-def label_finding(shift: int, H: float, has_exact: bool) -> Finding:  # noqa: N803
+def label_finding(shift: int, H: float, has_exact: bool) -> Finding:
     """The finding for rows labelled early (``shift`` 1) or late (-1)."""
     word, sign = ("early", "+") if shift > 0 else ("late", "-")
     evidence = (f"Body.theta_exact is the exact pendulum at t {sign} H" if has_exact else

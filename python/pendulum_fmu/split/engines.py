@@ -4,7 +4,7 @@ Each engine runs ``PendulumSplit.ssp`` (or its two FMUs) with a fixed macro step
 stop time and leaves ``time, Body.theta, Body.omega, Body.theta_exact, Body.omega_exact,
 Gravity.alpha`` (the columns the engine itself names; its own times). libcosim and Ecos run in
 a child process: libcosim aborts the process on an FMU error, Ecos needs tbb's library folder
-on ``LD_LIBRARY_PATH`` before the interpreter starts (/work/shared/reference/engines.md).
+on ``LD_LIBRARY_PATH`` before the interpreter starts (docs/importers.md).
 
 Engines: ``fmpy-ssp`` (``fmpy.ssp.simulation.simulate_ssp``), ``libcosim``
 (``CosimExecution.from_ssp_file``, FMI 2.0 only), ``ecos`` (``EcosSimulation(ssp_path=...)``),
@@ -21,9 +21,9 @@ import subprocess
 import sys
 import textwrap
 import time
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Callable
 
 from pendulum_fmu.split.columns import COLUMNS, EngineError, write_columns
 from pendulum_fmu.split.containers import CONTAINERS
@@ -64,7 +64,7 @@ def missing(engine: str) -> str | None:
     return None
 
 
-def run_fmpy_ssp(H: float, stop: float, out: Path, fmi_version: int = 2) -> Path:  # noqa: N803
+def run_fmpy_ssp(H: float, stop: float, out: Path, fmi_version: int = 2) -> Path:
     """fmpy's own SSP master (``simulate_ssp``) on ``PendulumSplit.ssp``; its rows as it returns them."""
     from fmpy.ssp.simulation import simulate_ssp
 
@@ -141,7 +141,7 @@ def _child(script: str, arguments: list[str], engine: str, env: dict[str, str] |
         raise EngineError(f"{engine} exited with status {done.returncode}: {tail}")
 
 
-def run_libcosim(H: float, stop: float, out: Path, fmi_version: int = 2) -> Path:  # noqa: N803
+def run_libcosim(H: float, stop: float, out: Path, fmi_version: int = 2) -> Path:
     """libcosim's fixed-step master on ``PendulumSplit.ssp`` (its time series observer, from step 1)."""
     if fmi_version != 2:
         raise EngineError("libcosim 0.0.6 runs FMI 2.0 only (an FMI 3.0 FMU crashes it: 'Unsupported FMI version')")
@@ -159,7 +159,7 @@ def ecos_environment() -> dict[str, str]:
     return env
 
 
-def run_ecos(H: float, stop: float, out: Path, fmi_version: int = 2) -> Path:  # noqa: N803
+def run_ecos(H: float, stop: float, out: Path, fmi_version: int = 2) -> Path:
     """Ecos on ``PendulumSplit.ssp`` (``EcosSimulation(ssp_path=...)``), sampled after every step."""
     _child(_ECOS, [str(split_path(fmi_version)), str(out), repr(H), str(round(stop / H))], "ecos",
            ecos_environment())
@@ -171,7 +171,7 @@ ENGINES: dict[str, Callable[[float, float, Path, int], Path]] = {
 """The engines that run the SSP by name; the containers are in :mod:`pendulum_fmu.split.containers`."""
 
 
-def run_engine(engine: str, H: float, stop: float, out: Path, fmi_version: int = 2) -> EngineRun:  # noqa: N803
+def run_engine(engine: str, H: float, stop: float, out: Path, fmi_version: int = 2) -> EngineRun:
     """Run ``engine`` at macro step ``H`` to ``stop``, writing ``out`` (CSV); EngineError if it cannot."""
     runner = {**ENGINES, **CONTAINERS}[engine]
     began = time.perf_counter()

@@ -44,7 +44,7 @@ class Grid:
 
     keep: np.ndarray
     time: np.ndarray
-    H: float | None  # noqa: N815
+    H: float | None
     index: np.ndarray | None
     findings: list[Finding] = field(default_factory=list)
 
@@ -109,10 +109,10 @@ def read_grid(time: np.ndarray, resolution: np.ndarray, step: float | None = Non
     n = t.size - 1
     if step is not None:
         index = np.rint((t - t[0]) / step).astype(np.int64)
-        H = exact_step(t, index, res) if np.all(np.diff(index) > 0) else None  # noqa: N806
+        H = exact_step(t, index, res) if np.all(np.diff(index) > 0) else None
         if H is not None and abs(H - step) <= 1e-9 * step:
             return Grid(keep, t, step, index, findings)
-    H = exact_step(t, np.arange(n + 1), res)  # noqa: N806
+    H = exact_step(t, np.arange(n + 1), res)
     if H is not None:
         return Grid(keep, t, H, np.arange(n + 1), findings)
     steps = np.diff(t)
@@ -122,7 +122,7 @@ def read_grid(time: np.ndarray, resolution: np.ndarray, step: float | None = Non
     slack = (res[1:] + res[:-1]) / h + 1e-6
     if np.all(multiple >= 1) and np.all(np.abs(ratio - multiple) <= slack) and np.mean(multiple == 1) >= UNIFORM_SHARE:
         index = np.concatenate(([0], np.cumsum(multiple))).astype(np.int64)
-        H = exact_step(t, index, res)  # noqa: N806
+        H = exact_step(t, index, res)
         if H is not None:
             gaps = np.flatnonzero(np.diff(index) > 1)
             lost = int(np.sum(np.diff(index)[gaps] - 1))

@@ -61,7 +61,7 @@ class Identification:
 
     master: str | None
     text: str
-    H: float | None = None  # noqa: N815
+    H: float | None = None
     every: int = 1
     span: float = math.nan
     truncated: bool = False
@@ -77,7 +77,7 @@ def rerun_steps() -> int:
     return RERUN_BUDGET // max(1, len(masters_for(2)))
 
 
-def _rerun(H: float, index: np.ndarray, theta: np.ndarray, problem: Problem,  # noqa: N803
+def _rerun(H: float, index: np.ndarray, theta: np.ndarray, problem: Problem,
            allowed: np.ndarray, limit: int) -> tuple[dict[str, float], dict[str, float], float, int, str | None]:
     """Every master at H over the rows with index <= limit: differences, errors, end, rows, match."""
     from pendulum_fmu.split.masters import masters_for, run_master
@@ -105,7 +105,7 @@ def _rerun(H: float, index: np.ndarray, theta: np.ndarray, problem: Problem,  # 
     return differences, errors, last * H, rows, match
 
 
-def identify(index: np.ndarray | None, H: float | None, theta: np.ndarray,  # noqa: N803
+def identify(index: np.ndarray | None, H: float | None, theta: np.ndarray,
              resolution: np.ndarray, problem: Problem, step: float | None = None,
              own: str = "", decimated: bool = True) -> Identification:
     """The reference master the file reproduces (see the module's docstring).

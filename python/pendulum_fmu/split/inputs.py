@@ -86,7 +86,7 @@ def _tolerance(a: np.ndarray, h: np.ndarray, omega: np.ndarray, res_omega: np.nd
             + (res_omega[1:] + res_omega[:-1]) / h + k * (np.max(res_signal) if res_signal.size else 0.0))
 
 
-def _lag_match(a: np.ndarray, F: np.ndarray, tol: np.ndarray, lag: int) -> np.ndarray:  # noqa: N803
+def _lag_match(a: np.ndarray, F: np.ndarray, tol: np.ndarray, lag: int) -> np.ndarray:
     """Per step k >= lag: whether a_k is F at k - lag."""
     out = np.zeros(a.size, dtype=bool)
     if lag < a.size:
@@ -99,7 +99,7 @@ def held_fit(a: np.ndarray, tol: np.ndarray, signals: dict[str, np.ndarray], k: 
     None when none explains :data:`HELD_SHARE` of them."""
     best: Law | None = None
     for name, s in signals.items():
-        F = _gravity(k, s)  # noqa: N806
+        F = _gravity(k, s)
         for lag in (0, 1, 2):
             if a.size <= lag + 2:
                 continue
@@ -125,7 +125,7 @@ def held_fit(a: np.ndarray, tol: np.ndarray, signals: dict[str, np.ndarray], k: 
                 best = Law(name, ratio, True, share, None, precision)
     if best is None:
         return None
-    F = best.ratio * _gravity(k, signals[best.signal])  # noqa: N806
+    F = best.ratio * _gravity(k, signals[best.signal])
     matches = np.array([_lag_match(a, F, tol, lag) for lag in range(MAX_LAG + 1)])
     # the exchange's own lag (Gauss-Seidel 0, Jacobi 1) wins where several fit (near a turning
     # point theta barely moves over a step); elsewhere the smallest lag that fits

@@ -103,7 +103,7 @@ class SplitVerdict:
 
     source: str
     rows: int
-    H: float  # noqa: N815
+    H: float
     uniform: bool
     problem: Problem
     conformance: Conformance
@@ -259,7 +259,7 @@ def judge_split(data: Any, start: Sequence[str] = (), master: str | None = None,
     problem = Problem(**{**dict(L=Problem.L, g=Problem.g, theta0=Problem.theta0, omega0=Problem.omega0), **stated})
     findings = list(grid.findings)
     times = grid.exact_times
-    H = grid.H if grid.H is not None else float((times[-1] - times[0]) / (times.size - 1))  # noqa: N806
+    H = grid.H if grid.H is not None else float((times[-1] - times[0]) / (times.size - 1))
     index = grid.index
     if grid.H is not None and index is not None:
         index = index + int(round(times[0] / grid.H)) - int(index[0])

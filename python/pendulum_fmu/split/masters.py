@@ -139,7 +139,7 @@ class Coupled:
         return float(np.max(np.abs(self.theta - self.theta_exact)))
 
 
-def run_master(master: Master, H: float, stop: float, problem: Problem = Problem(),  # noqa: N803
+def run_master(master: Master, H: float, stop: float, problem: Problem | None = None,
                fmi_version: int = 2) -> Coupled:
     """Run ``master`` with macro step ``H`` from 0 to ``stop`` (n = round(stop / H) steps).
 
@@ -151,8 +151,8 @@ def run_master(master: Master, H: float, stop: float, problem: Problem = Problem
         The macro step (s).
     stop : float
         The end time (s).
-    problem : Problem
-        Parameters and start values.
+    problem : Problem, optional
+        Parameters and start values (default: ``Problem()``).
     fmi_version : {2, 3}
         The FMUs' version (FMI 3.0: zero-order hold only).
 
@@ -164,6 +164,7 @@ def run_master(master: Master, H: float, stop: float, problem: Problem = Problem
     if master not in masters_for(fmi_version):
         raise ValueError(f"{master.describe()} needs input and output derivatives, which FMI {fmi_version}.0 "
                          "Co-Simulation FMUs do not have")
+    problem = problem or Problem()
     n = round(stop / H)
     rows = np.empty((n + 1, 6))
     iterations = np.ones(n, dtype=int)
@@ -197,7 +198,7 @@ def _feed_gravity(pair: Pair, coupling: str) -> None:
         pair.set_derivatives(pair.gravity, THETA, first, second)
 
 
-def _feed_body(pair: Pair, coupling: str, alpha: float, first: float, second: float, H: float) -> None:  # noqa: N803
+def _feed_body(pair: Pair, coupling: str, alpha: float, first: float, second: float, H: float) -> None:
     """Gravity's alpha (value and derivatives read before) into Body's input."""
     if coupling == "extrapolation":
         pair.set(pair.body, ALPHA, alpha + first * H / 2)
@@ -220,7 +221,7 @@ def _exchange_gauss_seidel(pair: Pair, coupling: str) -> tuple[float, float, flo
     return _gravity_output(pair, coupling)
 
 
-def _step_gauss_seidel(pair: Pair, coupling: str, t: float, H: float) -> tuple[float, ...]:  # noqa: N803
+def _step_gauss_seidel(pair: Pair, coupling: str, t: float, H: float) -> tuple[float, ...]:
     alpha, first, second = _exchange_gauss_seidel(pair, coupling)
     row = _outputs(pair, alpha)
     _feed_body(pair, coupling, alpha, first, second, H)
@@ -229,7 +230,7 @@ def _step_gauss_seidel(pair: Pair, coupling: str, t: float, H: float) -> tuple[f
     return row
 
 
-def _step_jacobi(pair: Pair, coupling: str, t: float, H: float) -> tuple[float, ...]:  # noqa: N803
+def _step_jacobi(pair: Pair, coupling: str, t: float, H: float) -> tuple[float, ...]:
     alpha, first, second = _gravity_output(pair, coupling)  # Gravity's, from its last step
     row = _outputs(pair, alpha)
     _feed_gravity(pair, coupling)
@@ -242,7 +243,7 @@ def _step_jacobi(pair: Pair, coupling: str, t: float, H: float) -> tuple[float, 
 _STEPPERS = {"gauss-seidel": _step_gauss_seidel, "jacobi": _step_jacobi}
 
 
-def _step_iterated(pair: Pair, t: float, H: float, tolerance: float) -> tuple[tuple[float, ...], int]:  # noqa: N803
+def _step_iterated(pair: Pair, t: float, H: float, tolerance: float) -> tuple[tuple[float, ...], int]:
     """One macro step of strong coupling (module docstring): the row at t and the passes taken."""
     body, gravity = pair.body, pair.gravity
     alpha, first, _ = _exchange_gauss_seidel(pair, "interpolation")

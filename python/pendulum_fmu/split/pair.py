@@ -39,7 +39,7 @@ class Problem:
         Body's start values (rad, rad/s); Gravity's input starts at theta0.
     """
 
-    L: float = 1.0  # noqa: N815 (the physics name)
+    L: float = 1.0
     g: float = 9.81
     theta0: float = THETA0
     omega0: float = 0.0
@@ -76,7 +76,7 @@ class Pair:
     def __init__(self, problem: Problem, fmi_version: int = 2, fmus: tuple[Path, Path] | None = None) -> None:
         self.v3 = fmi_version == 3
         self.instances: list[Any] = []
-        for name, path in zip(("Body", "Gravity"), fmus or split_fmus(fmi_version)):
+        for name, path in zip(("Body", "Gravity"), fmus or split_fmus(fmi_version), strict=True):
             folder, identifier, token = _extracted(str(path), path.stat().st_mtime_ns)
             cls = FMU3Slave if self.v3 else FMU2Slave
             fmu = cls(unzipDirectory=folder, modelIdentifier=identifier, instanceName=name, guid=token)

@@ -12,20 +12,24 @@ from __future__ import annotations
 
 import math
 from pathlib import Path
+from typing import TYPE_CHECKING, Any
 
 import matplotlib
 
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-from matplotlib.ticker import MaxNLocator  # noqa: E402
+import matplotlib.pyplot as plt
+import numpy as np
+from matplotlib.ticker import MaxNLocator
 
-from pendulum_fmu.fmu.period import exact_period_ratio  # noqa: E402
-from pendulum_fmu.fmu.runner import Trajectory  # noqa: E402
-from pendulum_fmu.study.seed import PeriodCurve  # noqa: E402
+from pendulum_fmu.fmu.period import exact_period_ratio
+from pendulum_fmu.fmu.runner import Trajectory
+from pendulum_fmu.study.seed import PeriodCurve
 
-STYLE = {"font.size": 12, "axes.titlesize": 13, "axes.labelsize": 12, "legend.fontsize": 11,
-         "xtick.labelsize": 11, "ytick.labelsize": 11}
+if TYPE_CHECKING:
+    from matplotlib.typing import RcKeyType
+
+STYLE: dict[RcKeyType, Any] = {"font.size": 12, "axes.titlesize": 13, "axes.labelsize": 12, "legend.fontsize": 11,
+                                 "xtick.labelsize": 11, "ytick.labelsize": 11}
 NUMERIC_COLOR = "tab:blue"
 EXACT_COLOR = "black"
 ME_COLOR = "tab:orange"
@@ -78,7 +82,7 @@ def plot_solutions(runs: list[Trajectory], field: str, title: str, path: Path) -
     with plt.rc_context(STYLE):
         fig, axes = plt.subplots(len(runs), 1, figsize=(10.5, 1.75 * len(runs) + 1.5), sharex=True, sharey=True,
                                  squeeze=False)
-        for ax, run in zip(axes[:, 0], runs):
+        for ax, run in zip(axes[:, 0], runs, strict=True):
             amplitude = run.pendulum.amplitude_deg
             t0 = run.pendulum.small_angle_period
             cycles = run.result["time"] / t0
@@ -130,7 +134,7 @@ def plot_comparison_grid(cs_runs: list[Trajectory], me_runs: list[Trajectory], p
     with plt.rc_context(STYLE):
         fig, axes = plt.subplots(2, count, figsize=(2.9 * count + 0.8, 8.0), sharey="row", squeeze=False)
         zeros_seen = False
-        for column, (cs, me) in enumerate(zip(cs_runs, me_runs)):
+        for column, (cs, me) in enumerate(zip(cs_runs, me_runs, strict=True)):
             top, bottom = axes[0, column], axes[1, column]
             cycles = _cycles(cs)
             last = cycles >= cycles[-1] - 2.0 * cs.period / cs.pendulum.small_angle_period - 1e-9

@@ -129,7 +129,8 @@ def write_html(out: Path, rows: list[tuple[str, ...]], periods: float, speed: Sp
          f"rest at the seed's amplitudes {', '.join(f'{a:g}' for a in SEED_AMPLITUDES_DEG)} deg, simulated "
          f"for {periods:g} exact periods with 50 output points a period, and compared at every point with "
          "the exact Jacobi-elliptic solution that the FMU computes beside its numerical one."),
-        ("Co-Simulation (CS) runs the FMU's default solver rkn (Runge-Kutta-Nystrom 12(10)) at its default tolerance 1e-8; "
+        ("Co-Simulation (CS) runs the FMU's default solver rkn (Runge-Kutta-Nystrom 12(10)) at its default "
+         "tolerance 1e-8; "
          f"Model Exchange (ME) runs fmpy's CVODE at relative tolerance {ME_TOLERANCE:g}. The exact period is "
          "4 K(m)/w0 with m = sin^2(theta0/2); the measured period is the least-squares slope of the downward "
          "zero crossings of the numerical theta."),

@@ -15,10 +15,10 @@ from pathlib import Path
 import matplotlib
 
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+import matplotlib.pyplot as plt
 
-from pendulum_fmu.study.figures import STYLE  # noqa: E402
-from pendulum_fmu.study.speed import LEVELS, METHODS, SpeedStudy, curve  # noqa: E402
+from pendulum_fmu.study.figures import STYLE
+from pendulum_fmu.study.speed import LEVELS, METHODS, SpeedStudy, curve
 
 COLORS = {"dopri5": "tab:blue", "rk4": "tab:red", "rkn": "tab:green", "symplectic": "tab:purple",
           "cvode": "tab:orange"}

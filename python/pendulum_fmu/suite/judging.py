@@ -29,7 +29,7 @@ class Judged:
     ratio : float or None
         The worst error as a share of its bound (1 at the bound): for Pendulum the judge's
         bound (the certificate's for Co-Simulation, the Model Exchange bound), for the split
-        pendulum the split judge's (its factor times the claimed master's error).
+        pendulum the run's error over the claimed master's (1 when it reproduces it).
     properties : dict
         Further figures for the JUnit properties and the JSON.
     """
@@ -87,20 +87,21 @@ def _times(csv: Path) -> np.ndarray:
 
 
 def judge_split_result(csv: Path, master: str | None) -> Judged:
-    """The split judge on a coupled result, its bound taken against ``master``.
+    """The split judge on a coupled result, with the master the engine claims as its criterion.
 
     The one call into :mod:`pendulum_fmu.split.judge`: where its interface changes, this
-    function alone follows.
+    function alone follows. It passes when the run is a conformant co-simulation that reproduces
+    ``master`` (or, with no master claimed, when it is conformant); its ratio is the run's error
+    over the claimed master's at the same H (1 when it reproduces it).
     """
-    from pendulum_fmu.split.judge import FACTOR, judge_split
+    from pendulum_fmu.split.judge import judge_split
 
     verdict = judge_split(csv, master=master)
-    best = verdict.reference_errors.get(master) if master else None
-    ratio = verdict.error / (FACTOR * best) if best else None
-    line = verdict.lines[-1].split(None, 2)[-1] if verdict.lines else ""
-    text = f"{'PASS' if verdict.passed else 'FAIL'}: {line}"
+    claimed = verdict.reference_errors.get(master) if master else None
+    ratio = verdict.error / claimed if claimed else None
+    text = f"{'PASS' if verdict.passed else 'FAIL'}: {verdict.summary}"
     if not verdict.passed and verdict.findings:
-        text = f"FAIL ({', '.join(f.kind for f in verdict.findings)}): {line}"
+        text = f"FAIL ({', '.join(f.kind for f in verdict.findings)}): {verdict.summary}"
     return Judged(verdict.passed, text, verdict.error, ratio,
                   {"macro_step": verdict.H, "behaves_as": verdict.master or "", "claimed_master": master or "",
-                   "bound": FACTOR * best if best else None})
+                   "claimed_master_error": claimed})

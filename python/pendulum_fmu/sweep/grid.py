@@ -47,7 +47,7 @@ class SweepPoint:
     @property
     def key(self) -> Key:
         """The tuple of inputs, in field order."""
-        return astuple(self)  # type: ignore[return-value]
+        return astuple(self)
 
     def pendulum(self) -> Pendulum:
         """The problem to run."""

@@ -58,7 +58,7 @@ def read_journal(path: Path) -> dict[Key, dict[str, Any]]:
         if len(fields) != len(COLUMNS):
             continue
         try:
-            row = {column: _parse(column, text) for column, text in zip(COLUMNS, fields)}
+            row = {column: _parse(column, text) for column, text in zip(COLUMNS, fields, strict=True)}
             rows[point_of(row).key] = row
         except (ValueError, TypeError):
             continue

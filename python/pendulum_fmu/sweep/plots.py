@@ -11,11 +11,11 @@ from typing import Any
 import matplotlib
 
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-from matplotlib.ticker import FuncFormatter, LogLocator, NullFormatter  # noqa: E402
+import matplotlib.pyplot as plt
+import numpy as np
+from matplotlib.ticker import FuncFormatter, LogLocator, NullFormatter
 
-from pendulum_fmu.fmu.period import exact_period_ratio  # noqa: E402
+from pendulum_fmu.fmu.period import exact_period_ratio
 
 SOLVER_COLORS = {"dopri5": "tab:blue", "rk4": "tab:red", "rkn": "tab:green", "symplectic": "tab:purple",
                  "cvode": "tab:orange"}
@@ -112,7 +112,7 @@ def plot_cost(rows: Sequence[dict[str, Any]], path: Path) -> None:
     panels = [(rows_, kind) for rows_, kind in ((counted, "rhs"), (timed, "wall")) if rows_]
     fig, axes = plt.subplots(1, len(panels), figsize=(8.5 + 3.5 * (len(panels) - 1), 4.8), sharey=True,
                              squeeze=False)
-    for ax, (panel_rows, kind) in zip(axes[0], panels):
+    for ax, (panel_rows, kind) in zip(axes[0], panels, strict=True):
         for _, group in _groups(panel_rows, "solver", "tolerance").items():
             x = ([_count(r["rhs_evaluations"]) for r in group] if kind == "rhs"
                  else [1e3 * r["wall_time_s"] for r in group])

@@ -105,7 +105,7 @@ def aggregate(runs: list[Run]) -> list[Point]:
         bad = [r.status for r in members if r.status != "ok"]
         ok = not bad
 
-        def worst(values: list[float]) -> float:
+        def worst(values: list[float], ok: bool = ok) -> float:
             return max(values) if ok else math.nan
 
         points.append(Point(problem=problem, runner=runner, method=method, tol=tol,

@@ -133,7 +133,7 @@ def cost_table(points: list[Point], problem: str) -> str:
     head = ("| method | " + " | ".join(f"err {level:.0e}" for level in LEVELS)
             + " | best error | flipped at tol |")
     lines = [head, "|" + "---|" * (len(LEVELS) + 3)]
-    for runner, method, pts in _series(points, problem):
+    for _runner, _method, pts in _series(points, problem):
         if not pts:
             continue
         cells = [_fmt_cost(cost_at(pts, level), cost_at(pts, level, "wall_per_period")) for level in LEVELS]

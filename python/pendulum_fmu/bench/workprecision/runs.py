@@ -22,9 +22,10 @@ from __future__ import annotations
 
 import math
 import time
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any, Callable
+from typing import Any
 
 import numpy as np
 from fmpy import read_model_description, simulate_fmu
@@ -174,8 +175,8 @@ class _CountingRhs:
 
 
 PEER_ATOL_FACTOR = 1e-2
-"""scipy peers run at atol = rtol * PEER_ATOL_FACTOR (the issue's DOP853 reference uses
-rtol 1e-10 with atol 1e-12)."""
+"""scipy peers run at atol = rtol * PEER_ATOL_FACTOR (the DOP853 reference
+runs at rtol 1e-10 with atol 1e-12)."""
 
 
 def run_solve_ivp(grid: Grid, method: str, rtol: float, atol: float | None = None) -> Run:
@@ -284,7 +285,7 @@ def run_fmu_me(unzipped: Path, grid: Grid, method: str, tol: float) -> Run:
     md = read_model_description(str(unzipped), validate=False)
     fmu = instantiate_fmu(str(unzipped), md, "ModelExchange")
     counter = [0]
-    fmu.getDerivatives = _counting(fmu.getDerivatives, counter)  # type: ignore[method-assign]
+    fmu.getDerivatives = _counting(fmu.getDerivatives, counter)
     case = grid.case
     options: dict[str, Any]
     every = 1
@@ -301,7 +302,7 @@ def run_fmu_me(unzipped: Path, grid: Grid, method: str, tol: float) -> Run:
                               record_events=False,
                               start_values={"L": LENGTH, "g": GRAVITY, "theta": case.theta0, "omega": 0.0},
                               output=["theta", "omega"], **options)
-    except Exception as error:  # fmpy raises plain Exceptions for solver failures
+    except Exception as error:  # noqa: BLE001 -- fmpy raises plain Exceptions for solver failures
         run.status, run.note = "failed", str(error).splitlines()[0][:120]
         return run
     finally:

@@ -1,4 +1,4 @@
-"""The targets of the solver issue, each measured and judged.
+"""The solvers' work-precision targets, each measured and judged.
 
 1. The default solver reaches every error from 1e-4 to 1e-12 on P1 with fewer right-hand-side
    evaluations than DOP853 (scipy's ``solve_ivp`` and Hairer's ``dop853`` through
@@ -16,9 +16,9 @@ from __future__ import annotations
 
 import math
 import time
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Callable
 
 import numpy as np
 from fmpy import read_model_description, simulate_fmu
@@ -251,9 +251,9 @@ def default_near_separatrix(points: list[Point], default: str) -> tuple[TargetOu
     pts = curve(points, "P2", "c", default)
     flips = [p.tol for p in pts if p.flipped]
     errors = [p.max_err for p in pts]
-    shrinking = all(b < a or a < P2_FLOOR for a, b in zip(errors, errors[1:]))
+    shrinking = all(b < a or a < P2_FLOOR for a, b in zip(errors, errors[1:], strict=False))
     bounded = all(p.max_err <= max(P2_TOLS * p.tol, P2_FLOOR) for p in pts)
-    strict = all(b < a for a, b in zip(errors, errors[1:]))
+    strict = all(b < a for a, b in zip(errors, errors[1:], strict=False))
     sequence = ", ".join(f"{e:.1e}" for e in errors)
     tols = f"{pts[0].tol:.0e}..{pts[-1].tol:.0e}" if pts else "no tol"  # the tolerances run, not a fixed range
     return TargetOutcome(f"P2: default keeps |theta| < pi at every tol {tols}, its error within {P2_TOLS:g} tol, "

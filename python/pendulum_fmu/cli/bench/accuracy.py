@@ -9,7 +9,7 @@ from pendulum_fmu.cli.arguments import add_fmu_argument, integer, plain_text
 from pendulum_fmu.cli.extras import module_docstring, require_extra
 
 NAME = "accuracy"
-HELP = "the FMU's exact solution against mpmath at 50 digits, every regime (the README's table)"
+HELP = "the FMU's exact solution against mpmath at 50 digits, every regime (the headline figures' table)"
 DESCRIPTION = plain_text(module_docstring("pendulum_fmu.bench.accuracy") or HELP)
 EPILOG = """\
 examples:

@@ -12,7 +12,8 @@ from pendulum_fmu.cli.extras import module_docstring
 
 NAME = "solvers"
 HELP = "work-precision of the solvers: error against cost"
-DESCRIPTION = plain_text((module_docstring("pendulum_fmu.bench.solvers") or HELP).split("\n``pendulum-fmu bench solvers`` runs")[0])
+DESCRIPTION = plain_text((module_docstring("pendulum_fmu.bench.solvers") or HELP)
+                         .split("\n``pendulum-fmu bench solvers`` runs")[0])
 EPILOG = """\
 examples:
   bash scripts/bench.sh solvers --quick             # in the repository: builds the C driver, about 30 s

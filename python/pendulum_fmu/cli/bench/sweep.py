@@ -3,8 +3,8 @@
 from __future__ import annotations
 
 import argparse
-import sys
 import statistics
+import sys
 
 import pendulum_fmu.bench.sweep as bench_sweep
 from pendulum_fmu.bench.sweep import bench_points, cores, measure
@@ -55,8 +55,8 @@ def run(args: argparse.Namespace) -> int:
     fmu = args.fmu
     points = bench_points(args.runs, args.periods)
     with FmuRunner(fmu) as runner:  # a run that fails here would be timed as a fast one: refuse now
-        first = points[0]
-        runner.run(first.pendulum(), first.method(), first.grid())
+        probe = points[0]
+        runner.run(probe.pendulum(), probe.method(), probe.grid())
     physical, logical, usable = cores()
     print(f"sweep of {len(points)} runs (amplitudes 1-179 deg from rest, {args.periods:g} periods, dopri5 "
           f"at 1e-8), median of {args.repeat}; FMU {fmu}")
