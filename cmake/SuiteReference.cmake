@@ -6,7 +6,7 @@
 #   extra/org.fmi-standard.fmi-ls-ref/suite/<case>_ref.csv        each case's exact solution (role result)
 # The cases come from python/pendulum_fmu/suite/cases.csv, the one list the Python registry
 # (pendulum-fmu suite) reads too; this file needs no Python. Each FMU's manifest, the default's
-# entries and the suite's, is written to reference/suite-fmi<N>/ and replaces the shared one
+# entries and the suite's, is written to build/reference/suite-fmi<N>/ and replaces the shared one
 # when the files are copied into the FMU (add_reference_result).
 set(SUITE_CASES_FILE ${CMAKE_CURRENT_SOURCE_DIR}/python/pendulum_fmu/suite/cases.csv)
 set(SUITE_MAX_ROWS 200)
