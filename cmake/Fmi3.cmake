@@ -23,7 +23,7 @@ target_link_libraries(Pendulum_fmi3 PRIVATE m)
 target_link_options(Pendulum_fmi3 PRIVATE -Wl,--no-undefined)
 
 # modelDescription.xml: the template with the FMI 2.0 description's GUID as instantiation token
-set(FMI3_MODEL_DESCRIPTION_IN ${CMAKE_CURRENT_SOURCE_DIR}/fmi3/modelDescription.xml.in)
+set(FMI3_MODEL_DESCRIPTION_IN ${MODELS_DIR}/pendulum/FMI3.xml.in)
 configure_file(${FMI3_MODEL_DESCRIPTION_IN} ${FMI3_DIR}/modelDescription.xml @ONLY)
 
 # sources/buildDescription.xml (FMI 3.0 2.5.1): the same list of sources the binary is built from
@@ -89,14 +89,14 @@ add_custom_command(
   ${FMI3_OTHER_BINARIES}
   COMMAND ${CMAKE_COMMAND} -E copy ${FMI3_SOURCES} ${FMI3_HEADERS} ${GENERATED_DIR}/pendulum_vrs.h
           ${FMI3_DIR}/buildDescription.xml ${FMI3_FMU_DIR}/sources/
-  COMMAND ${CMAKE_COMMAND} -E copy ${CMAKE_CURRENT_SOURCE_DIR}/fmu_src/documentation/index.html
-          ${CMAKE_CURRENT_SOURCE_DIR}/fmu_src/documentation/math.html ${FMI3_FMU_DIR}/documentation/
+  COMMAND ${CMAKE_COMMAND} -E copy ${PENDULUM_DOC_DIR}/index.html
+          ${PENDULUM_DOC_DIR}/math.html ${FMI3_FMU_DIR}/documentation/
   COMMAND ${CMAKE_COMMAND} -E rm -f ${FMI3_FMU_FILE}
   COMMAND ${CMAKE_COMMAND} -E chdir ${FMI3_FMU_DIR} ${CMAKE_COMMAND} -E tar cf ${FMI3_FMU_FILE} --format=zip
           modelDescription.xml binaries sources documentation
   DEPENDS Pendulum_fmi3 ${FMI3_BINARY_DEPENDS} ${FMI3_MODEL_DESCRIPTION_IN} ${FMI3_HEADERS} ${FMI3_DIR}/buildDescription.xml
-          ${CMAKE_CURRENT_SOURCE_DIR}/fmu_src/documentation/index.html
-          ${CMAKE_CURRENT_SOURCE_DIR}/fmu_src/documentation/math.html
+          ${PENDULUM_DOC_DIR}/index.html
+          ${PENDULUM_DOC_DIR}/math.html
   COMMENT "Packing fmi3/Pendulum.fmu"
   VERBATIM)
 add_custom_target(fmu3 ALL DEPENDS ${FMI3_FMU_FILE})

@@ -77,16 +77,16 @@ set(FMU_OTHER_BINARIES
 # py3-none-any wheel carries it for each: build/exact_lib/<platform>/<the file name the
 # package loads>, where setup.py picks them up.
 set(exact_cross_common NAME pendulum_exact
-    SOURCES ${PROJECT_SOURCE_DIR}/exact_lib/pendulum_exact_lib.c ${CORE_SOURCES}
+    SOURCES ${LIBS_DIR}/exact_lib/pendulum_exact_lib.c ${CORE_SOURCES}
     INCLUDES ${FMU_INCLUDE_DIRS} ${GENERATED_DIR}
-    DEPENDS ${FMU_HEADERS} ${GENERATED_DIR}/pendulum_vrs.h ${PROJECT_SOURCE_DIR}/exact_lib/pendulum_exact_lib.h)
+    DEPENDS ${FMU_HEADERS} ${GENERATED_DIR}/pendulum_vrs.h ${LIBS_DIR}/exact_lib/pendulum_exact_lib.h)
 foreach(platform IN ITEMS LINUX_X86_64 WINDOWS_X86_64 MACOS_X86_64 MACOS_ARM64)
   cross_shared_library(exact_${platform} TARGET ${ZIG_${platform}} SUBDIR exact-${platform} ${exact_cross_common})
 endforeach()
 universal_macos_library(exact_darwin64 NAME pendulum_exact INPUTS ${exact_MACOS_X86_64} ${exact_MACOS_ARM64})
 # ... and pendulum_driver (the output loop of pendulum_fmu.fmu.driver), the same way.
-set(driver_cross_common NAME pendulum_driver SOURCES ${PROJECT_SOURCE_DIR}/driver_lib/pendulum_driver.c
-    INCLUDES ${PROJECT_SOURCE_DIR}/driver_lib DEPENDS ${PROJECT_SOURCE_DIR}/driver_lib/pendulum_driver.h)
+set(driver_cross_common NAME pendulum_driver SOURCES ${LIBS_DIR}/driver_lib/pendulum_driver.c
+    INCLUDES ${LIBS_DIR}/driver_lib DEPENDS ${LIBS_DIR}/driver_lib/pendulum_driver.h)
 foreach(platform IN ITEMS LINUX_X86_64 WINDOWS_X86_64 MACOS_X86_64 MACOS_ARM64)
   cross_shared_library(driver_${platform} TARGET ${ZIG_${platform}} SUBDIR driver-${platform} ${driver_cross_common})
 endforeach()

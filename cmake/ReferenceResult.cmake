@@ -7,8 +7,8 @@
 #                                                            ma-hs-experiments format (role experiment/validation)
 #   documentation/fmi-ls-ref.html                            what the files are and what to expect of a run
 # Every number comes from modelDescription.xml's DefaultExperiment (the attributes in any
-# order); the CSV is written at build time by reference/write_reference_result.c from the FMU's
-# exact port and the start values. The files are added to each packed FMU by re-packing its
+# order); the CSV is written at build time by fmu_src/libs/reference/write_reference_result.c
+# from the FMU's exact port and the start values. The files are added to each packed FMU by re-packing its
 # folder (cmake/pack_fmu.cmake), so the FMU packing rules themselves stay as they are.
 # Included after the FMUs are defined.
 string(REGEX MATCH "<DefaultExperiment[^>]*>" default_experiment "${md_text}")
@@ -27,7 +27,7 @@ set(REFERENCE_LS_VERSION 1.0.0-beta.1)
 set(REFERENCE_DIR ${CMAKE_CURRENT_BINARY_DIR}/reference/org.fmi-standard.fmi-ls-ref)
 set(REFERENCE_HTML ${CMAKE_CURRENT_BINARY_DIR}/reference/fmi-ls-ref.html)
 
-add_executable(write_reference_result reference/write_reference_result.c)
+add_executable(write_reference_result ${LIBS_DIR}/reference/write_reference_result.c)
 target_include_directories(write_reference_result PRIVATE ${FMU_INCLUDE_DIRS})
 target_compile_options(write_reference_result PRIVATE ${WARNING_FLAGS})
 target_link_libraries(write_reference_result PRIVATE pendulum_core)
@@ -47,7 +47,7 @@ file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/reference/Pendulum.exp.new
   "    </Experiment>\n"
   "</Experiments>\n")
 configure_file(${CMAKE_CURRENT_BINARY_DIR}/reference/Pendulum.exp.new ${REFERENCE_DIR}/Pendulum.exp COPYONLY)
-configure_file(${CMAKE_CURRENT_SOURCE_DIR}/fmu_src/documentation/fmi-ls-ref.html.in ${REFERENCE_HTML} @ONLY)
+configure_file(${PENDULUM_DOC_DIR}/fmi-ls-ref.html.in ${REFERENCE_HTML} @ONLY)
 add_custom_command(
   OUTPUT ${REFERENCE_DIR}/Pendulum_ref.csv
   COMMAND write_reference_result ${REFERENCE_DIR}/Pendulum_ref.csv ${REFERENCE_START} ${REFERENCE_STOP}

@@ -1,4 +1,4 @@
-"""The two model descriptions describe one model: the FMI 3.0 one (fmi3/modelDescription.xml.in)
+"""The two model descriptions describe one model: the FMI 3.0 one (fmu_src/models/pendulum/FMI3.xml.in)
 must agree with modelDescription.xml (FMI 2.0, which the C code's value references are
 generated from) on every variable, the Solver items, the model structure and the experiment."""
 

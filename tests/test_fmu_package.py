@@ -57,7 +57,7 @@ def test_only_fmi_functions_are_exported(fmu_path: Path, tmp_path: Path) -> None
 
 
 def test_documentation_names_every_variable() -> None:
-    html = (REPO_ROOT / "fmu_src/documentation/index.html").read_text()
+    html = (REPO_ROOT / "fmu_src/models/pendulum/documentation/index.html").read_text()
     md = read_model_description(str(REPO_ROOT / "modelDescription.xml"))
     cells = set(re.findall(r"<tr><td>([^<]+)</td>", html))
     assert cells == {v.name for v in md.modelVariables}

@@ -1,5 +1,5 @@
 """The reference result in extra/org.fmi-standard.fmi-ls-ref/ of both FMUs (built at build time
-by reference/write_reference_result.c): declared by its manifest, the FMU's own exact port on
+by fmu_src/libs/reference/write_reference_result.c): declared by its manifest, the FMU's own exact port on
 the default experiment's grid, independent mpmath agrees, and the FMU's Co-Simulation run
 stays within the stated 1e-6 rad of it. The manifest, the default experiment's ``.exp`` and
 ``documentation/fmi-ls-ref.html`` as FMI-LS-REF 1.0.0-beta.1 and the ma-hs-experiments format

@@ -1,7 +1,7 @@
 """The Co-Simulation output loop of every run: ``pendulum_driver`` in C, shipped with the package.
 
 fmpy loads and instantiates the FMU (and owns its logger); this module hands the C library
-``pendulum_driver`` (``driver_lib/`` of the repository) the instance and the addresses of the
+``pendulum_driver`` (``fmu_src/libs/driver_lib/`` of the repository) the instance and the addresses of the
 FMU's own ``fmi2DoStep`` / ``fmi2GetReal`` (FMI 2.0) or ``fmi3DoStep`` / ``fmi3GetFloat64``
 (FMI 3.0). The library steps from output point to output point and reads every recorded
 output straight into the rows of the caller's numpy array, checking every status: no Python

@@ -1,6 +1,6 @@
 """``pendulum_fmu.exact``: the exact solution over numpy arrays, from the FMU's own C code.
 
-The C library ``pendulum_exact`` (``exact_lib/`` of the repository, built by CMake beside
+The C library ``pendulum_exact`` (``fmu_src/libs/exact_lib/`` of the repository, built by CMake beside
 the FMU from the same ``exact.c`` and ``elliptic.c``) is called once per array through
 ctypes: no FMU instance, no round trip per point. A large array is split over threads
 (``workers``), each running the C code on its chunk with the GIL released. Its theta equals the FMU's

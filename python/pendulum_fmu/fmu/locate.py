@@ -23,8 +23,9 @@ from pendulum_fmu.errors import BuildError, UsageError
 from pendulum_fmu.fmu.build import DEFAULT_BUILD_DIR, PACKAGED_FMU, PACKAGED_FMU3, REPO_ROOT, build_fmu, fmu3_in, fmu_in
 from pendulum_fmu.fmu.identity import file_key, fmi_version_of, pendulum_problem
 
-SOURCES: tuple[str, ...] = ("fmu_src", "modelDescription.xml", "CMakeLists.txt", "cmake", "fmi3", "reference")
-"""What the FMUs (FMI 2.0 and 3.0) are built from, relative to the repository root."""
+SOURCES: tuple[str, ...] = ("fmu_src", "modelDescription.xml", "CMakeLists.txt", "cmake")
+"""What the FMUs (FMI 2.0 and 3.0) are built from, relative to the repository root: the C code, each
+model's folder (``fmu_src/models/``), the C libraries and the reference writer (``fmu_src/libs/``)."""
 
 
 def newest_source_time(root: Path = REPO_ROOT) -> float:

@@ -1,6 +1,6 @@
 """``pendulum_drive`` in plain Python: the output loop where the C library is not installed.
 
-The same calls as ``driver_lib/pendulum_driver.c``, in the same order, through ctypes
+The same calls as ``fmu_src/libs/driver_lib/pendulum_driver.c``, in the same order, through ctypes
 prototypes of the FMU's own functions, so that a run gives the same numbers bit for bit
 (``tests/test_driver.py`` checks it): per point, DoStep from the previous time (none at point
 0) and one GetReal (FMI 2.0) or GetFloat64 (FMI 3.0) of every recorded output straight into
