@@ -21,7 +21,7 @@ import pytest
 
 pytestmark = pytest.mark.slow
 
-REPO = Path(__file__).resolve().parents[1]
+REPO = Path(__file__).resolve().parents[2]
 
 FOREIGN_XML = """<?xml version="1.0" encoding="UTF-8"?>
 <fmiModelDescription fmiVersion="2.0" modelName="BouncingBall" guid="{8c4e810f-3df3-4a00-8276-176fa3c9f000}">
@@ -294,7 +294,8 @@ def test_help_texts_are_plain_and_honest(installed: Path, folder: Path) -> None:
 def test_bench_accuracy_takes_as_long_as_its_help_says(installed: Path, folder: Path) -> None:
     done = _run(installed, ["bench", "accuracy"], folder)
     assert done.returncode == 0, done.stderr
-    # how long it takes is the benchmark's own figure: it prints it (no timed test, tests/test_no_timed_tests.py)
+    # how long it takes is the benchmark's own figure: it prints it
+    # (no timed test, tests/package/test_no_timed_tests.py)
 
 
 def test_installed_bench_exact_leaves_out_the_c_columns(installed: Path, folder: Path) -> None:
@@ -313,7 +314,7 @@ def test_bench_solvers_quick_passes_with_an_honest_report(tmp_path: Path) -> Non
                            "--out", str(tmp_path)], cwd=REPO, capture_output=True, text=True, timeout=600, check=False)
     report = (tmp_path / "report.md").read_text()
     # only a wall-time target (T3, within 3x of the floor; T2's "3x faster") may be unmet, as the
-    # machine's load decides it (no timed test: tests/test_no_timed_tests.py)
+    # machine's load decides it (no timed test: tests/package/test_no_timed_tests.py)
     unmet = [line for line in report.splitlines() if line.startswith("| T") and "| NO |" in line]
     assert all("wall time" in line or "faster" in line for line in unmet), report
     assert done.returncode == (1 if unmet else 0), done.stdout[-3000:] + done.stderr[-2000:]

@@ -12,7 +12,7 @@ confirmed by a second evaluation 15 digits higher.
 Bounds (absolute theta error relative to max(1, |theta|); omega relative to its scale):
 5e-14 up to a few periods and after 1e6 periods, also within ulps of the separatrix (where
 m1 is formed in triple-double: in double-double the phase after 1e6 periods was 1.9e-12
-off there). ``python tests/test_exact_properties.py [FMU [COUNT]]`` prints the errors state
+off there). ``python tests/exact/test_exact_properties.py [FMU [COUNT]]`` prints the errors state
 by state and the worst cases (docs/math.md, its accuracy).
 """
 
@@ -138,7 +138,7 @@ def at_separatrix(state: tuple[float, float, float, float, float]) -> bool:
 
 
 if __name__ == "__main__":
-    # python tests/test_exact_properties.py [FMU [COUNT]]: the worst errors over COUNT states
+    # python tests/exact/test_exact_properties.py [FMU [COUNT]]: the worst errors over COUNT states
     from pendulum_fmu.fmu.build import find_fmu
 
     fmu = Path(sys.argv[1]) if len(sys.argv) > 1 else find_fmu()

@@ -1,5 +1,5 @@
 """``exact()`` with one state per point gives the C call's numbers (the overhead it adds is
-``pendulum-fmu bench exact``'s figure: no test asserts a timing, tests/test_no_timed_tests.py).
+``pendulum-fmu bench exact``'s figure: no test asserts a timing, tests/package/test_no_timed_tests.py).
 
 The C call is ``pendulum_exact_many`` on arrays already contiguous, the wrapper is ``exact()``
 given the scalars and two arrays a phase portrait gives it.

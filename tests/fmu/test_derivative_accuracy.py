@@ -11,7 +11,7 @@ on both FMUs, against mpmath at 80 digits:
   (theta'' = -a sin theta, ...) at the closed-form solution of mpmath.
 
 Target: within 1e-12 of the value, or, where the value is 0, within 1e-15 of its scale.
-``pytest tests/test_derivative_accuracy.py -s`` prints the measured worst deviations
+``pytest tests/fmu/test_derivative_accuracy.py -s`` prints the measured worst deviations
 (docs/derivatives.md).
 """
 

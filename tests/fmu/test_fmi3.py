@@ -187,7 +187,7 @@ def test_project_header_declares_exactly_the_standards_functions() -> None:
     the same 75 functions as the standard's fmi3Functions.h that fmpy installs."""
     standard = (Path(fmpy.__file__).parent / "c-code" / "fmi3Functions.h").read_text()
     declared = set(re.findall(r"#define (fmi3\w+)\s+fmi3FullName", standard))
-    ours = (Path(__file__).resolve().parents[1] / "fmu_src" / "fmi3" / "fmi3_api.h").read_text()
+    ours = (Path(__file__).resolve().parents[2] / "fmu_src" / "fmi3" / "fmi3_api.h").read_text()
     exported = re.findall(r"FMI3_EXPORT\s+[\w\s\*]*?\b(fmi3\w+)\(", ours)
     assert len(exported) == len(set(exported)) == 75
     assert set(exported) == declared

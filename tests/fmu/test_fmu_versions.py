@@ -5,7 +5,7 @@ command that takes ``--fmu`` (and in :class:`FmuRunner` and :func:`run_sweep`); 
 another model (another ``modelName``, a variable missing, or FMI 1.0) is refused before any
 run, in one line that names the file and says what differs, with exit code 2, no traceback
 and no temporary folder left behind. (The installed wheel runs the same from an empty folder:
-tests/test_wheel_install.py.)
+tests/package/test_wheel_install.py.)
 """
 
 from __future__ import annotations

@@ -13,7 +13,7 @@ import pytest
 
 from misuse_cases import CASES
 
-RUNNER = Path(__file__).with_name("misuse_cases.py")
+RUNNER = Path(__file__).resolve().parents[1] / "helpers" / "misuse_cases.py"
 
 # case -> a phrase the FMU's error log must contain
 EXPECTED_LOG = {

@@ -17,7 +17,7 @@ from fmpy import read_model_description, simulate_fmu
 
 pytestmark = pytest.mark.slow
 
-REPO = Path(__file__).resolve().parents[1]
+REPO = Path(__file__).resolve().parents[2]
 
 
 def _python_without_fmpy(folder: Path) -> Path:

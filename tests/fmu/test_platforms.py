@@ -223,12 +223,12 @@ def test_contraction_is_what_separates_arm64_from_x86_64(fmu_path: Path, unpacke
 
 
 def test_the_documented_table_command_prints_every_row(fmu_path: Path) -> None:
-    """``python tests/platform_runs.py FMU``, the command docs/platforms.md and the README give for
+    """``python tests/helpers/platform_runs.py FMU``, the command docs/platforms.md and the README give for
     the agreement table, runs to its end: every row measured, the host and arm64 rows exact, the
     win64 row within the bound."""
     for target in (WIN64, AARCH64):
         require(target)
-    done = subprocess.run([sys.executable, str(REPO_ROOT / "tests/platform_runs.py"), str(fmu_path)],
+    done = subprocess.run([sys.executable, str(REPO_ROOT / "tests/helpers/platform_runs.py"), str(fmu_path)],
                           capture_output=True, text=True, timeout=900, check=False)
     assert done.returncode == 0 and "Traceback" not in done.stderr, done.stderr[-3000:]
     rows = {}

@@ -4,9 +4,9 @@ and let the engine write its result: libcosim (libcosimpy) and Ecos (ecospy).
 Each run is a subprocess: libcosim aborts the whole process on an FMU error at
 initialization (``terminate called after throwing an instance of 'cosim::error'``) and
 segfaults on an FMI 3.0 FMU; ecospy needs tbb's library folder on the loader path before the
-interpreter starts (``LD_LIBRARY_PATH``). Used by tests/test_judge_engines.py; as a script::
+interpreter starts (``LD_LIBRARY_PATH``). Used by tests/judge/test_judge_engines.py; as a script::
 
-    .venv/bin/python tests/engine_runs.py libcosim|ecos FMU OUT_DIR [NAME=VALUE ...]
+    .venv/bin/python tests/helpers/engine_runs.py libcosim|ecos FMU OUT_DIR [NAME=VALUE ...]
 """
 
 from __future__ import annotations

@@ -10,7 +10,7 @@ Honest runs: fmpy on both FMUs (FMI 2.0 and 3.0) in Co-Simulation (the FMU's fou
 the tolerance passed as ``relative_tolerance``) and Model Exchange (fmpy's CVODE at the
 tolerance); Model Exchange importers emulated with scipy's ``solve_ivp`` (DOP853, LSODA,
 Radau, RK45 at rtol = tol, atol = tol times a scale); libcosim and Ecos (their own
-processes, tests/engine_runs.py). Random states in every regime, L, g, tolerances, output
+processes, tests/helpers/engine_runs.py). Random states in every regime, L, g, tolerances, output
 intervals, lengths, a few start times other than 0 and files with extra columns.
 
 Wrong runs: one kind a row of :data:`WRONG_KINDS`, each with its expected keywords.
@@ -18,9 +18,9 @@ Wrong runs: one kind a row of :data:`WRONG_KINDS`, each with its expected keywor
 As a script (generates, judges with the judge of this checkout, prints the confusion table
 and writes every miss to ``OUTDIR/misses.txt``)::
 
-    .venv/bin/python tests/judge_corpus.py OUTDIR [--part tuning|held-out] [--judge-only]
+    .venv/bin/python tests/helpers/judge_corpus.py OUTDIR [--part tuning|held-out] [--judge-only]
 
-``--judge-only`` judges a corpus generated before into OUTDIR again; tests/test_judge_corpus.py
+``--judge-only`` judges a corpus generated before into OUTDIR again; tests/judge/test_judge_corpus.py
 does the same with ``PENDULUM_JUDGE_CORPUS=OUTDIR``.
 """
 
@@ -41,7 +41,7 @@ from typing import Any, ClassVar
 
 import numpy as np
 
-REPO = Path(__file__).resolve().parents[1]
+REPO = Path(__file__).resolve().parents[2]
 FMUS: dict[str, Path] = {"2.0": REPO / "build" / "Pendulum.fmu", "3.0": REPO / "build" / "fmi3" / "Pendulum.fmu"}
 OUTPUTS = ("theta", "omega", "theta_exact", "omega_exact")
 SOLVERS: dict[int, str] = {1: "dopri5", 2: "rk4", 3: "rkn", 4: "symplectic"}
@@ -455,7 +455,7 @@ def make_honest(job: tuple[dict[str, Any], str]) -> Case | str:
 
 
 def make_engine_run(job: tuple[dict[str, Any], str]) -> Case | str:
-    """One libcosim or Ecos run in its own process (tests/engine_runs.py): libcosim's time
+    """One libcosim or Ecos run in its own process (tests/helpers/engine_runs.py): libcosim's time
     series samples (full precision), Ecos's own CSV writer."""
     from engine_runs import missing, run_ecos, run_libcosim
 

@@ -8,7 +8,7 @@ problems: libration from 10 to 179.99 deg, starts with omega0 != 0, rotations ne
 separatrix in both directions, random L and g, 10 to 50 periods, fine and coarse output
 intervals, one start time of 5 s. docs/importers.md quotes the table::
 
-    .venv/bin/python tests/me_bound_table.py [--quick] 2> runs.log   (one line a run on stderr)
+    .venv/bin/python tests/helpers/me_bound_table.py [--quick] 2> runs.log   (one line a run on stderr)
 """
 
 from __future__ import annotations
@@ -28,7 +28,7 @@ from pendulum_fmu.judge.experiment import make_experiment
 from pendulum_fmu.judge.reading import read_result
 from pendulum_fmu.judge.sensitivity import energy_gaps, period_and_kappa
 
-REPO = Path(__file__).resolve().parents[1]
+REPO = Path(__file__).resolve().parents[2]
 FMUS = {"CVODE fmi2": REPO / "build/Pendulum.fmu", "CVODE fmi3": REPO / "build/fmi3/Pendulum.fmu"}
 SCIPY_METHODS = ("DOP853", "LSODA", "Radau", "RK45")
 TOLERANCES = (1e-4, 1e-6, 1e-8, 1e-10, 1e-12)

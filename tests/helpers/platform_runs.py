@@ -4,10 +4,10 @@ The C programs (``tests/c/test_fmi_api.c``, the FMI harness, and ``tests/c/fmu_r
 the seed's runs printed bit for bit) are compiled for each target with that target's Debian
 cross compiler and linked against the binary taken out of the FMU (or, for aarch64-linux,
 against the library built from the same sources and flags as the arm64 half of the dylib,
-``build/cross/aarch64-linux/``). Used by tests/test_platforms.py; run as a script it prints
+``build/cross/aarch64-linux/``). Used by tests/fmu/test_platforms.py; run as a script it prints
 the agreement table docs/platforms.md quotes::
 
-    .venv/bin/python tests/platform_runs.py [build/Pendulum.fmu]
+    .venv/bin/python tests/helpers/platform_runs.py [build/Pendulum.fmu]
 """
 
 from __future__ import annotations
@@ -23,7 +23,7 @@ from dataclasses import dataclass
 from fractions import Fraction
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 HARNESS = ROOT / "tests/c/test_fmi_api.c"
 FMI3_HARNESS = ROOT / "tests/c/fmi3/test_fmi3_api.c"
 RESULTS = ROOT / "tests/c/fmu_results.c"

@@ -17,7 +17,7 @@ from pathlib import Path
 
 import mpmath
 
-CACHE_DIR = Path(os.environ.get("PENDULUM_TEST_CACHE") or Path(__file__).resolve().parents[1] / "build" / "test-cache")
+CACHE_DIR = Path(os.environ.get("PENDULUM_TEST_CACHE") or Path(__file__).resolve().parents[2] / "build" / "test-cache")
 
 
 def cached(name: str, key: object, compute: Callable[[], list[list[str]]]) -> list[list[str]]:

@@ -15,7 +15,7 @@ The masters couple the two in plain numpy-free Python, each its own way:
   doubled, start values other than the SSP's, a dropped connection.
 
 Two parts from two seeds: ``tuning`` (what the judge was tuned on) and ``held-out`` (judged once,
-when the judge was settled). ``python tests/split_corpus.py`` prints the table of both parts.
+when the judge was settled). ``python tests/helpers/split_corpus.py`` prints the table of both parts.
 """
 
 from __future__ import annotations

@@ -1,10 +1,10 @@
-"""The judge against its corpus (tests/judge_corpus.py): every honest run passes,
+"""The judge against its corpus (tests/helpers/judge_corpus.py): every honest run passes,
 every wrong run fails and names its reason, in the tuning part and in the held-out part.
 
 Both parts are generated once a session into a temporary folder and judged in two processes.
 A failing test prints a compact table of every miss: file, engine, kind with the keywords it
 expects, solver, regime, what went wrong, and the verdict line. The same table for people:
-``.venv/bin/python tests/judge_corpus.py OUTDIR``.
+``.venv/bin/python tests/helpers/judge_corpus.py OUTDIR``.
 """
 
 from __future__ import annotations
@@ -35,7 +35,7 @@ def _require_fmus() -> None:
 @pytest.fixture(scope="session")
 def corpus_root(tmp_path_factory: pytest.TempPathFactory) -> Path:
     """Both parts generated, each into its own folder; with ``PENDULUM_JUDGE_CORPUS=DIR`` the
-    corpus that ``tests/judge_corpus.py DIR`` generated there (to judge it again quickly)."""
+    corpus that ``tests/helpers/judge_corpus.py DIR`` generated there (to judge it again quickly)."""
     _require_fmus()
     given = os.environ.get("PENDULUM_JUDGE_CORPUS")
     if given:

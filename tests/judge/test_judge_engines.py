@@ -2,7 +2,7 @@
 
 libcosim (libcosimpy 0.0.6, FMI 2.0), Ecos (ecospy 0.7.2, FMI 2.0 and 3.0), FMU Manipulation
 Toolbox 2.0 (its checker on both FMUs, and a container of two Pendulums run in fmpy). Each
-engine runs in its own process (tests/engine_runs.py). The tests of the engines' known
+engine runs in its own process (tests/helpers/engine_runs.py). The tests of the engines' known
 defects (docs/importers.md) check this project's workaround, not the defect itself: each passes
 while the defect is there and keeps passing the day the engine is fixed, so a fixed upstream
 does not turn CI red.

@@ -230,6 +230,6 @@ def test_the_records_floor_is_the_fmus() -> None:
 
     from pendulum_fmu.output.experiment_record import TOLERANCE_FLOOR
 
-    header = (Path(__file__).resolve().parents[1] / "fmu_src" / "solvers" / "integrator.h").read_text()
+    header = (Path(__file__).resolve().parents[2] / "fmu_src" / "solvers" / "integrator.h").read_text()
     match = re.search(r"#define INTEGRATOR_TOLERANCE_FLOOR (\S+)", header)
     assert match is not None and float(match.group(1)) == TOLERANCE_FLOOR

@@ -27,7 +27,7 @@ import pytest
 
 pytestmark = pytest.mark.slow
 
-REPO = Path(__file__).resolve().parents[1]
+REPO = Path(__file__).resolve().parents[2]
 DOCS = REPO / "docs"
 PAGES = sorted(p.stem for p in DOCS.glob("*.md"))
 # The pages whose formulas are LaTeX: each must come out as MathML (a page may gain formulas;

@@ -5,7 +5,7 @@ core is not pinned, every pin of the lock lies in its range, the extras' modules
 extras' distributions, and a command whose extra is missing (hidden here through
 ``sys.modules``) says in one line which to install, with exit code 2, before any work.
 
-The slow checks install the wheel of ``tests/test_wheel_install.py`` (conftest's
+The slow checks install the wheel of ``tests/package/test_wheel_install.py`` (conftest's
 ``built_wheel``) with its core dependencies only, constrained to the lock's versions, into
 ``build/wheel-core-venv`` (kept while the lock and the wheel's requirements are unchanged), and
 run ``judge``, ``simulate``, ``compare``, ``study`` and ``exact()`` there from an empty folder;
@@ -35,7 +35,7 @@ from pendulum_fmu import exact
 from pendulum_fmu.cli.extras import EXTRAS, extra_line
 from pendulum_fmu.cli.main import main
 
-REPO = Path(__file__).resolve().parents[1]
+REPO = Path(__file__).resolve().parents[2]
 PROJECT = tomllib.loads((REPO / "pyproject.toml").read_text(encoding="utf-8"))["project"]
 LOCK = REPO / "python" / "requirements.lock"
 CORE_VENV = REPO / "build" / "wheel-core-venv"

@@ -20,7 +20,7 @@ from pathlib import Path
 
 import pytest
 
-REPO = Path(__file__).resolve().parents[1]
+REPO = Path(__file__).resolve().parents[2]
 PACKAGE = REPO / "python" / "pendulum_fmu"
 FMU_SRC = REPO / "fmu_src"
 BUILD = REPO / "build"

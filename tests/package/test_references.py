@@ -2,7 +2,7 @@
 
 Every repository path written in the docs, the front pages and the sources' comments and
 docstrings (``fmu_src/math/exact.c``, ``docs/certificate.md``; braces such as
-``fmu_src/math/exact.{h,c}`` and globs such as ``tests/test_*.py`` expanded) names a file or
+``fmu_src/math/exact.{h,c}`` and globs such as ``tests/fmu/test_*.py`` expanded) names a file or
 folder of this checkout; so does every Markdown page named by its bare name (``certificate.md``).
 No text points into one machine's own folders (an absolute path under /work or /home), and no
 text says "issue 12" or "the issue's case": a reader has no tracker to look the number up in, so
@@ -18,7 +18,7 @@ import tokenize
 from functools import cache
 from pathlib import Path
 
-REPO = Path(__file__).resolve().parents[1]
+REPO = Path(__file__).resolve().parents[2]
 
 SKIPPED_FOLDERS = {".git", ".venv", "out", "site", "__pycache__", ".mypy_cache", ".ruff_cache", ".pytest_cache",
                    ".hypothesis", "img"}
@@ -119,10 +119,10 @@ def test_the_scan_sees_the_sources_and_the_docs() -> None:
 
 def test_the_finders_catch_what_they_must() -> None:
     """Each finder on the kinds of text it must catch, and on text it must let pass."""
-    assert named_paths("see fmu_src/exact.{h,c}, tests/test_*.py and `docs/math.md`.") == [
-        "fmu_src/exact.h", "fmu_src/exact.c", "tests/test_*.py", "docs/math.md"]
+    assert named_paths("see fmu_src/exact.{h,c}, tests/fmu/test_*.py and `docs/math.md`.") == [
+        "fmu_src/exact.h", "fmu_src/exact.c", "tests/fmu/test_*.py", "docs/math.md"]
     assert named_paths("build/Pendulum.fmu, python/pendulum_fmu/__init__.py") == ["python/pendulum_fmu/__init__.py"]
-    assert not exists("fmu_src/exact.h") and exists("fmu_src/math/exact.h") and exists("tests/test_*.py")
+    assert not exists("fmu_src/exact.h") and exists("fmu_src/math/exact.h") and exists("tests/fmu/test_*.py")
     assert exists("fmi3/common.c") and exists("tests/c/test_fmi_api") and not exists("tests/c/test_nothing")
     assert not exists("tests/test_nothing_*.py")
     assert MARKDOWN_NAME.findall("the bound (BOUND.md), docs/math.md") == ["BOUND.md"]

@@ -12,7 +12,7 @@ from pathlib import Path
 import pytest
 import setuptools
 
-REPO = Path(__file__).resolve().parents[1]
+REPO = Path(__file__).resolve().parents[2]
 BUILD_OUTPUT = ("[  3%] Building C object fmu_src/math/dd.c.o", "[ 40%] zig cc -target x86_64-windows-gnu: win64/x.dll",
                 "[ 41%] Linking C shared library libPendulum.so", "[ 90%] Packing Pendulum.fmu",
                 "[100%] Built target fmu", "build/Pendulum.fmu: binaries/linux64/Pendulum.so")

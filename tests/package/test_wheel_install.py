@@ -20,7 +20,7 @@ import pytest
 
 pytestmark = pytest.mark.slow
 
-REPO = Path(__file__).resolve().parents[1]
+REPO = Path(__file__).resolve().parents[2]
 
 
 def _run(command: list[str], cwd: Path, env: dict[str, str] | None = None,

@@ -1,4 +1,4 @@
-"""The split judge against its held-out corpus (tests/split_corpus.py): masters written without
+"""The split judge against its held-out corpus (tests/helpers/split_corpus.py): masters written without
 the package's master code, honest ones and planted defects of every kind, at several H, start
 states, column layouts and prints.
 

@@ -84,7 +84,7 @@ def test_model_descriptions(split_dirs: dict[str, Path], version: str) -> None:
         assert md.defaultExperiment.startTime in ("0", 0, 0.0) or float(md.defaultExperiment.startTime) == 0
         assert float(md.defaultExperiment.stopTime) == 10 and float(md.defaultExperiment.stepSize) == 0.01
         assert md.coSimulation.canHandleVariableCommunicationStepSize
-        # FMU states, for a master that rolls a step back (tests/test_split_states.py)
+        # FMU states, for a master that rolls a step back (tests/split/test_split_states.py)
         assert md.coSimulation.canGetAndSetFMUstate and md.coSimulation.canSerializeFMUstate
     v = {var.name: var for var in body.modelVariables}
     assert (v["alpha"].causality, v["alpha"].valueReference, float(v["alpha"].start)) == ("input", 16, 0.0)

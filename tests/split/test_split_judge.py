@@ -1,6 +1,6 @@
 """``pendulum-fmu judge RESULT --system split``: files the judge did not make itself.
 
-The files come from tests/split_closed_form.py and tests/split_corpus.py (masters written again
+The files come from tests/helpers/split_closed_form.py and tests/helpers/split_corpus.py (masters written again
 without the FMUs or the package's master code, with planted defects), at other macro steps,
 start values, column names and prints. Three answers are checked apart: conformance (each
 planted defect named with its evidence, honest masters conformant), identification (the
@@ -30,7 +30,7 @@ OMEGA0 = 0.5
 L = 2.0
 SSP_THETA0 = 1.3089969389957472
 SIX = [m for m in MASTERS if m.scheme in ("jacobi", "gauss-seidel")]  # the non-iterating masters
-"""The masters tests/split_closed_form.py writes again (a master added to the registry is judged,
+"""The masters tests/helpers/split_closed_form.py writes again (a master added to the registry is judged,
 but not written again here)."""
 
 

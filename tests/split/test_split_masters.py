@@ -1,7 +1,7 @@
 """The reference masters of pendulum_fmu.split.masters (docs/masters.md).
 
 They drive the real PendulumBody and PendulumGravity FMUs through fmpy; here they are held
-against the same masters written without the FMUs (tests/split_closed_form.py), against the
+against the same masters written without the FMUs (tests/helpers/split_closed_form.py), against the
 exact pendulum (Body's theta_exact and pendulum_fmu.exact), and their orders are measured:
 halving H halves the error of a zero-order-hold master (order 1 within 0.2), extrapolation
 from output derivatives gives order 2, input interpolation order 3, and strong coupling (each

@@ -24,6 +24,7 @@ import numpy as np
 import pytest
 from fmpy import extract
 
+from mpmath_pendulum import DIGITS, true_state
 from pendulum_fmu.cli.main import main
 from pendulum_fmu.errors import UsageError
 from pendulum_fmu.fmu.runner import FmuRunner
@@ -31,7 +32,6 @@ from pendulum_fmu.spec import CS_SOLVERS, Method, Pendulum, TimeGrid
 from pendulum_fmu.study.hard_cases import hard_cases
 from pendulum_fmu.study.speed import LEVELS
 from pendulum_fmu.study.tradeoff import cost_to_reach, pareto_front
-from test_certificate_edges import DIGITS, true_state
 
 AMPLITUDES = (75.0, 80.0, 85.0, 90.0)
 GRID = TimeGrid(10, "periods", 50)

@@ -26,7 +26,7 @@ from junit_schema import properties
 from pendulum_fmu.judge.experiment import read_ref_opt
 from pendulum_fmu.suite.cases import SPLIT_STEPS, all_cases, read_data, select, split_cases
 
-REPO = Path(__file__).resolve().parents[1]
+REPO = Path(__file__).resolve().parents[2]
 FOLDER = "extra/org.fmi-standard.fmi-ls-ref/"
 OUTPUTS = ["theta", "omega", "theta_exact", "omega_exact"]
 

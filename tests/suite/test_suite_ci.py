@@ -18,7 +18,7 @@ import yaml
 from junit_schema import check as check_junit
 from pendulum_fmu.suite.cases import all_cases
 
-REPO = Path(__file__).resolve().parents[1]
+REPO = Path(__file__).resolve().parents[2]
 
 
 def _blocks() -> list[dict]:

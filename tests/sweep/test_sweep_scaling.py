@@ -1,6 +1,6 @@
 """The sweep's tasks and what ``bench sweep`` prints: the tasks it sends for a given run cost,
 the dealing at any cost, the scheduler's cost per task measured, and the benchmark's table.
-No test here asserts a timing (tests/test_no_timed_tests.py): the speed-up of 2 workers over 1,
+No test here asserts a timing (tests/package/test_no_timed_tests.py): the speed-up of 2 workers over 1,
 the cost per task and the many-core figures are what ``pendulum-fmu bench sweep`` and
 ``scripts/measure-many-cores.sh`` print."""
 
