@@ -6,7 +6,9 @@ names. Checked here for the Python package ``python/pendulum_fmu`` (imports, inc
 inside functions) and for the C sources ``fmu_src/`` (``#include`` lines, and which
 compilation unit calls which: the symbols each object file of the build leaves undefined
 against those another defines, read with ``nm``). Each checker is first run on a small
-example with a circle, so that a checker which finds nothing cannot pass unnoticed.
+example with a circle, so that a checker which finds nothing cannot pass unnoticed. The
+tests themselves keep one folder per thing tested and their shared modules in ``tests/helpers/``
+(:func:`misplaced_test_files`, checked on an example too).
 """
 
 from __future__ import annotations
@@ -263,3 +265,48 @@ def test_fmu_src_file_names_are_unique_within_an_fmu(layer: str) -> None:
     names = [p.name for p in FMU_SRC.glob("*/*") if p.suffix in (".c", ".h") and p.parent.name != other]
     assert len(names) > 20, "fmu_src was not found"
     assert sorted(n for n in set(names) if names.count(n) > 1) == []
+
+
+# --- tests ---------------------------------------------------------------------------------------
+TESTS = REPO / "tests"
+
+
+def misplaced_test_files(root: Path) -> list[str]:
+    """The Python files of ``root`` (a ``tests/`` folder) out of its layout: a file at the top
+    other than ``conftest.py``, a test module in ``helpers/`` or a helper outside it, a test
+    module deeper than one folder, and test modules of one name in two folders (pytest imports
+    each by its name: the second would not be collected)."""
+    found = []
+    seen: dict[str, str] = {}
+    for path in sorted(root.rglob("*.py")):
+        where = path.relative_to(root)
+        folder = where.parts[0] if len(where.parts) > 1 else ""
+        is_test = path.name.startswith("test_")
+        if where.parts[0] == "c":
+            continue
+        if not folder and path.name != "conftest.py":
+            found.append(f"{where}: at the top of tests/ (a test goes in a folder by what it tests)")
+        elif folder == "helpers" and is_test:
+            found.append(f"{where}: a test module among the helpers")
+        elif folder and folder != "helpers" and not is_test:
+            found.append(f"{where}: a shared module outside tests/helpers/")
+        elif len(where.parts) > 2:
+            found.append(f"{where}: more than one folder deep")
+        if is_test and path.name in seen:
+            found.append(f"{where}: the same name as {seen[path.name]}")
+        seen.setdefault(path.name, str(where))
+    return found
+
+
+def test_tests_checker_finds_misplaced_files(tmp_path: Path) -> None:
+    for name in ("conftest.py", "test_top.py", "helpers/cases.py", "helpers/test_in_helpers.py",
+                 "fmu/test_a.py", "fmu/cases.py", "judge/test_a.py", "judge/deep/test_b.py", "c/x.py"):
+        (tmp_path / name).parent.mkdir(parents=True, exist_ok=True)
+        (tmp_path / name).write_text("")
+    assert [line.split(":")[0] for line in misplaced_test_files(tmp_path)] == [
+        "fmu/cases.py", "helpers/test_in_helpers.py", "judge/deep/test_b.py", "judge/test_a.py", "test_top.py"]
+
+
+def test_tests_are_in_folders_by_what_they_test() -> None:
+    assert len(list(TESTS.glob("*/test_*.py"))) > 50, "tests/ was not found"
+    assert misplaced_test_files(TESTS) == []
