@@ -58,7 +58,7 @@ while(FMU_CROSS_TARGETS)
   cross_shared_library(lib_${subdir} TARGET ${zig_target} SUBDIR ${subdir} ${fmu_cross_common})
   list(APPEND FMU_BINARY_DEPENDS ${lib_${subdir}})
 endwhile()
-# ... and what contraction would change (tests/platform_runs.py measures it): a*b+c fused
+# ... and what contraction would change (tests/helpers/platform_runs.py measures it): a*b+c fused
 # into an FMA on arm64, and on x86_64 with FMA hardware (x86-64-v3, Haswell and later).
 cross_shared_library(lib_contract_arm64 TARGET ${ZIG_LINUX_ARM64} SUBDIR aarch64-linux-contract
                      FLAGS -ffp-contract=fast ${fmu_cross_common})

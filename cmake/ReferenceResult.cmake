@@ -21,7 +21,7 @@ endforeach()
 set(REFERENCE_START ${REFERENCE_startTime})
 set(REFERENCE_STOP ${REFERENCE_stopTime})
 # The reference on the experiment's output grid: (stopTime - startTime) / stepSize intervals
-# (20 / 0.03125; tests/test_reference_result.py checks the CSV's times against the experiment)
+# (20 / 0.03125; tests/fmu/test_reference_result.py checks the CSV's times against the experiment)
 set(REFERENCE_INTERVALS 640)
 set(REFERENCE_LS_VERSION 1.0.0-beta.1)
 set(REFERENCE_DIR ${CMAKE_CURRENT_BINARY_DIR}/reference/org.fmi-standard.fmi-ls-ref)

@@ -7,7 +7,7 @@ Layout (<mach-o/fat.h>, all fields big-endian uint32): the header ``FAT_MAGIC, n
 then one ``fat_arch`` per slice ``cputype, cpusubtype, offset, size, align`` (align as a power
 of two), then each slice at its aligned offset. Slices are ordered by alignment and aligned
 to the page size of their architecture (x86_64 4 KiB, arm64 16 KiB), as llvm-lipo does, so
-the output is byte-identical to ``llvm-lipo -create`` (tests/test_platforms.py checks that).
+the output is byte-identical to ``llvm-lipo -create`` (tests/fmu/test_platforms.py checks that).
 """
 
 from __future__ import annotations

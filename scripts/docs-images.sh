@@ -6,7 +6,7 @@
 #   bench_wp_P1.png    pendulum-fmu bench solvers --problems P1 --quick (the work-precision figure)
 #   masters_wp.png     pendulum-fmu bench masters --no-engines --plot (the split pendulum's masters)
 # then made small for the repository (256 colours, at most 1400 px wide; each < 150 kB,
-# tests/test_docs_render.py checks it). About 3 minutes on two cores; run it after a change to
+# tests/package/test_docs_render.py checks it). About 3 minutes on two cores; run it after a change to
 # the figure code and commit docs/img/. Needs .venv and the built FMU (bash scripts/study.sh makes
 # both) and build/tests/c/bench_solvers (bash scripts/build-fmu.sh).
 set -euo pipefail

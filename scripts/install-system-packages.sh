@@ -4,7 +4,7 @@
 # mingw-w64 + wine64 (the win64 binary, built and run), gcc-aarch64 + qemu-user (the arm64
 # code, built and run), llvm (llvm-lipo/llvm-nm/llvm-objdump to inspect the macOS binary),
 # libgsl-dev (GSL, timed beside the exact port by tests/c/bench_exact), chromium (headless
-# screenshots of every documentation page, tests/test_docs_render.py) and fonts-dejavu-extra
+# screenshots of every documentation page, tests/package/test_docs_render.py) and fonts-dejavu-extra
 # (DejaVu Math TeX Gyre: a font with a MATH table, with which Chromium stretches brackets).
 set -euo pipefail
 packages=(cmake gcc python3-venv valgrind clang lld libclang-rt-14-dev llvm libgsl-dev

@@ -2,7 +2,7 @@
 
 The formulas are turned into MathML while the site is built (``latex2mathml``), so the pages
 need no script and no network to show them: browsers render MathML natively (Chromium since
-version 109, Firefox, Safari). ``tests/test_docs_render.py`` builds the site and checks that
+version 109, Firefox, Safari). ``tests/package/test_docs_render.py`` builds the site and checks that
 every page with maths carries MathML and no ``$`` left over, in a headless Chromium.
 
 - ``$$`` on a line of its own opens a displayed formula and the next line holding only ``$$``

@@ -198,7 +198,7 @@ Status instance_do_step(Instance *inst, const char *function, double point, doub
  * with a warning (instance/calls.c). */
 #define CERTIFICATE_FACTOR 100.0
 /* The exact port's error bound relative to max(1, |theta|) and max(w0, |omega|): what
- * tests/test_exact_mpmath.py and tests/test_exact_properties.py assert against mpmath at 50
+ * tests/exact/test_exact_mpmath.py and tests/exact/test_exact_properties.py assert against mpmath at 50
  * digits in every regime (5e-14; measured worst 8.6e-15, docs/math.md). */
 #define CERTIFICATE_EXACT_ERROR 5e-14
 /* The bound's factor at tolerance tol: CERTIFICATE_FACTOR tol - CERTIFICATE_EXACT_ERROR. */

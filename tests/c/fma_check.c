@@ -1,5 +1,5 @@
 /* fma_check.c: prints a, b, c and the C library's fma(a, b, c) for pseudo-random cases, as
- * IEEE 754 bit patterns, so tests/platform_runs.py can check each result against the exactly
+ * IEEE 754 bit patterns, so tests/helpers/platform_runs.py can check each result against the exactly
  * rounded a*b + c (Python fractions). The FMU relies on a correctly rounded fma (C11 7.12.13.1:
  * "computes (x*y)+z, rounded as one ternary operation"): integrator.c forms the exact residual
  * g - (g/L) L with it, and dd.h and exact.c form exact products with it where the platform has

@@ -1,6 +1,6 @@
 /* fmu_results.c: the seed's runs through the FMI functions of one Pendulum binary, printed
  * bit for bit, so that the same program built for another platform (win64 under wine,
- * aarch64 under qemu) can be compared with the linux64 binary (tests/platform_runs.py).
+ * aarch64 under qemu) can be compared with the linux64 binary (tests/helpers/platform_runs.py).
  *
  * Released from rest at 75, 80, 85 and 90 deg, L = 1 m, g = 9.81 m/s2, the default solver,
  * 10 periods with 50 communication steps a period. One line per step:

@@ -2,7 +2,7 @@
  *   |theta - theta_exact| <= 100 tol max(1, |theta_exact|),
  *   |omega - omega_exact| <= 100 tol max(w0, |omega_exact|),
  * recomputed here from the exact port (itself checked against mpmath at 50 digits by
- * tests/test_exact_mpmath.py), independently of instance/certificate.c's own arithmetic.
+ * tests/exact/test_exact_mpmath.py), independently of instance/certificate.c's own arithmetic.
  *
  * It drives the instance of the model core (the code both FMI layers call) with a logger of
  * its own, and checks

@@ -11,7 +11,7 @@
  *     in (0, 1); an FMU state that carries a tolerance below the floor is refused;
  *   - the bound leaves room for the exact port's own error: OK only where the distance to the
  *     exact port is within (100 tol - 5e-14) of the scale, so that the true error is within
- *     100 tol (the true error against mpmath: tests/test_certificate_edges.py).
+ *     100 tol (the true error against mpmath: tests/fmu/test_certificate_edges.py).
  *
  * Drives the instance of the model core (what both FMI layers call). */
 #include <float.h>

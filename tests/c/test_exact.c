@@ -5,7 +5,7 @@
  * separatrix 2 atan(sinh u); mpmath's ellipfun, ellipk, ellipf with the argument reduced by
  * the period in mpmath), at the same binary inputs (theta0, omega0, w0 = sqrt(g/L) rounded
  * as in the FMU, t0, t), and printed with 17 significant digits. The same closed form is
- * checked against mpmath.odefun (Taylor integration of the ODE) in tests/test_exact_mpmath.py.
+ * checked against mpmath.odefun (Taylor integration of the ODE) in tests/exact/test_exact_mpmath.py.
  * Prints one summary line; exit status 0 iff every check passed. */
 #include <float.h>
 #include <math.h>

@@ -3,7 +3,7 @@
  * 1e-4 .. 1e-10, at rest and moving, small and large amplitudes, fast rotation, and states
  * down to 1e-6 (in m1, the complementary parameter) from the separatrix on both sides.
  * The reference is the exact port (fmu_src/math/exact.c, itself checked against mpmath at 50
- * digits by tests/test_exact_mpmath.py and tests/test_exact_edges.py), ~1e-14 here.
+ * digits by tests/exact/test_exact_mpmath.py and tests/exact/test_exact_edges.py), ~1e-14 here.
  *
  * Run with an argument to print the table of error / tol per solver and state. */
 #include <math.h>

@@ -2,7 +2,7 @@
 
 The same calls as ``fmu_src/libs/driver_lib/pendulum_driver.c``, in the same order, through ctypes
 prototypes of the FMU's own functions, so that a run gives the same numbers bit for bit
-(``tests/test_driver.py`` checks it): per point, DoStep from the previous time (none at point
+(``tests/fmu/test_driver.py`` checks it): per point, DoStep from the previous time (none at point
 0) and one GetReal (FMI 2.0) or GetFloat64 (FMI 3.0) of every recorded output straight into
 the row. Every status is checked as the C loop checks it; :class:`PythonStretch` answers
 what ``pendulum_drive`` writes into its outcome. The arguments of each call are plain

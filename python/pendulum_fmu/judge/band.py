@@ -7,7 +7,7 @@ reference's range (of ``|value|`` when the signal is constant, ``0.5`` when it i
 passes a signal when at most ``LIMIT`` of the result's rows lie outside that band (linearly
 interpolated to the rows' times; rows outside the reference's span are not counted). The
 same rule is written here with numpy alone, in O(rows), so that it costs little on a file of
-millions of rows; ``tests/test_cross_check.py`` checks that it agrees with fmpy's.
+millions of rows; ``tests/judge/test_cross_check.py`` checks that it agrees with fmpy's.
 
 Here the reference is the exact solution at the file's own times, so the check shows what
 the loose rule lets through: it is reported with the status ``info`` and never decides.

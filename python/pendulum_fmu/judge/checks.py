@@ -32,7 +32,7 @@ ME_FACTOR = 300.0
 max(1, |theta|), max(w0, |omega|)) per natural period 2 pi / w0, propagated by the pendulum's
 linearised flow and accumulated (:mod:`pendulum_fmu.judge.sensitivity`), plus 300 tol at the
 output time. Calibrated on CVODE, DOP853, LSODA, Radau and RK45 at their own tolerances
-(tests/me_bound_table.py, docs/importers.md, "The bound")."""
+(tests/helpers/me_bound_table.py, docs/importers.md, "The bound")."""
 SPIKE_RATIO = 100.0
 """A value whose error stands this many times above its neighbours' errors is isolated."""
 NEIGHBOURS = 3

@@ -36,7 +36,7 @@ RATIO_SLACK = 2e-4
 relative residual, is the FMUs agreeing (or a sign error alone): an honest master's mean input
 differs from the Simpson mean of F by its coupling error, O(H^p), which the fit's terms in h dF/dt
 and h^2 d2F/dt2 take up but for a bias of up to 20 times the residual (measured on the tuning
-part of tests/split_corpus.py: 1.1e-3 for a ramp extrapolated from past values at H = 0.02,
+part of tests/helpers/split_corpus.py: 1.1e-3 for a ramp extrapolated from past values at H = 0.02,
 residual 1.5e-4)."""
 RESIDUAL_FACTOR = 30.0
 """See :data:`RATIO_SLACK`."""

@@ -227,7 +227,7 @@ double)."""
 
 P2_TOLS = 2.0
 """How many tol P2's error may reach: the bar of tests/c/test_integrators.c and
-tests/test_solvers_fmu.py (omega's absolute tolerance is tol w0, the same at every scale, which
+tests/fmu/test_solvers_fmu.py (omega's absolute tolerance is tol w0, the same at every scale, which
 puts rkn at 1.02 tol at tol 1e-7 on P2)."""
 
 
