@@ -41,6 +41,22 @@
 #include <stdint.h>
 #include <string.h>
 
+#include "exact_fma.h"
+
+/* The baseline build hands its entry points to the fma build (exact_fma.c) on a processor
+ * with an fma: the same bits, fewer operations per two-product (exact_fma.h). */
+#if defined(PENDULUM_EXACT_FMA_BUILD) && !defined(PENDULUM_EXACT_FMA_PASS)
+#define EXACT_HANDS_ON_TO_FMA 1
+int pendulum_exact_init_fma(PendulumExact *ex, double theta0, double omega0, double w0, double t0);
+int pendulum_exact_init_gl_fma(PendulumExact *ex, double theta0, double omega0, double g, double L, double t0);
+void pendulum_exact_eval_fma(const PendulumExact *ex, double t, double *theta, double *omega);
+void pendulum_exact_sin_cos_fma(const PendulumExact *ex, double t, double *sin_theta, double *cos_theta);
+void pendulum_exact_eval_many_fma(const PendulumExact *ex, size_t n, const double *t, double *theta,
+                                  double *omega);
+/* CPUID's fma flag, set by libgcc only where the operating system saves the AVX state */
+#define EXACT_FMA_HERE() __builtin_cpu_supports("fma")
+#endif
+
 #define PI_HI   DD_PI_HI
 #define PI_LO   DD_PI_LO
 #define PI_LOLO DD_PI_LOLO
@@ -521,6 +537,11 @@ static int exact_init_dd(PendulumExact *ex, double theta0, double omega0, Double
 
 int pendulum_exact_init(PendulumExact *ex, double theta0, double omega0, double w0, double t0)
 {
+#ifdef EXACT_HANDS_ON_TO_FMA
+    if (EXACT_FMA_HERE()) {
+        return pendulum_exact_init_fma(ex, theta0, omega0, w0, t0);
+    }
+#endif
     if (ex == NULL || !isfinite(theta0) || !isfinite(omega0) || !isfinite(w0) || !isfinite(t0)
         || !(w0 > 0.0)) {
         return -1;
@@ -530,6 +551,11 @@ int pendulum_exact_init(PendulumExact *ex, double theta0, double omega0, double 
 
 int pendulum_exact_init_gl(PendulumExact *ex, double theta0, double omega0, double g, double L, double t0)
 {
+#ifdef EXACT_HANDS_ON_TO_FMA
+    if (EXACT_FMA_HERE()) {
+        return pendulum_exact_init_gl_fma(ex, theta0, omega0, g, L, t0);
+    }
+#endif
     if (ex == NULL || !isfinite(theta0) || !isfinite(omega0) || !isfinite(t0) || !isfinite(g)
         || !isfinite(L) || !(g > 0.0) || !(L > 0.0)) {
         return -1;
@@ -614,7 +640,7 @@ static double phase_quarters_far(const PendulumExact *ex, DoubleDouble tau, Doub
 static inline double phase_near(const PendulumExact *ex, double tau_hi, double tau_lo, double x_hi,
                                 double *quarters)
 {
-#ifdef FP_FAST_FMA
+#if defined(FP_FAST_FMA) || defined(PENDULUM_DD_FMA)
     const double x_lo = fma(ex->rho_hi, tau_hi, -x_hi);
 #else
     const double tau_split = 134217729.0 * tau_hi;          /* Veltkamp split of tau_hi */
@@ -707,6 +733,12 @@ static inline void libration_angle_omega(const PendulumExact *ex, EllipticHomoge
 
 void pendulum_exact_eval(const PendulumExact *ex, double t, double *theta, double *omega)
 {
+#ifdef EXACT_HANDS_ON_TO_FMA
+    if (EXACT_FMA_HERE()) {
+        pendulum_exact_eval_fma(ex, t, theta, omega);
+        return;
+    }
+#endif
     double angle, om, f = 0.0;
     DoubleDouble n = dd_of(0.0);
     DoubleDouble winding = dd_of(0.0);   /* half turns of a rotation since t0: direction N */
@@ -865,6 +897,12 @@ static int eval_libration_lanes(const PendulumExact *ex, const double *t, double
 
 void pendulum_exact_eval_many(const PendulumExact *ex, size_t n, const double *t, double *theta, double *omega)
 {
+#ifdef EXACT_HANDS_ON_TO_FMA
+    if (EXACT_FMA_HERE()) {
+        pendulum_exact_eval_many_fma(ex, n, t, theta, omega);
+        return;
+    }
+#endif
     size_t i = 0;
     if (ex->regime == PENDULUM_LIBRATION && ex->ell.levels <= ELLIPTIC_LEVELS_WITHOUT_RESCALE
         && fabs(ex->theta_turns) < 0x1p50) {
@@ -912,6 +950,12 @@ double pendulum_exact_period(const PendulumExact *ex)
 
 void pendulum_exact_sin_cos(const PendulumExact *ex, double t, double *sin_theta, double *cos_theta)
 {
+#ifdef EXACT_HANDS_ON_TO_FMA
+    if (EXACT_FMA_HERE()) {
+        pendulum_exact_sin_cos_fma(ex, t, sin_theta, cos_theta);
+        return;
+    }
+#endif
     double y, x;   /* sin and cos of the half angle (up to a common sign), or of am v (rotation) */
     double sign = 1.0;
 
