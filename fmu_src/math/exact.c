@@ -61,6 +61,18 @@ void pendulum_exact_eval_many_fma(const PendulumExact *ex, size_t n, const doubl
 #define PI_LO   DD_PI_LO
 #define PI_LOLO DD_PI_LOLO
 
+/* The larger and the smaller of two numbers that are not NaN: fmax and fmin without their NaN
+ * rules, which keep gcc from inlining them (a libm call each). */
+static inline double larger(double a, double b)
+{
+    return a > b ? a : b;
+}
+
+static inline double smaller(double a, double b)
+{
+    return a < b ? a : b;
+}
+
 /* x - j (2 pi), 2 pi in three parts, the two leading products exact. */
 static DoubleDouble subtract_turns(DoubleDouble x, double j)
 {
@@ -347,7 +359,7 @@ static void locate_separatrix(double theta0, double omega0, DoubleDouble w0, dou
                               InitialState *st)
 {
     const double half_speed = 0.5 * fabs(omega0);          /* |omega0| / 2, exact */
-    const int exponent = dd_frexp_exponent(fmax(w0.hi, half_speed));
+    const int exponent = dd_frexp_exponent(larger(w0.hi, half_speed));   /* w0 > 0 */
     st->exponent = exponent;
     st->w_n = dd_ldexp(w0, -exponent);
     st->hs_n = dd_scalbn(half_speed, -exponent);
@@ -384,8 +396,9 @@ static int init_libration(PendulumExact *e, double omega0, DoubleDouble w0, cons
         return 1;
     }
     e->regime = PENDULUM_LIBRATION;
-    const double k = hypot(s.hi, q.hi);        /* sqrt(m) = sqrt(s^2 + q^2), no underflow */
-    const double m = fmin(k * k, 1.0);
+    /* sqrt(m) = sqrt(s^2 + q^2) without underflow; from rest |s| itself (hypot(s, 0) = |s|) */
+    const double k = from_rest ? fabs(s.hi) : hypot(s.hi, q.hi);
+    const double m = smaller(k * k, 1.0);
     /* from rest (and not next to the separatrix) k' = sqrt(m1) = c itself */
     const int root_known = from_rest && !st->fine;
     if (elliptic_param_init_root(&e->ell, m, m1.hi, m1.lo, root_known ? &c : NULL) != 0) {
@@ -446,7 +459,7 @@ static int init_rotation(PendulumExact *e, double omega0, const InitialState *st
     }
     /* mu = 1/m = 1/(q^2 (1 + rho^2)). */
     const double w_hs = w_n.hi / hs_n;
-    const double mu = fmin(w_hs * w_hs / one_plus_rho2.hi, 1.0);
+    const double mu = smaller(w_hs * w_hs / one_plus_rho2.hi, 1.0);   /* finite: hs_n > 0 */
     if (elliptic_param_init(&e->ell, mu, mu1.hi, mu1.lo) != 0) {
         return -1;
     }
