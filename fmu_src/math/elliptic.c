@@ -19,23 +19,39 @@
 /* K and Carlson's R_F                                                                     */
 /* ------------------------------------------------------------------------------------- */
 
-/* K from k' = sqrt(m1) in double-double (k' > 0): K = (pi/2) / AGM(1, k').
+/* 1/pi in two parts (mpmath, 300 bits). */
+#define INV_PI_HI 0x1.45f306dc9c883p-2
+#define INV_PI_LO (-0x1.6b01ec5417056p-56)
+
+/* K and 1/K from k' = sqrt(m1) in double-double (k' > 0): K = (pi/2) / AGM(1, k'), and the
+ * descending Landen moduli k_{n+1} = (a_n - b_n)/(a_n + b_n), 1 - k_{n+1} = 2 b_n/(a_n + b_n)
+ * for n >= 1 read off the same means (A&S 16.12.1 with k_n = c_n/a_n, k'_n = b_n/a_n,
+ * A&S 17.6): the Landen chain costs no square root of its own. a_n - b_n comes from the
+ * double-double means (absolute error ~1e-31), so k_{n+1} keeps ~1e-23 relative wherever a
+ * level is needed (k_{n+1} > 1e-8 there). landen_k[i - 1], landen_1mk[i - 1] receive k_i for
+ * i = 2 .. the last iteration + 1 (at most cap entries).
  * The AGM runs in double-double until x = (a - b)/(a + b) <= 2^-15. For that close pair,
  * with c = (a + b)/2, AGM(a, b) = c AGM(1 + x, 1 - x) = c / 2F1(1/2, 1/2; 1; x^2)
  * (DLMF 19.8.5 with 19.5.1), so
- *   K = (pi/2) / AGM = (pi / (a + b)) (1 + x^2/4 + 9 x^4/64 + 25 x^6/256 + 1225 x^8/16384 + ...),
+ *   K = (pi/2) / AGM = (pi / (a + b)) (1 + S),  S = x^2/4 + 9 x^4/64 + 25 x^6/256 + 1225 x^8/16384,
  * the series of 2F1 (coefficients ((1/2)_n / n!)^2); the omitted terms are below
  * 0.061 x^10 < 2^-154. x is formed in double-double from a - b (a.hi - b.hi exact by
  * Sterbenz, a.lo - b.lo within 2^-106) and x^2/4 (below 2^-32) in double-double; the higher
- * terms (below 2^-62) need a double only. The quotient pi / (a + b) does not wait for x:
- * the two divisions run side by side. This saves one to two square-root steps over running
- * the means to |a - b| ~ 1e-17. */
-static DoubleDouble K_dd_of_root(DoubleDouble kc)
+ * terms (below 2^-62) need a double only. 1/K = ((a + b)/pi) / (1 + S) with
+ * 1/(1 + S) = 1 - S + S^2 - S^3 (S < 2^-32: the rest is below 2^-128): products only, so
+ * the callers' quotients by K (rates, phases, the bottom scale) become products. */
+static DoubleDouble K_dd_of_root(DoubleDouble kc, double *landen_k, double *landen_1mk, int cap,
+                                 DoubleDouble *inv_K)
 {
     DoubleDouble a = dd_of(1.0), b = kc;
     for (int i = 0; i < 64; ++i) {
         const DoubleDouble sum = dd_add(a, b);
         const double diff_hi = a.hi - b.hi;
+        if (i >= 1 && i <= cap) {
+            /* quotients of double-doubles (the heads alone drift by ulps), rounded once more */
+            landen_k[i] = dd_div(dd_two_sum(diff_hi, a.lo - b.lo), sum).hi;
+            landen_1mk[i] = dd_div(dd_two_sum(2.0 * b.hi, 2.0 * b.lo), sum).hi;
+        }
         if (fabs(diff_hi) <= 0x1p-15 * sum.hi) {
             const DoubleDouble base = dd_div(dd_fast_two_sum(DD_PI_HI, DD_PI_LO), sum);
             const DoubleDouble diff = dd_two_sum(diff_hi, a.lo - b.lo);
@@ -44,13 +60,34 @@ static DoubleDouble K_dd_of_root(DoubleDouble kc)
             const double t = x2.hi;
             const double higher = t * t * (9.0 / 64.0 + t * (25.0 / 256.0 + t * (1225.0 / 16384.0)));
             const DoubleDouble series = dd_add((DoubleDouble){0.25 * x2.hi, 0.25 * x2.lo},
-                                                      dd_of(higher));   /* 2F1 - 1 */
+                                                      dd_of(higher));   /* S = 2F1 - 1 */
+            const double s = series.hi;
+            const DoubleDouble inverse_series = dd_add(dd_of(1.0),
+                                                       dd_add(dd_neg(series), dd_of(s * s * (1.0 - s))));
+            *inv_K = dd_mul(dd_mul(sum, dd_fast_two_sum(INV_PI_HI, INV_PI_LO)), inverse_series);
             return dd_add(base, dd_mul(base, series));
         }
-        const DoubleDouble a_next = {0.5 * sum.hi, 0.5 * sum.lo};
-        b = dd_sqrt(dd_mul(a, b));
+        /* The next means as head + tail, the heads the plain double AGM (a short chain: an
+         * addition, a product, a square root), each tail the first-order correction that
+         * makes head + tail the mean of the double-double operands:
+         *   (a + b)/2:    head fl((a_h + b_h)/2), tail (e + a_t + b_t)/2, e the sum's error;
+         *   sqrt(a b):    head s = fl(sqrt(p)), p = fl(a_h b_h),
+         *                 tail ((p - s^2) + e' + a_h b_t + a_t b_h) / (2 s), e' the product's
+         *                 error, p - s^2 exact (two-product);
+         * the neglected terms (a_t b_t, the square of the root's relative correction) are
+         * below 2^-105 relative. The tails are not renormalised: |tail| stays within an ulp
+         * or so of the head, and their chain runs beside that of the heads. */
+        const DoubleDouble head_sum = dd_two_sum(a.hi, b.hi);
+        const DoubleDouble product = dd_two_prod(a.hi, b.hi);
+        const double root = sqrt(product.hi);
+        const DoubleDouble root_sq = dd_two_prod(root, root);
+        const double residual = ((product.hi - root_sq.hi) - root_sq.lo) + product.lo
+                                + (a.hi * b.lo + a.lo * b.hi);
+        const DoubleDouble a_next = {0.5 * head_sum.hi, 0.5 * (head_sum.lo + (a.lo + b.lo))};
+        b = (DoubleDouble){root, residual / (2.0 * root)};
         a = a_next;
     }
+    *inv_K = dd_of(NAN);
     return dd_of(NAN);
 }
 
@@ -101,10 +138,12 @@ double elliptic_RF(double x, double y, double z)
 
 int elliptic_param_init(EllipticParam *p, double m, double m1_hi, double m1_lo)
 {
-    return elliptic_param_init_root(p, m, m1_hi, m1_lo, NULL);
+    DoubleDouble inv_K;
+    return elliptic_param_init_root(p, m, m1_hi, m1_lo, NULL, &inv_K);
 }
 
-int elliptic_param_init_root(EllipticParam *p, double m, double m1_hi, double m1_lo, const DoubleDouble *root)
+int elliptic_param_init_root(EllipticParam *p, double m, double m1_hi, double m1_lo, const DoubleDouble *root,
+                             DoubleDouble *inv_K)
 {
     if (p == NULL || !(m >= 0.0 && m <= 1.0) || !(m1_hi >= 0.0 && m1_hi <= 1.0)
         || !isfinite(m1_lo) || !(fabs(m + m1_hi - 1.0) <= 1e-12)) {
@@ -135,32 +174,41 @@ int elliptic_param_init_root(EllipticParam *p, double m, double m1_hi, double m1
         q->bottom_scale = 1.0;
         q->bottom_m = 1.0;
         q->sqrt_k1 = 1.0;
+        *inv_K = dd_of(0.0);
         return 0;
     }
-    DoubleDouble K = K_dd_of_root(kc);
+    DoubleDouble K = K_dd_of_root(kc, q->landen_k, q->landen_1mk, ELLIPTIC_MAX_LEVELS - 1, inv_K);
     q->K_hi = K.hi;
     q->K_lo = K.lo;
-    q->inv_K = 1.0 / K.hi;
+    q->inv_K = 1.0 / K.hi;   /* as before: the correctly rounded 1/K.hi */
     q->K_head = dd_head26(K.hi);   /* top 26 bits of K_hi; K_tail = the rest, exact */
     q->K_tail = K.hi - q->K_head;
 
     /* Descending Landen sequence (A&S 16.12.1, DLMF 22.7.1; the AGM of A&S 16.4 normalised,
-     * k_n = c_n / a_n, k'_n = b_n / a_n):
-     *   k_{n+1} = (1 - k'_n) / (1 + k'_n) = m_n / (1 + k'_n)^2,
-     *   1 - k_{n+1} = 2 k'_n / (1 + k'_n),   k'_{n+1} = 2 sqrt(k'_n) / (1 + k'_n),
-     * each in the form that does not cancel. */
-    double kc_n = q->kc, m_n = m;
-    int n = 0;
-    while ((m_n > BOTTOM_M || n == 0) && n < ELLIPTIC_MAX_LEVELS) {   /* at least one level */
-        double one_plus_kc = 1.0 + kc_n;
-        double k_next = kc_n < 0.5 ? (1.0 - kc_n) / one_plus_kc
-                                   : m_n / (one_plus_kc * one_plus_kc);
-        q->landen_k[n] = k_next;
-        q->landen_1pk[n] = 1.0 + k_next;
-        q->landen_1mk[n] = 2.0 * kc_n / one_plus_kc;
-        kc_n = 2.0 * sqrt(kc_n) / one_plus_kc;
-        m_n = k_next * k_next;
+     * k_n = c_n / a_n, k'_n = b_n / a_n). The first level from k' and m in the form that does
+     * not cancel:
+     *   k_1 = (1 - k') / (1 + k') = m / (1 + k')^2,   1 - k_1 = 2 k' / (1 + k');
+     * the next ones were read off the means of K_dd_of_root (landen_k, landen_1mk from index 1).
+     * Levels while m_n = k_n^2 > BOTTOM_M (at least one); the means stop at k <= 2^-15, below
+     * sqrt(BOTTOM_M), so every level needed is there. */
+    {
+        const double kc_0 = q->kc, one_plus_kc = 1.0 + kc_0;
+        q->landen_k[0] = kc_0 < 0.5 ? (1.0 - kc_0) / one_plus_kc : m / (one_plus_kc * one_plus_kc);
+        q->landen_1mk[0] = 2.0 * kc_0 / one_plus_kc;
+    }
+    double m_n = q->landen_k[0] * q->landen_k[0];
+    int n = 1;
+    while (m_n > BOTTOM_M && n < ELLIPTIC_MAX_LEVELS) {
+        m_n = q->landen_k[n] * q->landen_k[n];
         ++n;
+    }
+    for (int i = 0; i < ELLIPTIC_MAX_LEVELS; ++i) {
+        if (i < n) {
+            q->landen_1pk[i] = 1.0 + q->landen_k[i];
+        } else {
+            q->landen_k[i] = 0.0;                 /* unused levels as before: k = 0 */
+            q->landen_1mk[i] = 1.0;
+        }
     }
     q->levels = n;
     q->sqrt_k1 = q->k / (1.0 + q->kc);   /* sqrt(k_1) = sqrt((1 - k')/(1 + k')) = k / (1 + k') */
@@ -171,7 +219,7 @@ int elliptic_param_init_root(EllipticParam *p, double m, double m1_hi, double m1
      * double-double instead of N rounded factors. */
     DoubleDouble K_bottom = dd_mul(dd_fast_two_sum(HALF_PI_HI, HALF_PI_LO),
                                           dd_of(1.0 + m_n * (0.25 + m_n * (9.0 / 64.0))));
-    q->bottom_scale = dd_div(K_bottom, K).hi;
+    q->bottom_scale = dd_mul(K_bottom, *inv_K).hi;
     return 0;
 }
 

@@ -378,7 +378,7 @@ static void locate_separatrix(double theta0, double omega0, DoubleDouble w0, dou
  * Returns 0, 1 when m1 underflowed (the caller treats it as the separatrix), -1 on failure.
  * *rate_n is the rate of u scaled by 2^-exponent. */
 static int init_libration(PendulumExact *e, double omega0, DoubleDouble w0, const InitialState *st,
-                          DoubleDouble *rate_n)
+                          DoubleDouble *rate_n, DoubleDouble *inv_K)
 {
     const DoubleDouble s = st->s, c = st->c;
     const int from_rest = omega0 == 0.0;
@@ -401,7 +401,7 @@ static int init_libration(PendulumExact *e, double omega0, DoubleDouble w0, cons
     const double m = smaller(k * k, 1.0);
     /* from rest (and not next to the separatrix) k' = sqrt(m1) = c itself */
     const int root_known = from_rest && !st->fine;
-    if (elliptic_param_init_root(&e->ell, m, m1.hi, m1.lo, root_known ? &c : NULL) != 0) {
+    if (elliptic_param_init_root(&e->ell, m, m1.hi, m1.lo, root_known ? &c : NULL, inv_K) != 0) {
         return -1;
     }
     e->m = m;
@@ -432,7 +432,8 @@ static int init_libration(PendulumExact *e, double omega0, DoubleDouble w0, cons
 
 /* Step 3b. Rotation (m1 < 0, omega0 != 0). Ratios to |omega0|/2: rho = s/|q|, gamma = c/|q| < 1
  * (hs_n > c w_n, and c >= ~1e-33, so hs_n is not tiny). */
-static int init_rotation(PendulumExact *e, double omega0, const InitialState *st, DoubleDouble *rate_n)
+static int init_rotation(PendulumExact *e, double omega0, const InitialState *st, DoubleDouble *rate_n,
+                         DoubleDouble *inv_K)
 {
     const DoubleDouble half = {0.5 * st->th.hi, 0.5 * st->th.lo};   /* exact */
     DoubleDouble s, c_again;
@@ -460,7 +461,7 @@ static int init_rotation(PendulumExact *e, double omega0, const InitialState *st
     /* mu = 1/m = 1/(q^2 (1 + rho^2)). */
     const double w_hs = w_n.hi / hs_n;
     const double mu = smaller(w_hs * w_hs / one_plus_rho2.hi, 1.0);   /* finite: hs_n > 0 */
-    if (elliptic_param_init(&e->ell, mu, mu1.hi, mu1.lo) != 0) {
+    if (elliptic_param_init_root(&e->ell, mu, mu1.hi, mu1.lo, NULL, inv_K) != 0) {
         return -1;
     }
     /* sqrt(m) w0 = |q| w0 sqrt(1 + rho^2) = (|omega0|/2) sqrt(1 + rho^2). */
@@ -480,18 +481,20 @@ static int init_rotation(PendulumExact *e, double omega0, const InitialState *st
     return 0;
 }
 
-/* Step 4. Rate and initial phase in quarter periods: rho = scale / K, x0 = u0 / K; the period
+/* Step 4. Rate and initial phase in quarter periods: rho = scale / K, x0 = u0 / K (products with
+ * 1/K in double-double, from elliptic_param_init_root); the period
  * 4K / w0 (libration) or 2K / rate (one revolution, rotation), all in double-double. A
  * libration released from rest starts at a turning point, x0 = +-1 exactly. */
-static void set_quarter_rates(PendulumExact *e, DoubleDouble rate_n, int exponent, int from_rest)
+static void set_quarter_rates(PendulumExact *e, DoubleDouble rate_n, int exponent, int from_rest,
+                              DoubleDouble inv_K)
 {
     const DoubleDouble K = {e->K_hi, e->K_lo};
-    const DoubleDouble rho = dd_ldexp(dd_div(rate_n, K), exponent);
+    const DoubleDouble rho = dd_ldexp(dd_mul(rate_n, inv_K), exponent);
     DoubleDouble x0;
     if (from_rest && e->regime == PENDULUM_LIBRATION && e->u0 != 0.0) {
         x0 = dd_of(e->u0 < 0.0 ? -1.0 : 1.0);
     } else {
-        x0 = dd_div(dd_of(e->u0), K);
+        x0 = dd_mul(dd_of(e->u0), inv_K);
     }
     e->rho_hi = rho.hi;
     e->rho_lo = rho.lo;
@@ -528,12 +531,12 @@ static int exact_init_dd(PendulumExact *ex, double theta0, double omega0, Double
     locate_separatrix(theta0, omega0, w0, g, L, &st);
     const double side = st.fine ? st.m1_fine.hi : st.gap.hi;   /* the sign of m1 */
 
-    DoubleDouble rate_n = dd_of(0.0);
+    DoubleDouble rate_n = dd_of(0.0), inv_K = dd_of(0.0);
     int status = 1;                        /* 1: the separatrix */
     if (side > 0.0) {
-        status = init_libration(&e, omega0, w0, &st, &rate_n);
+        status = init_libration(&e, omega0, w0, &st, &rate_n, &inv_K);
     } else if (side < 0.0) {
-        status = init_rotation(&e, omega0, &st, &rate_n);
+        status = init_rotation(&e, omega0, &st, &rate_n, &inv_K);
     }
     if (status < 0) {
         return -1;
@@ -541,7 +544,7 @@ static int exact_init_dd(PendulumExact *ex, double theta0, double omega0, Double
     if (status == 1) {
         init_separatrix(&e, st.s, st.c, omega0, w0);   /* also when m1 underflowed */
     } else {
-        set_quarter_rates(&e, rate_n, st.exponent, omega0 == 0.0);
+        set_quarter_rates(&e, rate_n, st.exponent, omega0 == 0.0, inv_K);
     }
     memcpy(ex, &e, sizeof e); /* bytewise, padding included: FMU states compare and checksum it
                                  (pendulum_exact_same, instance/state.c) */
