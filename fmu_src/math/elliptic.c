@@ -48,9 +48,16 @@ static DoubleDouble K_dd_of_root(DoubleDouble kc, double *landen_k, double *land
         const DoubleDouble sum = dd_add(a, b);
         const double diff_hi = a.hi - b.hi;
         if (i >= 1 && i <= cap) {
-            /* quotients of double-doubles (the heads alone drift by ulps), rounded once more */
-            landen_k[i] = dd_div(dd_two_sum(diff_hi, a.lo - b.lo), sum).hi;
-            landen_1mk[i] = dd_div(dd_two_sum(2.0 * b.hi, 2.0 * b.lo), sum).hi;
+            /* quotients of double-doubles (the heads alone drift by ulps) by Dekker's division
+             * with one shared reciprocal of sum.hi: q = fl(x.hi / sum.hi) approximately, then
+             * q + (x - q sum) / sum.hi, the remainder formed exactly (two-product) */
+            const double reciprocal = 1.0 / sum.hi;
+            const DoubleDouble num_k = dd_two_sum(diff_hi, a.lo - b.lo);
+            const double q_k = num_k.hi * reciprocal, q_1mk = 2.0 * b.hi * reciprocal;
+            const DoubleDouble p_k = dd_two_prod(q_k, sum.hi), p_1mk = dd_two_prod(q_1mk, sum.hi);
+            landen_k[i] = q_k + ((((num_k.hi - p_k.hi) - p_k.lo) + num_k.lo) - q_k * sum.lo) * reciprocal;
+            landen_1mk[i] = q_1mk + ((((2.0 * b.hi - p_1mk.hi) - p_1mk.lo) + 2.0 * b.lo) - q_1mk * sum.lo)
+                                    * reciprocal;
         }
         if (fabs(diff_hi) <= 0x1p-15 * sum.hi) {
             const DoubleDouble base = dd_div(dd_fast_two_sum(DD_PI_HI, DD_PI_LO), sum);
@@ -138,8 +145,14 @@ double elliptic_RF(double x, double y, double z)
 
 int elliptic_param_init(EllipticParam *p, double m, double m1_hi, double m1_lo)
 {
+    EllipticParam fresh;
+    memset(&fresh, 0, sizeof fresh);   /* padding too: the FMU checksums its states bytewise */
     DoubleDouble inv_K;
-    return elliptic_param_init_root(p, m, m1_hi, m1_lo, NULL, &inv_K);
+    if (p == NULL || elliptic_param_init_root(&fresh, m, m1_hi, m1_lo, NULL, &inv_K) != 0) {
+        return -1;
+    }
+    memcpy(p, &fresh, sizeof fresh);
+    return 0;
 }
 
 int elliptic_param_init_root(EllipticParam *p, double m, double m1_hi, double m1_lo, const DoubleDouble *root,
@@ -149,9 +162,8 @@ int elliptic_param_init_root(EllipticParam *p, double m, double m1_hi, double m1
         || !isfinite(m1_lo) || !(fabs(m + m1_hi - 1.0) <= 1e-12)) {
         return -1;
     }
-    /* written in place once the inputs are accepted (no copy) */
+    /* written in place once the inputs are accepted (no copy); the caller cleared its bytes */
     EllipticParam *q = p;
-    memset(q, 0, sizeof *q); /* padding too: the FMU checksums its states bytewise */
     DoubleDouble m1 = dd_two_sum(m1_hi, m1_lo);
     q->m = m;
     q->m1 = m1.hi;
