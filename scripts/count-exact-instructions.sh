@@ -2,7 +2,8 @@
 # Instructions per point of the exact port (docs/speed-exact.md), counted with valgrind as the
 # difference of two runs of build/tests/c/bench_exact --count (N and 2N points), which cancels
 # the start-up: for each amplitude, eval (scalar loop), batch (lock-step), gsl
-# (gsl_sf_elljac_e + atan2) and init (new state + one evaluation).
+# (gsl_sf_elljac_e + atan2), init (new state + one evaluation) and gsl_init (GSL's new state:
+# gsl_sf_ellint_Kcomp_e + gsl_sf_elljac_e + atan2).
 # Usage: bash scripts/count-exact-instructions.sh [N]   (default N = 4000)
 set -euo pipefail
 n="${1:-4000}"
@@ -11,13 +12,13 @@ count() {
     valgrind --tool=callgrind --callgrind-out-file=/dev/null "$bench" --count "$1" "$2" "$3" 2>&1 \
         | sed -n 's/.*I *refs: *\([0-9,]*\).*/\1/p' | tr -d ,
 }
-printf '%-12s %10s %10s %10s %10s\n' amplitude eval batch gsl init
+printf '%-12s %10s %10s %10s %10s %10s\n' amplitude eval batch gsl init gsl_init
 for amplitude in 10 90 170 179.9999; do
     row=()
-    for kind in eval batch gsl init; do
+    for kind in eval batch gsl init gsl_init; do
         one=$(count "$kind" "$n" "$amplitude")
         two=$(count "$kind" "$((2 * n))" "$amplitude")
         row+=("$(( (two - one) / n ))")
     done
-    printf '%-12s %10s %10s %10s %10s\n' "$amplitude" "${row[@]}"
+    printf '%-12s %10s %10s %10s %10s %10s\n' "$amplitude" "${row[@]}"
 done

@@ -64,7 +64,8 @@ static inline DoubleDouble dd_fast_two_sum(double a, double b)
     return r;
 }
 
-/* p + err = a * b exactly, p = fl(a b). With a hardware fma (FP_FAST_FMA, C11 7.12):
+/* p + err = a * b exactly, p = fl(a b). With a hardware fma (FP_FAST_FMA, C11 7.12, or
+ * PENDULUM_DD_FMA: the fma build of exact_fma.c):
  * err = fma(a, b, -p), exact by the single rounding. Otherwise Dekker's product (Dekker 1971,
  * mul12): Veltkamp's split of a and b into 26-bit halves, whose partial products are exact
  * (valid for |a|, |b| < 2^995). */
@@ -72,7 +73,7 @@ static inline DoubleDouble dd_two_prod(double a, double b)
 {
     DoubleDouble r;
     r.hi = a * b;
-#ifdef FP_FAST_FMA
+#if defined(FP_FAST_FMA) || defined(PENDULUM_DD_FMA)
     r.lo = fma(a, b, -r.hi);
 #else
     const double splitter = 134217729.0;          /* 2^27 + 1 */

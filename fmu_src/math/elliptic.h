@@ -82,8 +82,11 @@ int elliptic_param_init(EllipticParam *p, double m, double m1_hi, double m1_lo);
 
 /* The same with k' = sqrt(m1) given in double-double by the caller (root == NULL: formed
  * from m1), for a caller that has it without a square root (the pendulum from rest:
- * k' = cos(theta0/2)). */
-int elliptic_param_init_root(EllipticParam *p, double m, double m1_hi, double m1_lo, const DoubleDouble *root);
+ * k' = cos(theta0/2)); *inv_K receives 1/K in double-double (0 for m = 1), for callers that
+ * divide by K. Written in place: every byte of *p must be zero on entry (the caller cleared
+ * it, padding included, as the FMU checksums its states bytewise); on failure p is untouched. */
+int elliptic_param_init_root(EllipticParam *p, double m, double m1_hi, double m1_lo, const DoubleDouble *root,
+                             DoubleDouble *inv_K);
 
 /* Above this |z| the bottom level calls libm's sin and cos, below it trig_sincos_small
  * (trig.h: their Maclaurin series to z^17 and z^16, no range reduction). */

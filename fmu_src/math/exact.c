@@ -41,9 +41,37 @@
 #include <stdint.h>
 #include <string.h>
 
+#include "exact_fma.h"
+
+/* The baseline build hands its entry points to the fma build (exact_fma.c) on a processor
+ * with an fma: the same bits, fewer operations per two-product (exact_fma.h). */
+#if defined(PENDULUM_EXACT_FMA_BUILD) && !defined(PENDULUM_EXACT_FMA_PASS)
+#define EXACT_HANDS_ON_TO_FMA 1
+int pendulum_exact_init_fma(PendulumExact *ex, double theta0, double omega0, double w0, double t0);
+int pendulum_exact_init_gl_fma(PendulumExact *ex, double theta0, double omega0, double g, double L, double t0);
+void pendulum_exact_eval_fma(const PendulumExact *ex, double t, double *theta, double *omega);
+void pendulum_exact_sin_cos_fma(const PendulumExact *ex, double t, double *sin_theta, double *cos_theta);
+void pendulum_exact_eval_many_fma(const PendulumExact *ex, size_t n, const double *t, double *theta,
+                                  double *omega);
+/* CPUID's fma flag, set by libgcc only where the operating system saves the AVX state */
+#define EXACT_FMA_HERE() __builtin_cpu_supports("fma")
+#endif
+
 #define PI_HI   DD_PI_HI
 #define PI_LO   DD_PI_LO
 #define PI_LOLO DD_PI_LOLO
+
+/* The larger and the smaller of two numbers that are not NaN: fmax and fmin without their NaN
+ * rules, which keep gcc from inlining them (a libm call each). */
+static inline double larger(double a, double b)
+{
+    return a > b ? a : b;
+}
+
+static inline double smaller(double a, double b)
+{
+    return a < b ? a : b;
+}
 
 /* x - j (2 pi), 2 pi in three parts, the two leading products exact. */
 static DoubleDouble subtract_turns(DoubleDouble x, double j)
@@ -331,7 +359,7 @@ static void locate_separatrix(double theta0, double omega0, DoubleDouble w0, dou
                               InitialState *st)
 {
     const double half_speed = 0.5 * fabs(omega0);          /* |omega0| / 2, exact */
-    const int exponent = dd_frexp_exponent(fmax(w0.hi, half_speed));
+    const int exponent = dd_frexp_exponent(larger(w0.hi, half_speed));   /* w0 > 0 */
     st->exponent = exponent;
     st->w_n = dd_ldexp(w0, -exponent);
     st->hs_n = dd_scalbn(half_speed, -exponent);
@@ -350,7 +378,7 @@ static void locate_separatrix(double theta0, double omega0, DoubleDouble w0, dou
  * Returns 0, 1 when m1 underflowed (the caller treats it as the separatrix), -1 on failure.
  * *rate_n is the rate of u scaled by 2^-exponent. */
 static int init_libration(PendulumExact *e, double omega0, DoubleDouble w0, const InitialState *st,
-                          DoubleDouble *rate_n)
+                          DoubleDouble *rate_n, DoubleDouble *inv_K)
 {
     const DoubleDouble s = st->s, c = st->c;
     const int from_rest = omega0 == 0.0;
@@ -368,11 +396,12 @@ static int init_libration(PendulumExact *e, double omega0, DoubleDouble w0, cons
         return 1;
     }
     e->regime = PENDULUM_LIBRATION;
-    const double k = hypot(s.hi, q.hi);        /* sqrt(m) = sqrt(s^2 + q^2), no underflow */
-    const double m = fmin(k * k, 1.0);
+    /* sqrt(m) = sqrt(s^2 + q^2) without underflow; from rest |s| itself (hypot(s, 0) = |s|) */
+    const double k = from_rest ? fabs(s.hi) : hypot(s.hi, q.hi);
+    const double m = smaller(k * k, 1.0);
     /* from rest (and not next to the separatrix) k' = sqrt(m1) = c itself */
     const int root_known = from_rest && !st->fine;
-    if (elliptic_param_init_root(&e->ell, m, m1.hi, m1.lo, root_known ? &c : NULL) != 0) {
+    if (elliptic_param_init_root(&e->ell, m, m1.hi, m1.lo, root_known ? &c : NULL, inv_K) != 0) {
         return -1;
     }
     e->m = m;
@@ -403,7 +432,8 @@ static int init_libration(PendulumExact *e, double omega0, DoubleDouble w0, cons
 
 /* Step 3b. Rotation (m1 < 0, omega0 != 0). Ratios to |omega0|/2: rho = s/|q|, gamma = c/|q| < 1
  * (hs_n > c w_n, and c >= ~1e-33, so hs_n is not tiny). */
-static int init_rotation(PendulumExact *e, double omega0, const InitialState *st, DoubleDouble *rate_n)
+static int init_rotation(PendulumExact *e, double omega0, const InitialState *st, DoubleDouble *rate_n,
+                         DoubleDouble *inv_K)
 {
     const DoubleDouble half = {0.5 * st->th.hi, 0.5 * st->th.lo};   /* exact */
     DoubleDouble s, c_again;
@@ -430,8 +460,8 @@ static int init_rotation(PendulumExact *e, double omega0, const InitialState *st
     }
     /* mu = 1/m = 1/(q^2 (1 + rho^2)). */
     const double w_hs = w_n.hi / hs_n;
-    const double mu = fmin(w_hs * w_hs / one_plus_rho2.hi, 1.0);
-    if (elliptic_param_init(&e->ell, mu, mu1.hi, mu1.lo) != 0) {
+    const double mu = smaller(w_hs * w_hs / one_plus_rho2.hi, 1.0);   /* finite: hs_n > 0 */
+    if (elliptic_param_init_root(&e->ell, mu, mu1.hi, mu1.lo, NULL, inv_K) != 0) {
         return -1;
     }
     /* sqrt(m) w0 = |q| w0 sqrt(1 + rho^2) = (|omega0|/2) sqrt(1 + rho^2). */
@@ -451,18 +481,20 @@ static int init_rotation(PendulumExact *e, double omega0, const InitialState *st
     return 0;
 }
 
-/* Step 4. Rate and initial phase in quarter periods: rho = scale / K, x0 = u0 / K; the period
+/* Step 4. Rate and initial phase in quarter periods: rho = scale / K, x0 = u0 / K (products with
+ * 1/K in double-double, from elliptic_param_init_root); the period
  * 4K / w0 (libration) or 2K / rate (one revolution, rotation), all in double-double. A
  * libration released from rest starts at a turning point, x0 = +-1 exactly. */
-static void set_quarter_rates(PendulumExact *e, DoubleDouble rate_n, int exponent, int from_rest)
+static void set_quarter_rates(PendulumExact *e, DoubleDouble rate_n, int exponent, int from_rest,
+                              DoubleDouble inv_K)
 {
     const DoubleDouble K = {e->K_hi, e->K_lo};
-    const DoubleDouble rho = dd_ldexp(dd_div(rate_n, K), exponent);
+    const DoubleDouble rho = dd_ldexp(dd_mul(rate_n, inv_K), exponent);
     DoubleDouble x0;
     if (from_rest && e->regime == PENDULUM_LIBRATION && e->u0 != 0.0) {
         x0 = dd_of(e->u0 < 0.0 ? -1.0 : 1.0);
     } else {
-        x0 = dd_div(dd_of(e->u0), K);
+        x0 = dd_mul(dd_of(e->u0), inv_K);
     }
     e->rho_hi = rho.hi;
     e->rho_lo = rho.lo;
@@ -499,12 +531,12 @@ static int exact_init_dd(PendulumExact *ex, double theta0, double omega0, Double
     locate_separatrix(theta0, omega0, w0, g, L, &st);
     const double side = st.fine ? st.m1_fine.hi : st.gap.hi;   /* the sign of m1 */
 
-    DoubleDouble rate_n = dd_of(0.0);
+    DoubleDouble rate_n = dd_of(0.0), inv_K = dd_of(0.0);
     int status = 1;                        /* 1: the separatrix */
     if (side > 0.0) {
-        status = init_libration(&e, omega0, w0, &st, &rate_n);
+        status = init_libration(&e, omega0, w0, &st, &rate_n, &inv_K);
     } else if (side < 0.0) {
-        status = init_rotation(&e, omega0, &st, &rate_n);
+        status = init_rotation(&e, omega0, &st, &rate_n, &inv_K);
     }
     if (status < 0) {
         return -1;
@@ -512,7 +544,7 @@ static int exact_init_dd(PendulumExact *ex, double theta0, double omega0, Double
     if (status == 1) {
         init_separatrix(&e, st.s, st.c, omega0, w0);   /* also when m1 underflowed */
     } else {
-        set_quarter_rates(&e, rate_n, st.exponent, omega0 == 0.0);
+        set_quarter_rates(&e, rate_n, st.exponent, omega0 == 0.0, inv_K);
     }
     memcpy(ex, &e, sizeof e); /* bytewise, padding included: FMU states compare and checksum it
                                  (pendulum_exact_same, instance/state.c) */
@@ -521,6 +553,11 @@ static int exact_init_dd(PendulumExact *ex, double theta0, double omega0, Double
 
 int pendulum_exact_init(PendulumExact *ex, double theta0, double omega0, double w0, double t0)
 {
+#ifdef EXACT_HANDS_ON_TO_FMA
+    if (EXACT_FMA_HERE()) {
+        return pendulum_exact_init_fma(ex, theta0, omega0, w0, t0);
+    }
+#endif
     if (ex == NULL || !isfinite(theta0) || !isfinite(omega0) || !isfinite(w0) || !isfinite(t0)
         || !(w0 > 0.0)) {
         return -1;
@@ -530,6 +567,11 @@ int pendulum_exact_init(PendulumExact *ex, double theta0, double omega0, double 
 
 int pendulum_exact_init_gl(PendulumExact *ex, double theta0, double omega0, double g, double L, double t0)
 {
+#ifdef EXACT_HANDS_ON_TO_FMA
+    if (EXACT_FMA_HERE()) {
+        return pendulum_exact_init_gl_fma(ex, theta0, omega0, g, L, t0);
+    }
+#endif
     if (ex == NULL || !isfinite(theta0) || !isfinite(omega0) || !isfinite(t0) || !isfinite(g)
         || !isfinite(L) || !(g > 0.0) || !(L > 0.0)) {
         return -1;
@@ -614,7 +656,7 @@ static double phase_quarters_far(const PendulumExact *ex, DoubleDouble tau, Doub
 static inline double phase_near(const PendulumExact *ex, double tau_hi, double tau_lo, double x_hi,
                                 double *quarters)
 {
-#ifdef FP_FAST_FMA
+#if defined(FP_FAST_FMA) || defined(PENDULUM_DD_FMA)
     const double x_lo = fma(ex->rho_hi, tau_hi, -x_hi);
 #else
     const double tau_split = 134217729.0 * tau_hi;          /* Veltkamp split of tau_hi */
@@ -707,6 +749,12 @@ static inline void libration_angle_omega(const PendulumExact *ex, EllipticHomoge
 
 void pendulum_exact_eval(const PendulumExact *ex, double t, double *theta, double *omega)
 {
+#ifdef EXACT_HANDS_ON_TO_FMA
+    if (EXACT_FMA_HERE()) {
+        pendulum_exact_eval_fma(ex, t, theta, omega);
+        return;
+    }
+#endif
     double angle, om, f = 0.0;
     DoubleDouble n = dd_of(0.0);
     DoubleDouble winding = dd_of(0.0);   /* half turns of a rotation since t0: direction N */
@@ -865,6 +913,12 @@ static int eval_libration_lanes(const PendulumExact *ex, const double *t, double
 
 void pendulum_exact_eval_many(const PendulumExact *ex, size_t n, const double *t, double *theta, double *omega)
 {
+#ifdef EXACT_HANDS_ON_TO_FMA
+    if (EXACT_FMA_HERE()) {
+        pendulum_exact_eval_many_fma(ex, n, t, theta, omega);
+        return;
+    }
+#endif
     size_t i = 0;
     if (ex->regime == PENDULUM_LIBRATION && ex->ell.levels <= ELLIPTIC_LEVELS_WITHOUT_RESCALE
         && fabs(ex->theta_turns) < 0x1p50) {
@@ -912,6 +966,12 @@ double pendulum_exact_period(const PendulumExact *ex)
 
 void pendulum_exact_sin_cos(const PendulumExact *ex, double t, double *sin_theta, double *cos_theta)
 {
+#ifdef EXACT_HANDS_ON_TO_FMA
+    if (EXACT_FMA_HERE()) {
+        pendulum_exact_sin_cos_fma(ex, t, sin_theta, cos_theta);
+        return;
+    }
+#endif
     double y, x;   /* sin and cos of the half angle (up to a common sign), or of am v (rotation) */
     double sign = 1.0;
 

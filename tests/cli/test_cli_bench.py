@@ -62,6 +62,15 @@ def test_bench_exact_prints_batch_gsl_and_new_states_side_by_side(bench_exact: P
         pytest.skip("GSL column not timed: apt-get install libgsl-dev, then cmake -S . -B build "
                     "and rebuild bench_exact")
     assert 0 < float(values["gsl_best"]) <= float(values["gsl_median"]) < 1e5
+    # GSL's new state (K and one elljac) beside the port's, in the table of a new state per point
+    assert 0 < float(values["gsl_init_eval_best"]) <= float(values["gsl_init_eval_median"]) < 1e5
+    table = out.split("a new state per point: set-up and one evaluation", 1)[1]
+    row = re.search(r"^\s+90 deg\s+(\S+)\s+(\S+)\s+(\S+)\s+(\S+)\s+(\S+)\s+(\S+)\s+(\S+)$", table, re.MULTILINE)
+    assert row is not None, table
+    assert float(row.group(1)) == pytest.approx(float(values["init_eval_median"]), abs=0.06)
+    assert float(row.group(2)) == pytest.approx(float(values["gsl_init_eval_median"]), abs=0.06)
+    assert float(row.group(5)) == pytest.approx(float(values["gsl_init_eval_median"]) / float(values["init_eval_median"]),
+                                                abs=0.006)
     assert GSL_ABSENT not in out
 
 

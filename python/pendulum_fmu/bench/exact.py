@@ -8,7 +8,8 @@ shared machine does not count:
 - one state, many times: an evaluation per point (C scalar loop, C batch, GSL, Python,
   scipy);
 - a new state per point (a phase portrait, an ensemble): ``pendulum_exact_init`` (from w0)
-  and one evaluation in C, :func:`pendulum_fmu.exact` over arrays of release angles (a
+  and one evaluation in C, GSL's ``gsl_sf_ellint_Kcomp_e`` + ``gsl_sf_elljac_e`` per state
+  in C, :func:`pendulum_fmu.exact` over arrays of release angles (a
   ``pendulum_exact_init_gl`` set-up from g and L per angle, as the FMU's), and scipy's
   ``ellipkm1`` + ``ellipj`` over the same arrays.
 
@@ -72,12 +73,16 @@ class CTimings:
         GSL's ``gsl_sf_elljac_e`` plus atan2 (NaN when the benchmark was built without GSL).
     init : BestMedian
         ``pendulum_exact_init`` (from w0 = 1) for a new release angle and one evaluation.
+    gsl_init : BestMedian
+        GSL for the same new states: ``gsl_sf_ellint_Kcomp_e`` and one ``gsl_sf_elljac_e`` plus
+        atan2 (NaN without GSL, or from an older program that did not time it).
     """
 
     eval: BestMedian
     batch: BestMedian
     gsl: BestMedian
     init: BestMedian
+    gsl_init: BestMedian = NOT_MEASURED
 
 
 NO_C = CTimings(NOT_MEASURED, NOT_MEASURED, NOT_MEASURED, NOT_MEASURED)
@@ -163,7 +168,8 @@ def run_c_benchmark(executable: Path, n: int, amplitudes_deg: tuple[float, ...])
             return BestMedian(float(values.get(f"{kind}_best", "nan")), float(values.get(f"{kind}_median", "nan")))
 
         eval_timing = pair("eval") if "eval_best" in values else BestMedian(float(values["ns_per_eval"]), math.nan)
-        timings[float(values["amplitude_deg"])] = CTimings(eval_timing, pair("batch"), pair("gsl"), pair("init"))
+        timings[float(values["amplitude_deg"])] = CTimings(eval_timing, pair("batch"), pair("gsl"), pair("init"),
+                                                           pair("gsl_init"))
     return timings
 
 

@@ -19,8 +19,9 @@ when it was built with GSL; bash scripts/bench.sh exact builds it and gives it; 
 those columns are left out), from Python
 through pendulum_fmu.exact (one call into the C library pendulum_exact, the FMU's own code)
 and with scipy.special.ellipj plus arctan2, vectorised; and a new state per point (set-up and
-one evaluation) in C, through pendulum_fmu.exact and with scipy's ellipkm1 + ellipj. Prints
-ns per point and the ratios side by side.
+one evaluation) in C, with GSL (gsl_sf_ellint_Kcomp_e + gsl_sf_elljac_e), through
+pendulum_fmu.exact and with scipy's ellipkm1 + ellipj. Prints ns per point and the ratios side
+by side.
 """
 EPILOG = """\
 examples:
@@ -75,6 +76,11 @@ def both(x_best: float, x_median: float, y_best: float, y_median: float) -> str:
     return f"{x_best / y_best:6.2f} | {x_median / y_median:<6.2f}"
 
 
+def figure(value: float, spec: str) -> str:
+    """``value`` formatted by ``spec``, or ``-`` where it is NaN (a column that was not timed)."""
+    return "-" if math.isnan(value) else format(value, spec)
+
+
 def run(args: argparse.Namespace) -> int:
     """Run the benchmark and print the table."""
     from pendulum_fmu.bench.exact import run as run_benchmark
@@ -109,6 +115,17 @@ def run(args: argparse.Namespace) -> int:
                     if with_c else "")
         print(f"{r.amplitude_deg:>10.10g} deg{c_ratios} "
               f"{both(r.scipy_states.best, r.scipy_states.median, r.python_states.best, r.python_states.median):>15}")
+    print("a new state per point: set-up and one evaluation (ns per state, median over the rounds):")
+    new_heads = f" {'C init+eval':>12} {'GSL K+elljac':>13}" if with_c else ""
+    print(f"{'amplitude':>14}{new_heads} {'exact()':>9} {'scipy':>9}"
+          + (f" {'GSL/C':>7} {'scipy/C':>8}" if with_c else "") + f" {'scipy/exact()':>14}")
+    for r in results:
+        c = r.c
+        c_values = f" {c.init.median:>12.1f} {figure(c.gsl_init.median, '.1f'):>13}" if with_c else ""
+        c_ratios = (f" {figure(c.gsl_init.median / c.init.median, '.2f'):>7}"
+                    f" {r.scipy_states.median / c.init.median:>8.2f}" if with_c else "")
+        print(f"{r.amplitude_deg:>10.10g} deg{c_values} {r.python_states.median:>9.1f} {r.scipy_states.median:>9.1f}"
+              f"{c_ratios} {r.scipy_states.median / r.python_states.median:>14.2f}")
     if with_c and any(math.isnan(r.c.gsl.best) for r in results):
         print(GSL_ABSENT)
     for r in results:
@@ -116,7 +133,8 @@ def run(args: argparse.Namespace) -> int:
         print(f"bench_exact amplitude_deg={r.amplitude_deg:.10g} n={r.n}{c_field} "
               f"python_ns_per_point={r.python_ns:.3f} scipy_ns_per_point={r.scipy_ns:.3f}")
     for r in results:
-        fields = {"eval": r.c.eval, "batch": r.c.batch, "gsl": r.c.gsl, "init_eval": r.c.init} if with_c else {}
+        fields = ({"eval": r.c.eval, "batch": r.c.batch, "gsl": r.c.gsl, "init_eval": r.c.init,
+                   "gsl_init_eval": r.c.gsl_init} if with_c else {})
         fields.update({"python": r.python, "scipy": r.scipy, "python_states": r.python_states,
                        "scipy_states": r.scipy_states})
         text = " ".join(f"{name}_best={t.best:.3f} {name}_median={t.median:.3f}" for name, t in fields.items())
