@@ -44,3 +44,17 @@ def test_a_run_without_warnings_has_none_and_a_warned_run_says_so(fmu_path: Path
     assert row_of(point, warned)["fmu_warning"] == "hard case: near the top"
     assert row_of(point, run)["fmu_warning"] == ""
     assert math.isfinite(run.max_error) and np.all(np.isfinite(run.result["theta"]))
+
+
+def test_a_run_keeps_its_warnings_after_fmpy_took_the_logging_proxy(fmu_path: Path) -> None:
+    """fmpy formats FMI 2.0 messages in one native proxy with one target for the process; a
+    ``simulate_fmu(logger=...)`` call points it at that call's logger. A runner's later run
+    must still receive its warnings (the creep over the top warns at every solver)."""
+    from fmpy import simulate_fmu
+
+    elsewhere: list[object] = []
+    with FmuRunner(fmu_path) as runner:  # the package's callbacks exist before fmpy's call
+        runner.run(Pendulum.from_degrees(80.0), Method(), TimeGrid(1, "periods"))
+        simulate_fmu(str(fmu_path), stop_time=0.1, logger=lambda *message: elsewhere.append(message))
+        run = runner.run(Pendulum(math.pi, 1e-15), Method("rkn", 1e-8), TimeGrid(1, "periods"))
+    assert any(w.startswith("certificate:") or "hard case:" in w for w in run.warnings), run.warnings

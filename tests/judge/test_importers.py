@@ -85,6 +85,8 @@ def test_cross_check_export_validates_and_reference_is_reproduced(fmu_path: Path
         assert {p.name for p in folder.iterdir()} == {"Pendulum.fmu", "Pendulum_ref.csv", "Pendulum_ref.opt",
                                                       "ReadMe.txt"}
     reference = np.genfromtxt(folders[0] / "Pendulum_ref.csv", delimiter=",", names=True)
-    simulated = simulate_fmu(str(fmu_path), stop_time=20.0, output_interval=0.02, output=["theta"])
+    experiment = read_model_description(str(fmu_path)).defaultExperiment  # the reference's own grid
+    simulated = simulate_fmu(str(fmu_path), stop_time=float(experiment.stopTime),
+                             output_interval=float(experiment.stepSize), output=["theta"])
     assert np.allclose(reference["time"], simulated["time"], atol=1e-12)
     assert np.max(np.abs(reference["theta"] - simulated["theta"])) < 1e-6

@@ -118,7 +118,31 @@ def shared_callbacks() -> Any:
             callbacks.freeMemory = fmi2CallbackFreeMemoryTYPE(free)
             addLoggerProxy(byref(callbacks))
             _callbacks = callbacks
-        return _callbacks
+    route_fmi2_messages()
+    return _callbacks
+
+
+_dispatcher: list[Any] = []
+"""The ctypes logger of :func:`_dispatch`, made once and kept alive for the process."""
+
+
+def route_fmi2_messages() -> None:
+    """Point fmpy's FMI 2.0 logging proxy at this package's dispatcher (again).
+
+    fmpy formats an FMI 2.0 message in one native proxy with a single target for the whole
+    process, which every fmpy instantiation with a logger of its own (``simulate_fmu``, a
+    container run) points elsewhere. Called before every FMI 2.0 instance and run of this
+    package, so that its warnings reach the run's :class:`FmuLog` whatever ran in between.
+    """
+    from fmpy.fmi2 import fmi2CallbackFunctions, fmi2CallbackLoggerTYPE
+    from fmpy.logging import addLoggerProxy
+
+    with _lock:
+        if not _dispatcher:
+            _dispatcher.append(fmi2CallbackLoggerTYPE(_dispatch))
+        target = fmi2CallbackFunctions()
+        target.logger = _dispatcher[0]
+        addLoggerProxy(byref(target))  # the proxy's target becomes the dispatcher; ``target`` is not kept
 
 
 def register(instance_name: str, log: FmuLog) -> None:

@@ -38,7 +38,14 @@ from fmpy.fmi3 import FMU3Model, FMU3Slave
 from pendulum_fmu.errors import BuildError, SimulationError, UsageError
 from pendulum_fmu.fmu import driver
 from pendulum_fmu.fmu.identity import FMI_VERSIONS, description_problem, read_description
-from pendulum_fmu.fmu.log import FmuLog, register, shared_callbacks, unique_instance_name, unregister
+from pendulum_fmu.fmu.log import (
+    FmuLog,
+    register,
+    route_fmi2_messages,
+    shared_callbacks,
+    unique_instance_name,
+    unregister,
+)
 from pendulum_fmu.interrupt import deferred_interrupt
 from pendulum_fmu.interrupt import pending as interrupt_pending
 from pendulum_fmu.spec import CS_SOLVERS, Method, Pendulum, TimeGrid
@@ -338,6 +345,8 @@ class FmuRunner:
         """
         if not math.isfinite(start_time):
             raise UsageError("start_time", f"must be a finite number (s), got {start_time!r}")
+        if self.fmi_version == 2:
+            route_fmi2_messages()  # another fmpy call may have taken fmpy's one logging proxy since
         try:
             with deferred_interrupt():  # Ctrl-C inside a ctypes callback would be lost
                 if method.interface == "CS":
