@@ -16,31 +16,9 @@ import uuid
 from collections.abc import Callable
 from pathlib import Path
 
+from pendulum_fmu.fmu.log import route_fmi2_messages
 from pendulum_fmu.split.columns import COLUMNS, EngineError, write_columns
 from pendulum_fmu.split.locate import split_fmus
-
-_DEFAULT_LOGGER: list[object] = []
-"""fmpy's own FMI 2.0 logger, made once and kept for the process (see :func:`_restore_fmpy_logger`)."""
-
-
-def _restore_fmpy_logger() -> None:
-    """Point fmpy's FMI 2.0 logging proxy back at fmpy's own logger.
-
-    fmpy formats an FMI 2.0 message in one native proxy with a single target, which
-    ``simulate_fmu(logger=...)`` sets to that call's logger; once the call's logger is freed,
-    the next message of any FMI 2.0 FMU through fmpy's default callbacks (``Pair``'s) would
-    call freed memory. The target is set back to fmpy's ``printLogMessage``, in callbacks kept
-    alive here."""
-    from ctypes import byref
-
-    from fmpy.fmi2 import fmi2CallbackFunctions, fmi2CallbackLoggerTYPE, printLogMessage
-    from fmpy.logging import addLoggerProxy
-
-    if not _DEFAULT_LOGGER:
-        _DEFAULT_LOGGER.append(fmi2CallbackLoggerTYPE(printLogMessage))
-    callbacks = fmi2CallbackFunctions()
-    callbacks.logger = _DEFAULT_LOGGER[0]
-    addLoggerProxy(byref(callbacks))  # the proxy's target: the kept logger; callbacks itself is not used
 
 
 def _simulate(container: Path, H: float, stop: float, out: Path, names: dict[str, str]) -> Path:
@@ -60,7 +38,8 @@ def _simulate(container: Path, H: float, stop: float, out: Path, names: dict[str
         told = f" ({messages[-1].strip()})" if messages else ""
         raise EngineError(f"{container.name} in fmpy: {error}{told}") from error
     finally:
-        _restore_fmpy_logger()
+        # the call's logger is freed with it: fmpy's one FMI 2.0 logging proxy must not point there
+        route_fmi2_messages()
     write_columns(out, list(rows["time"]), {ours: list(rows[theirs]) for ours, theirs in names.items()})
     return out
 
