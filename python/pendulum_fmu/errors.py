@@ -4,24 +4,26 @@ from __future__ import annotations
 
 
 class UsageError(ValueError):
-    """A bad argument: the message names the argument and the allowed range.
+    """A bad argument: the message names the field and the allowed range.
 
-    The command line turns it into an argparse-style ``error:`` line and exit code 2,
-    never a traceback. The Python API raises it for the same mistakes.
+    The library names the field as its own API does (``"theta0"``, ``"fmu"``, ``"stop_time"``),
+    or ``"$NAME"`` for an environment variable; the command line alone knows which flag sets a
+    field (``cli/main.py`` maps it to one, e.g. ``fmu`` to ``--fmu``) and prints an
+    argparse-style ``error:`` line with exit code 2, never a traceback.
 
     Parameters
     ----------
-    argument : str
-        The argument as the user wrote it, e.g. ``"-L/--length"``, or ``"$NAME"`` for an
-        environment variable.
+    field : str
+        The field or parameter that is wrong, e.g. ``"L"``, or ``"$NAME"`` for an environment
+        variable.
     message : str
         What is wrong and what is allowed.
     """
 
-    def __init__(self, argument: str, message: str) -> None:
-        where = f"environment variable {argument[1:]}" if argument.startswith("$") else f"argument {argument}"
+    def __init__(self, field: str, message: str) -> None:
+        where = f"environment variable {field[1:]}" if field.startswith("$") else f"argument {field}"
         super().__init__(f"{where}: {message}")
-        self.argument = argument
+        self.field = field
         self.message = message
 
 

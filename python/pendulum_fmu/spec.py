@@ -32,6 +32,72 @@ DEFAULT_TOLERANCE = 1e-8
 
 
 @dataclass(frozen=True)
+class InitialValueProblem:
+    """An initial value problem of theta'' + (g/L) sin(theta) = 0, named as the FMU names it.
+
+    The one type of "which pendulum" in the package: the runner, the judge, the split
+    pendulum and the benchmarks all take it. Its fields are the FMU's variable names (the
+    start values of ``theta`` and ``omega``, the parameters ``L`` and ``g``); a bad value
+    raises :class:`UsageError` naming the field.
+
+    Attributes
+    ----------
+    theta0 : float
+        Initial angle theta(0) from the downward vertical, rad (any finite angle).
+    omega0 : float
+        Initial angular velocity theta'(0), rad/s.
+    L : float
+        Length, m (> 0).
+    g : float
+        Gravitational acceleration, m/s^2 (> 0).
+    """
+
+    theta0: float
+    omega0: float = 0.0
+    L: float = 1.0
+    g: float = 9.81
+
+    def __post_init__(self) -> None:
+        checks = (("theta0", self.theta0, math.isfinite(self.theta0), "a finite angle (rad)"),
+                  ("omega0", self.omega0, math.isfinite(self.omega0), "a finite number (rad/s)"),
+                  ("L", self.L, math.isfinite(self.L) and self.L > 0, "a finite number > 0 (m)"),
+                  ("g", self.g, math.isfinite(self.g) and self.g > 0, "a finite number > 0 (m/s^2)"))
+        for name, value, ok, allowed in checks:
+            if not ok:
+                raise UsageError(name, f"must be {allowed}, got {value!r}")
+
+    @classmethod
+    def from_degrees(cls, theta0_deg: float, omega0: float = 0.0, L: float = 1.0,
+                     g: float = 9.81) -> InitialValueProblem:
+        """Build from a start angle in degrees (the other arguments as in the class)."""
+        return cls(math.radians(theta0_deg), omega0, L, g)
+
+    @property
+    def theta0_deg(self) -> float:
+        """theta(0) in degrees."""
+        return math.degrees(self.theta0)
+
+    @property
+    def w0(self) -> float:
+        """Small-angle angular frequency sqrt(g / L), rad/s."""
+        return math.sqrt(self.g / self.L)
+
+    @property
+    def small_angle_period(self) -> float:
+        """T0 = 2 pi / w0, s."""
+        return 2.0 * math.pi / self.w0
+
+    def start_values(self) -> dict[str, float]:
+        """The FMU's start values for this problem, by variable name."""
+        return {"L": self.L, "g": self.g, "theta": self.theta0, "omega": self.omega0}
+
+    def __str__(self) -> str:
+        """``the pendulum at theta0 = 75 deg, omega0 = 0 rad/s, L = 1 m, g = 9.81 m/s^2`` (for messages)."""
+        return (f"the pendulum at theta0 = {self.theta0_deg:.9g} deg, omega0 = {self.omega0:.9g} rad/s, "
+                f"L = {self.L:.9g} m, g = {self.g:.9g} m/s^2")
+
+
+@dataclass(frozen=True)
 class Pendulum:
     """An initial value problem of theta'' + (g/L) sin(theta) = 0.
 

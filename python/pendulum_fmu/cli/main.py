@@ -18,6 +18,7 @@ from typing import Any, NoReturn
 from pendulum_fmu import __version__
 from pendulum_fmu.cli import animate, bench, compare, completion, cross_check, judge, simulate, study, suite, sweep
 from pendulum_fmu.cli.arguments import resolve_fmu
+from pendulum_fmu.cli.fields import command_line_message
 from pendulum_fmu.errors import BuildError, SimulationError, UsageError
 from pendulum_fmu.interrupt import check as check_interrupt
 from pendulum_fmu.interrupt import default_dispositions, exit_quietly_on_interrupt
@@ -150,7 +151,7 @@ def main(argv: list[str] | None = None) -> int:
             exit_quietly_on_interrupt(f"\n{subparser.prog}: interrupted{hint}\n")
         return code
     except UsageError as error:
-        subparser.error(str(error))  # one line: "error: argument ...", exit 2
+        subparser.error(command_line_message(error, subparser))  # one line: "error: argument ...", exit 2
     except (BuildError, SimulationError) as error:
         print(f"{subparser.prog}: error: {error}", file=sys.stderr)
         return 1
