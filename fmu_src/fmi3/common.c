@@ -1,6 +1,7 @@
-/* fmi3/common.c: the FMI 3.0 functions of every interface (FMI 3.0 section 2.3), translated
- * onto the shared instance (instance.h): instantiation, life cycle, variables of each type,
- * FMU states, directional and adjoint derivatives. The refusals of what this model does not
+/* fmi3/common.c: Pendulum's FMI 3.0 functions of every interface (FMI 3.0 section 2.3),
+ * translated onto the shared instance (instance.h): instantiation, life cycle, variables of
+ * each type, directional and adjoint derivatives. What every FMU of the project passes on
+ * unchanged (freeing, logging, FMU states) is in shared.c; the refusals of what this model does not
  * have (variables of the other types, clocks, Configuration Mode, variable dependencies at
  * run time) are in fmi3/absent.c.
  * The FMI 3.0 declarations are the project's own, written from the standard (fmi3_api.h). */
@@ -22,37 +23,8 @@ fmi3Instance fmi3_instantiate(const char *function, fmi3String instanceName, fmi
                              logMessage, NULL);
 }
 
-const char *fmi3GetVersion(void) {
-    return fmi3Version;
-}
-
-fmi3Instance fmi3InstantiateScheduledExecution(fmi3String instanceName, fmi3String instantiationToken,
-                                               fmi3String resourcePath, fmi3Boolean visible, fmi3Boolean loggingOn,
-                                               fmi3InstanceEnvironment instanceEnvironment,
-                                               fmi3LogMessageCallback logMessage, fmi3ClockUpdateCallback clockUpdate,
-                                               fmi3LockPreemptionCallback lockPreemption,
-                                               fmi3UnlockPreemptionCallback unlockPreemption) {
-    (void)instanceName, (void)instantiationToken, (void)resourcePath, (void)visible, (void)loggingOn;
-    (void)clockUpdate, (void)lockPreemption, (void)unlockPreemption;
-    fmi3_refuse(instanceEnvironment, logMessage, "fmi3InstantiateScheduledExecution", "the FMU has no Scheduled Execution interface");
-    return NULL;
-}
-
-void fmi3FreeInstance(fmi3Instance instance) {
-    fmi3_free_instance(instance);
-}
-
-fmi3Status fmi3SetDebugLogging(fmi3Instance instance, fmi3Boolean loggingOn, size_t nCategories,
-                               const fmi3String categories[]) {
-    return (fmi3Status)instance_set_debug_logging(instance, "fmi3SetDebugLogging", loggingOn, nCategories, categories);
-}
-
 fmi3Status fmi3ExitInitializationMode(fmi3Instance instance) {
     return (fmi3Status)instance_exit_initialization(instance, "fmi3ExitInitializationMode");
-}
-
-fmi3Status fmi3Terminate(fmi3Instance instance) {
-    return (fmi3Status)instance_terminate(instance, "fmi3Terminate");
 }
 
 fmi3Status fmi3Reset(fmi3Instance instance) {
@@ -166,33 +138,6 @@ fmi3Status fmi3GetInt64(fmi3Instance instance, const fmi3ValueReference vr[], si
 fmi3Status fmi3SetInt64(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr, const fmi3Int64 values[],
                         size_t nValues) {
     return set_integers(instance, "fmi3SetInt64", vr, nvr, values, nValues, 1);
-}
-
-fmi3Status fmi3GetFMUState(fmi3Instance instance, fmi3FMUState *state) {
-    return (fmi3Status)instance_get_state(instance, "fmi3GetFMUState", state);
-}
-
-fmi3Status fmi3SetFMUState(fmi3Instance instance, fmi3FMUState state) {
-    return (fmi3Status)instance_set_state(instance, "fmi3SetFMUState", state);
-}
-
-fmi3Status fmi3FreeFMUState(fmi3Instance instance, fmi3FMUState *state) {
-    return (fmi3Status)instance_free_state(instance, "fmi3FreeFMUState", state);
-}
-
-fmi3Status fmi3SerializedFMUStateSize(fmi3Instance instance, fmi3FMUState state, size_t *size) {
-    return (fmi3Status)instance_serialized_state_size(instance, "fmi3SerializedFMUStateSize", state, size);
-}
-
-fmi3Status fmi3SerializeFMUState(fmi3Instance instance, fmi3FMUState state, fmi3Byte serializedState[], size_t size) {
-    return (fmi3Status)instance_serialize_state(instance, "fmi3SerializeFMUState", state, (char *)serializedState,
-                                                size);
-}
-
-fmi3Status fmi3DeserializeFMUState(fmi3Instance instance, const fmi3Byte serializedState[], size_t size,
-                                   fmi3FMUState *state) {
-    return (fmi3Status)instance_deserialize_state(instance, "fmi3DeserializeFMUState", (const char *)serializedState,
-                                                  size, state);
 }
 
 /* Seed and sensitivity lengths: one entry per known (directional: per unknown) and back. */

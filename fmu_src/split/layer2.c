@@ -2,7 +2,8 @@
  * it only translates FMI 2.0 types onto split.c and the shared instance (instance.h). The
  * FMUs have Co-Simulation only, with FMU states for a master that rolls a step back;
  * directional derivatives are not provided (providesDirectionalDerivative false) and are
- * refused with a reason. */
+ * refused with a reason. What every FMU of the project passes on unchanged (freeing, logging,
+ * FMU states, Boolean and String variables) is Pendulum.fmu's fmi2/shared.c, linked as it is. */
 #include <stddef.h>
 
 #include "host2.h"
@@ -33,33 +34,8 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
                              functions, loggingOn, sizeof(Split2), offsetof(Split2, callbacks), setup);
 }
 
-const char *fmi2GetTypesPlatform(void) {
-    return fmi2TypesPlatform;
-}
-
-const char *fmi2GetVersion(void) {
-    return fmi2Version;
-}
-
-void fmi2FreeInstance(fmi2Component c) {
-    host2_free(c);
-}
-
-fmi2Status fmi2SetDebugLogging(fmi2Component c, fmi2Boolean loggingOn, size_t nCategories,
-                               const fmi2String categories[]) {
-    return (fmi2Status)instance_set_debug_logging(c, "fmi2SetDebugLogging", loggingOn, nCategories, categories);
-}
-
-fmi2Status fmi2EnterInitializationMode(fmi2Component c) {
-    return (fmi2Status)instance_enter_initialization(c, "fmi2EnterInitializationMode");
-}
-
 fmi2Status fmi2ExitInitializationMode(fmi2Component c) {
     return (fmi2Status)split_exit_initialization(c, "fmi2ExitInitializationMode");
-}
-
-fmi2Status fmi2Terminate(fmi2Component c) {
-    return (fmi2Status)instance_terminate(c, "fmi2Terminate");
 }
 
 fmi2Status fmi2Reset(fmi2Component c) {
@@ -81,58 +57,13 @@ fmi2Status fmi2SetupExperiment(fmi2Component c, fmi2Boolean toleranceDefined, fm
                                                  startTime, stopTimeDefined, stopTime);
 }
 
-
-/* FMU states (canGetAndSetFMUstate, canSerializeFMUstate): ModelData and the input polynomial
- * (split.c), through the shared instance/state.c as Pendulum.fmu's. */
-fmi2Status fmi2GetFMUstate(fmi2Component c, fmi2FMUstate *state) {
-    return (fmi2Status)instance_get_state(c, "fmi2GetFMUstate", state);
-}
-
-fmi2Status fmi2SetFMUstate(fmi2Component c, fmi2FMUstate state) {
-    return (fmi2Status)instance_set_state(c, "fmi2SetFMUstate", state);
-}
-
-fmi2Status fmi2FreeFMUstate(fmi2Component c, fmi2FMUstate *state) {
-    return (fmi2Status)instance_free_state(c, "fmi2FreeFMUstate", state);
-}
-
-fmi2Status fmi2SerializedFMUstateSize(fmi2Component c, fmi2FMUstate state, size_t *size) {
-    return (fmi2Status)instance_serialized_state_size(c, "fmi2SerializedFMUstateSize", state, size);
-}
-
-fmi2Status fmi2SerializeFMUstate(fmi2Component c, fmi2FMUstate state, fmi2Byte serializedState[], size_t size) {
-    return (fmi2Status)instance_serialize_state(c, "fmi2SerializeFMUstate", state, (char *)serializedState, size);
-}
-
-fmi2Status fmi2DeSerializeFMUstate(fmi2Component c, const fmi2Byte serializedState[], size_t size,
-                                   fmi2FMUstate *state) {
-    return (fmi2Status)instance_deserialize_state(c, "fmi2DeSerializeFMUstate", (const char *)serializedState, size,
-                                                  state);
-}
-
-/* No Integer, Boolean or String variables: any value reference is unknown. */
+/* No Integer variables (nor Boolean or String ones, fmi2/shared.c): any value reference is unknown. */
 fmi2Status fmi2GetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2Integer value[]) {
     return (fmi2Status)instance_no_variables(c, "fmi2GetInteger", CALL_GET_VARIABLES, vr, nvr, value);
 }
 
 fmi2Status fmi2SetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const fmi2Integer value[]) {
     return (fmi2Status)instance_no_variables(c, "fmi2SetInteger", CALL_SET_VARIABLES, vr, nvr, value);
-}
-
-fmi2Status fmi2GetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2Boolean value[]) {
-    return (fmi2Status)instance_no_variables(c, "fmi2GetBoolean", CALL_GET_VARIABLES, vr, nvr, value);
-}
-
-fmi2Status fmi2SetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const fmi2Boolean value[]) {
-    return (fmi2Status)instance_no_variables(c, "fmi2SetBoolean", CALL_SET_VARIABLES, vr, nvr, value);
-}
-
-fmi2Status fmi2GetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2String value[]) {
-    return (fmi2Status)instance_no_variables(c, "fmi2GetString", CALL_GET_VARIABLES, vr, nvr, value);
-}
-
-fmi2Status fmi2SetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const fmi2String value[]) {
-    return (fmi2Status)instance_no_variables(c, "fmi2SetString", CALL_SET_VARIABLES, vr, nvr, value);
 }
 
 fmi2Status fmi2GetDirectionalDerivative(fmi2Component c, const fmi2ValueReference vUnknown_ref[], size_t nUnknown,

@@ -1,6 +1,7 @@
 /* layer3.c: the FMI 3.0 Co-Simulation layer of PendulumBody and PendulumGravity (split.h):
  * it only translates FMI 3.0 types onto split.c and the shared instance (instance.h). Linked
- * with fmi3/modelex.c and fmi3/absent.c, Pendulum.fmu's own refusals of Model Exchange (every
+ * with fmi3/shared.c (what every FMU of the project passes on unchanged: freeing, logging, FMU
+ * states), fmi3/modelex.c and fmi3/absent.c, Pendulum.fmu's own refusals of Model Exchange (every
  * call refused by the instance's interface check; fmi3InstantiateModelExchange by
  * fmi3_instantiate below) and of the features neither FMU has (clocks, Configuration Mode,
  * Scheduled Execution).
@@ -51,37 +52,8 @@ fmi3Instance fmi3InstantiateCoSimulation(fmi3String instanceName, fmi3String ins
                                           nRequiredIntermediateVariables, instanceEnvironment, logMessage);
 }
 
-const char *fmi3GetVersion(void) {
-    return fmi3Version;
-}
-
-fmi3Instance fmi3InstantiateScheduledExecution(fmi3String instanceName, fmi3String instantiationToken,
-                                               fmi3String resourcePath, fmi3Boolean visible, fmi3Boolean loggingOn,
-                                               fmi3InstanceEnvironment instanceEnvironment,
-                                               fmi3LogMessageCallback logMessage, fmi3ClockUpdateCallback clockUpdate,
-                                               fmi3LockPreemptionCallback lockPreemption,
-                                               fmi3UnlockPreemptionCallback unlockPreemption) {
-    (void)instanceName, (void)instantiationToken, (void)resourcePath, (void)visible, (void)loggingOn;
-    (void)clockUpdate, (void)lockPreemption, (void)unlockPreemption;
-    fmi3_refuse(instanceEnvironment, logMessage, "fmi3InstantiateScheduledExecution", "the FMU has Co-Simulation only");
-    return NULL;
-}
-
-void fmi3FreeInstance(fmi3Instance instance) {
-    fmi3_free_instance(instance);
-}
-
-fmi3Status fmi3SetDebugLogging(fmi3Instance instance, fmi3Boolean loggingOn, size_t nCategories,
-                               const fmi3String categories[]) {
-    return (fmi3Status)instance_set_debug_logging(instance, "fmi3SetDebugLogging", loggingOn, nCategories, categories);
-}
-
 fmi3Status fmi3ExitInitializationMode(fmi3Instance instance) {
     return (fmi3Status)split_exit_initialization(instance, "fmi3ExitInitializationMode");
-}
-
-fmi3Status fmi3Terminate(fmi3Instance instance) {
-    return (fmi3Status)instance_terminate(instance, "fmi3Terminate");
 }
 
 fmi3Status fmi3Reset(fmi3Instance instance) {
@@ -134,36 +106,6 @@ fmi3Status fmi3SetInt64(fmi3Instance instance, const fmi3ValueReference vr[], si
                         size_t nValues) {
     (void)nValues;
     return (fmi3Status)instance_no_variables(instance, "fmi3SetInt64", CALL_SET_VARIABLES, vr, nvr, values);
-}
-
-
-/* FMU states (canGetAndSetFMUState, canSerializeFMUState), as the FMI 2.0 layer's. */
-fmi3Status fmi3GetFMUState(fmi3Instance instance, fmi3FMUState *state) {
-    return (fmi3Status)instance_get_state(instance, "fmi3GetFMUState", state);
-}
-
-fmi3Status fmi3SetFMUState(fmi3Instance instance, fmi3FMUState state) {
-    return (fmi3Status)instance_set_state(instance, "fmi3SetFMUState", state);
-}
-
-fmi3Status fmi3FreeFMUState(fmi3Instance instance, fmi3FMUState *state) {
-    return (fmi3Status)instance_free_state(instance, "fmi3FreeFMUState", state);
-}
-
-fmi3Status fmi3SerializedFMUStateSize(fmi3Instance instance, fmi3FMUState state, size_t *size) {
-    return (fmi3Status)instance_serialized_state_size(instance, "fmi3SerializedFMUStateSize", state, size);
-}
-
-fmi3Status fmi3SerializeFMUState(fmi3Instance instance, fmi3FMUState state, fmi3Byte serializedState[],
-                                 size_t size) {
-    return (fmi3Status)instance_serialize_state(instance, "fmi3SerializeFMUState", state, (char *)serializedState,
-                                                size);
-}
-
-fmi3Status fmi3DeserializeFMUState(fmi3Instance instance, const fmi3Byte serializedState[], size_t size,
-                                   fmi3FMUState *state) {
-    return (fmi3Status)instance_deserialize_state(instance, "fmi3DeserializeFMUState", (const char *)serializedState,
-                                                  size, state);
 }
 
 fmi3Status fmi3GetDirectionalDerivative(fmi3Instance instance, const fmi3ValueReference unknowns[], size_t nUnknowns,
