@@ -3,20 +3,6 @@
  * Co-Simulation, no intermediate update and no early return (README, FMI 3.0). */
 #include "layer.h"
 
-fmi3Instance fmi3InstantiateCoSimulation(fmi3String instanceName, fmi3String instantiationToken,
-                                         fmi3String resourcePath, fmi3Boolean visible, fmi3Boolean loggingOn,
-                                         fmi3Boolean eventModeUsed, fmi3Boolean earlyReturnAllowed,
-                                         const fmi3ValueReference requiredIntermediateVariables[],
-                                         size_t nRequiredIntermediateVariables,
-                                         fmi3InstanceEnvironment instanceEnvironment,
-                                         fmi3LogMessageCallback logMessage,
-                                         fmi3IntermediateUpdateCallback intermediateUpdate) {
-    (void)resourcePath, (void)visible, (void)earlyReturnAllowed, (void)requiredIntermediateVariables;
-    (void)intermediateUpdate; /* providesIntermediateUpdate="false": never called */
-    return fmi3_instantiate_co_simulation(instanceName, instantiationToken, loggingOn, eventModeUsed,
-                                          nRequiredIntermediateVariables, instanceEnvironment, logMessage);
-}
-
 fmi3Status fmi3EnterStepMode(fmi3Instance instance) {
     if (!instance_call_allowed(instance, "fmi3EnterStepMode", CALL_ENTER_STEP_MODE)) {
         return fmi3Error;

@@ -136,23 +136,6 @@ static inline void fmi3_step_outputs(fmi3Instance instance, Status status, fmi3B
     }
 }
 
-/* fmi3InstantiateCoSimulation's work: no FMU of the project has an event mode or intermediate
- * variables (refused); the rest is the layer's fmi3_instantiate. */
-static inline fmi3Instance fmi3_instantiate_co_simulation(fmi3String instanceName, fmi3String instantiationToken,
-                                                          fmi3Boolean loggingOn, fmi3Boolean eventModeUsed,
-                                                          size_t nRequiredIntermediateVariables,
-                                                          fmi3InstanceEnvironment instanceEnvironment,
-                                                          fmi3LogMessageCallback logMessage) {
-    if (eventModeUsed || nRequiredIntermediateVariables > 0) {
-        fmi3_refuse(instanceEnvironment, logMessage, "fmi3InstantiateCoSimulation",
-                    eventModeUsed ? "eventModeUsed, but hasEventMode is false"
-                                  : "the model has no intermediate variables");
-        return NULL;
-    }
-    return fmi3_instantiate("fmi3InstantiateCoSimulation", instanceName, instantiationToken, INTERFACE_CO_SIMULATION,
-                            loggingOn, instanceEnvironment, logMessage);
-}
-
 /* fmi3FreeInstance's work. */
 static inline void fmi3_free_instance(fmi3Instance instance) {
     if (instance != NULL) {

@@ -1,12 +1,33 @@
 /* fmi3/shared.c: the FMI 3.0 functions that every FMU of the project, Pendulum.fmu and the split
  * FMUs (split/layer3.c), passes to the shared instance unchanged (FMI 3.0 section 2.3): the
- * version, the refused Scheduled Execution, freeing, logging, terminating and FMU states
+ * version, instantiation in Co-Simulation (each layer's fmi3_instantiate checks its model's
+ * name and token), the refused Scheduled Execution, freeing, logging, terminating and FMU states
  * (instance/state.c; a split FMU's model bytes through its StateModel). Linked by each FMI 3.0
  * FMU; the functions whose work differs by model are in each one's own layer. */
 #include "layer.h"
 
 const char *fmi3GetVersion(void) {
     return fmi3Version;
+}
+
+fmi3Instance fmi3InstantiateCoSimulation(fmi3String instanceName, fmi3String instantiationToken,
+                                         fmi3String resourcePath, fmi3Boolean visible, fmi3Boolean loggingOn,
+                                         fmi3Boolean eventModeUsed, fmi3Boolean earlyReturnAllowed,
+                                         const fmi3ValueReference requiredIntermediateVariables[],
+                                         size_t nRequiredIntermediateVariables,
+                                         fmi3InstanceEnvironment instanceEnvironment,
+                                         fmi3LogMessageCallback logMessage,
+                                         fmi3IntermediateUpdateCallback intermediateUpdate) {
+    (void)resourcePath, (void)visible, (void)earlyReturnAllowed, (void)requiredIntermediateVariables;
+    (void)intermediateUpdate; /* providesIntermediateUpdate="false": never called */
+    if (eventModeUsed || nRequiredIntermediateVariables > 0) { /* no FMU of the project has either */
+        fmi3_refuse(instanceEnvironment, logMessage, "fmi3InstantiateCoSimulation",
+                    eventModeUsed ? "eventModeUsed, but hasEventMode is false"
+                                  : "the model has no intermediate variables");
+        return NULL;
+    }
+    return fmi3_instantiate("fmi3InstantiateCoSimulation", instanceName, instantiationToken, INTERFACE_CO_SIMULATION,
+                            loggingOn, instanceEnvironment, logMessage);
 }
 
 fmi3Instance fmi3InstantiateScheduledExecution(fmi3String instanceName, fmi3String instantiationToken,

@@ -38,20 +38,6 @@ fmi3Instance fmi3_instantiate(const char *function, fmi3String instanceName, fmi
                              loggingOn, environment, logMessage, function);
 }
 
-fmi3Instance fmi3InstantiateCoSimulation(fmi3String instanceName, fmi3String instantiationToken,
-                                         fmi3String resourcePath, fmi3Boolean visible, fmi3Boolean loggingOn,
-                                         fmi3Boolean eventModeUsed, fmi3Boolean earlyReturnAllowed,
-                                         const fmi3ValueReference requiredIntermediateVariables[],
-                                         size_t nRequiredIntermediateVariables,
-                                         fmi3InstanceEnvironment instanceEnvironment,
-                                         fmi3LogMessageCallback logMessage,
-                                         fmi3IntermediateUpdateCallback intermediateUpdate) {
-    (void)resourcePath, (void)visible, (void)earlyReturnAllowed, (void)requiredIntermediateVariables;
-    (void)intermediateUpdate; /* providesIntermediateUpdate="false": never called */
-    return fmi3_instantiate_co_simulation(instanceName, instantiationToken, loggingOn, eventModeUsed,
-                                          nRequiredIntermediateVariables, instanceEnvironment, logMessage);
-}
-
 fmi3Status fmi3ExitInitializationMode(fmi3Instance instance) {
     return (fmi3Status)split_exit_initialization(instance, "fmi3ExitInitializationMode");
 }
