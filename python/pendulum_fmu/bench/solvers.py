@@ -18,10 +18,10 @@ forward Euler on it (the baseline: how today's co-simulation FMUs integrate).
 
 A Python run predicted to take longer than ``--budget`` seconds is skipped and listed as
 such (on P3 most of the slow peers at tight tolerances); the C driver runs everything.
-:func:`run_study` returns what it measured (:class:`Study`), for a caller that judges it
-further (the repository's ``tests/lab/solver_targets.py`` holds it to the project's targets).
 
 ``pendulum-fmu bench solvers`` runs it (:mod:`pendulum_fmu.cli.bench.solvers` reads its options).
+:func:`run_study` returns what it measured (:class:`Study`), for a caller that judges it
+further (the repository's ``tests/lab/solver_targets.py`` holds it to the project's targets).
 """
 
 from __future__ import annotations

@@ -18,6 +18,7 @@ EPILOG = """\
 examples:
   bash scripts/bench.sh solvers --quick             # in the repository: builds the C driver, about 30 s
   bash scripts/bench.sh solvers --out out/bench    # the full study, about 6 min on 2 cores
+                                                   # (the script also judges the project's targets)
   pendulum-fmu bench solvers --driver build/tests/c/bench_solvers --problems P1 --no-peers
 """
 NO_DRIVER = ("the study times the FMU's solvers with the C driver tests/c/bench_solvers, a test program of the "
