@@ -1,12 +1,14 @@
 #!/usr/bin/env bash
-# The benchmarks that time the repository's C test programs, started through pendulum-fmu bench.
-# The package carries no test program and looks for none; this script builds the one a
-# benchmark needs, with the FMU, and hands it to the command:
-#   bash scripts/bench.sh solvers [options of bench solvers]  # tests/c/bench_solvers: the FMU's solvers and the floor in C
+# The benchmarks that time the repository's C test programs. The package carries no test
+# program and looks for none; this script builds the one a benchmark needs, with the FMU, and
+# hands it over:
+#   bash scripts/bench.sh solvers [options of bench solvers]  # tests/c/bench_solvers: the FMU's solvers and the floor
+#                                                             # in C, the study judged against the solvers' targets
+#                                                             # (tests/lab/solver_targets.py)
 #   bash scripts/bench.sh exact [options of bench exact]      # tests/c/bench_exact: the C columns (eval, batch, GSL, init)
 # $PENDULUM_FMU_BUILD_DIR chooses the CMake build folder (default: build/, configured here if new).
 source "$(dirname "${BASH_SOURCE[0]}")/setup-env.sh"
-usage="usage: bash scripts/bench.sh solvers|exact [options of pendulum-fmu bench solvers|exact]"
+usage="usage: bash scripts/bench.sh solvers|exact [options of tests/lab/solver_targets.py|pendulum-fmu bench exact]"
 if [ $# -lt 1 ]; then
     echo "$usage" >&2
     exit 2
@@ -20,7 +22,8 @@ fi
 case "$benchmark" in
     solvers)
         cmake --build "$build" --target fmu bench_solvers --parallel "$(nproc)" >&2
-        exec pendulum-fmu bench solvers --fmu "$build/Pendulum.fmu" --driver "$build/tests/c/bench_solvers" "$@"
+        exec "$VENV/bin/python" tests/lab/solver_targets.py --fmu "$build/Pendulum.fmu" \
+            --driver "$build/tests/c/bench_solvers" "$@"
         ;;
     exact)
         # the Python columns from this build's pendulum_exact too, not from another build's

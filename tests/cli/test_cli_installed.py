@@ -305,13 +305,14 @@ def test_installed_bench_exact_leaves_out_the_c_columns(installed: Path, folder:
     assert re.search(r"^ +80 deg +[\d.]+ +[\d.]+ +[\d.]+$", done.stdout, re.MULTILINE), done.stdout
 
 
-# -- the smoke run of bench solvers (a source checkout: it needs the C driver) -----------
-def test_bench_solvers_quick_passes_with_an_honest_report(tmp_path: Path) -> None:
+# -- the smoke run of the solvers' targets (a source checkout: it needs the C driver) ------
+def test_solver_targets_quick_pass_with_an_honest_report(fmu_path: Path, tmp_path: Path) -> None:
     import sys
 
-    driver = REPO / "build" / "tests" / "c" / "bench_solvers"
-    done = subprocess.run([sys.executable, "-m", "pendulum_fmu", "bench", "solvers", "--quick", "--driver", str(driver),
-                           "--out", str(tmp_path)], cwd=REPO, capture_output=True, text=True, timeout=600, check=False)
+    driver = fmu_path.parent / "tests" / "c" / "bench_solvers"
+    done = subprocess.run([sys.executable, str(REPO / "tests" / "lab" / "solver_targets.py"), "--quick",
+                           "--fmu", str(fmu_path), "--driver", str(driver), "--out", str(tmp_path)], cwd=REPO,
+                          capture_output=True, text=True, timeout=600, check=False)
     report = (tmp_path / "report.md").read_text()
     # only a wall-time target (T3, within 3x of the floor; T2's "3x faster") may be unmet, as the
     # machine's load decides it (no timed test: tests/package/test_no_timed_tests.py)

@@ -74,9 +74,30 @@ def test_fmi2_and_fmi3_give_the_same_numbers(fmu_path: Path, fmu3_path: Path) ->
 
 
 def _initialized(runner: FmuRunner, pendulum: Pendulum) -> object:
-    slave = runner._fresh_slave()
-    runner._initialize(slave, pendulum, Method("rkn", 1e-8))
-    return slave
+    return runner.initialized(pendulum, Method("rkn", 1e-8))
+
+
+@pytest.mark.parametrize("fixture", ["fmu_path", "fmu3_path"])
+def test_a_loop_of_ones_own_on_the_initialized_instance_gives_the_runs_numbers(
+        fixture: str, request: pytest.FixtureRequest) -> None:
+    """FmuRunner.initialized hands out the instance run() uses, initialized alike: a caller's own
+    loop over it gives run()'s outputs bit for bit, and the FMU's warnings reach runner.log."""
+    fmu: Path = request.getfixturevalue(fixture)
+    with FmuRunner(fmu, loop="c") as runner:
+        method = Method("rkn", 1e-8)
+        for pendulum, grid in ((CASES[1], TimeGrid(3, "periods", 40)), (HARD_CASE, TimeGrid(120.0, "s", 10))):
+            trajectory = runner.run(pendulum, method, grid)
+            slave = runner.initialized(pendulum, method)
+            loop = driver.OutputLoop(slave, runner.fmi_version, [runner.vr[name] for name in RECORDED])
+            rows = np.empty(trajectory.result.size, dtype=RESULT_DTYPE)
+            rows["time"] = trajectory.result["time"]
+            loop.run(rows["time"], rows, RECORDED[0], runner.log)
+            slave.terminate()
+            assert rows.tobytes() == trajectory.result.tobytes()
+            assert runner.log.warnings() == trajectory.warnings
+        assert trajectory.warnings   # the hard case warned, through the caller's loop too
+        with pytest.raises(ValueError, match="not a Co-Simulation solver"):
+            runner.initialized(CASES[0], Method("cvode", 1e-8))
 
 
 @pytest.mark.parametrize("backend", ["c", "python"])
@@ -88,13 +109,13 @@ def test_a_failing_do_step_stops_the_loop_with_its_reason(fixture: str, request:
         slave = _initialized(runner, CASES[0])
         loop = driver.OutputLoop(slave, runner.fmi_version, [runner.vr[name] for name in RECORDED], backend)
         rows = np.zeros(3, dtype=RESULT_DTYPE)
-        loop.run(np.array([0.0, 0.1, 0.2]), rows, "theta", runner._log)
+        loop.run(np.array([0.0, 0.1, 0.2]), rows, "theta", runner.log)
         assert np.all(rows["theta"] != 0.0) and np.all(rows["y"] != 0.0)
         # The FMU stands at 0.2; a DoStep announced from 0.3 breaks the standard's rule that
         # currentCommunicationPoint is the FMU's time (FMI 2.0.x 4.2.2, FMI 3.0 4.2.1).
         later = np.zeros(2, dtype=RESULT_DTYPE)
         with pytest.raises(SimulationError, match=r"^DoStep at t = 0\.3 s returned (Error|Discard): \S"):
-            loop.run(np.array([0.3, 0.4]), later, "theta", runner._log)
+            loop.run(np.array([0.3, 0.4]), later, "theta", runner.log)
         assert later["theta"][1] == 0.0   # the failed point is not written
 
 
@@ -108,7 +129,7 @@ def test_a_failing_get_stops_the_loop_at_its_point(fixture: str, request: pytest
         loop = driver.OutputLoop(slave, runner.fmi_version, [runner.vr["theta"], 999], backend)
         rows = np.zeros(4, dtype=[("theta", np.float64), ("bad", np.float64)])
         with pytest.raises(SimulationError, match=r"^GetReal at t = 0 s returned Error: .+"):
-            loop.run(np.array([0.0, 0.1, 0.2, 0.3]), rows, "theta", runner._log)
+            loop.run(np.array([0.0, 0.1, 0.2, 0.3]), rows, "theta", runner.log)
 
 
 def test_the_loop_checks_the_layout_it_writes_into(fmu_path: Path) -> None:
@@ -117,9 +138,9 @@ def test_the_loop_checks_the_layout_it_writes_into(fmu_path: Path) -> None:
         loop = driver.OutputLoop(slave, 2, [runner.vr["theta"], runner.vr["omega"]])
         gap = np.zeros(3, dtype=[("theta", np.float64), ("n", np.int64), ("omega", np.float64)])
         with pytest.raises(ValueError, match="not the float64 right after"):
-            loop.run(np.array([0.0, 0.1, 0.2]), gap, "theta", runner._log)
+            loop.run(np.array([0.0, 0.1, 0.2]), gap, "theta", runner.log)
         with pytest.raises(ValueError, match="one record per time"):
-            loop.run(np.array([0.0, 0.1, 0.2]), np.zeros(2, dtype=RESULT_DTYPE), "theta", runner._log)
+            loop.run(np.array([0.0, 0.1, 0.2]), np.zeros(2, dtype=RESULT_DTYPE), "theta", runner.log)
 
 
 @pytest.mark.parametrize("fixture", ["fmu_path", "fmu3_path"])
@@ -250,7 +271,11 @@ def test_fmi3_terminate_and_early_return_stop_the_loop(backend: driver.Backend) 
 
     times = np.array([0.0, 1.0, 2.0, 3.0])
     rows = np.zeros(4, dtype=[("a", np.float64)])
+    # each stand-in named while its loop runs: the loop keeps only its callbacks' addresses, and a
+    # stand-in left to the garbage collector would free them under the running loop
+    terminating = _ScriptedFmu(3, [0, 0, 0], terminate_at=1)
     with pytest.raises(SimulationError, match=r"^fmi3DoStep asked to terminate the simulation at t = 1\.5 s$"):
-        driver.OutputLoop(_ScriptedFmu(3, [0, 0, 0], terminate_at=1), 3, [1], backend).run(times, rows, "a", FmuLog())
+        driver.OutputLoop(terminating, 3, [1], backend).run(times, rows, "a", FmuLog())
+    returning = _ScriptedFmu(3, [0, 0, 0], early_at=0)
     with pytest.raises(SimulationError, match=r"^fmi3DoStep returned early at t = 0\.5 s"):
-        driver.OutputLoop(_ScriptedFmu(3, [0, 0, 0], early_at=0), 3, [1], backend).run(times, rows, "a", FmuLog())
+        driver.OutputLoop(returning, 3, [1], backend).run(times, rows, "a", FmuLog())

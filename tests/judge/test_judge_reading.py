@@ -339,7 +339,9 @@ def test_bench_judge_prints_its_table(fmu_path: Path) -> None:
     done = cli("bench", "judge", "--rows", "1000", "--interface", "CS", "ME", "--fmu", str(fmu_path))
     assert done.returncode == 0, done.stderr
     lines = done.stdout.splitlines()
-    assert any(line.startswith("| 1e3 | CS |") and "| PASS | yes |" in line for line in lines), done.stdout
+    # the figures alone: the targets they are held to are the lab's (tests/lab/judge_targets.py)
+    assert any(line.startswith("| 1e3 | CS |") and line.endswith("| PASS |") for line in lines), done.stdout
+    assert "target" not in done.stdout and "within" not in done.stdout
     assert any(line.startswith("| 1e3 | ME |") and "| PASS |" in line for line in lines), done.stdout
     figures = [line for line in lines if line.startswith("bench_judge rows=1000 interface=CS")]
     assert len(figures) == 1 and "passed=True" in figures[0]

@@ -273,9 +273,10 @@ TESTS = REPO / "tests"
 
 def misplaced_test_files(root: Path) -> list[str]:
     """The Python files of ``root`` (a ``tests/`` folder) out of its layout: a file at the top
-    other than ``conftest.py``, a test module in ``helpers/`` or a helper outside it, a test
-    module deeper than one folder, and test modules of one name in two folders (pytest imports
-    each by its name: the second would not be collected)."""
+    other than ``conftest.py``, a test module in ``helpers/`` or ``lab/`` (the team's scripts,
+    which pytest does not collect) or a helper outside ``helpers/``, a test module deeper than
+    one folder, and test modules of one name in two folders (pytest imports each by its name:
+    the second would not be collected)."""
     found = []
     seen: dict[str, str] = {}
     for path in sorted(root.rglob("*.py")):
@@ -286,9 +287,9 @@ def misplaced_test_files(root: Path) -> list[str]:
             continue
         if not folder and path.name != "conftest.py":
             found.append(f"{where}: at the top of tests/ (a test goes in a folder by what it tests)")
-        elif folder == "helpers" and is_test:
-            found.append(f"{where}: a test module among the helpers")
-        elif folder and folder != "helpers" and not is_test:
+        elif folder in ("helpers", "lab") and is_test:
+            found.append(f"{where}: a test module among the {'helpers' if folder == 'helpers' else 'lab scripts'}")
+        elif folder and folder not in ("helpers", "lab") and not is_test:
             found.append(f"{where}: a shared module outside tests/helpers/")
         elif len(where.parts) > 2:
             found.append(f"{where}: more than one folder deep")
@@ -300,11 +301,13 @@ def misplaced_test_files(root: Path) -> list[str]:
 
 def test_tests_checker_finds_misplaced_files(tmp_path: Path) -> None:
     for name in ("conftest.py", "test_top.py", "helpers/cases.py", "helpers/test_in_helpers.py",
-                 "fmu/test_a.py", "fmu/cases.py", "judge/test_a.py", "judge/deep/test_b.py", "c/x.py"):
+                 "fmu/test_a.py", "fmu/cases.py", "judge/test_a.py", "judge/deep/test_b.py", "c/x.py",
+                 "lab/targets.py", "lab/test_in_lab.py"):
         (tmp_path / name).parent.mkdir(parents=True, exist_ok=True)
         (tmp_path / name).write_text("")
     assert [line.split(":")[0] for line in misplaced_test_files(tmp_path)] == [
-        "fmu/cases.py", "helpers/test_in_helpers.py", "judge/deep/test_b.py", "judge/test_a.py", "test_top.py"]
+        "fmu/cases.py", "helpers/test_in_helpers.py", "judge/deep/test_b.py", "judge/test_a.py", "lab/test_in_lab.py",
+        "test_top.py"]
 
 
 def test_tests_are_in_folders_by_what_they_test() -> None:

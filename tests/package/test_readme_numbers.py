@@ -173,13 +173,9 @@ def test_solver_evaluation_ratio_is_the_printed_one(fmu_path: Path, tmp_path: Pa
                            "--driver", str(driver), "--problems", "P1", "--out", str(tmp_path)], cwd=REPO,
                           capture_output=True, text=True, timeout=1200, check=False)
     printed = done.stdout
-    # The counts do not depend on the machine; the benchmark's wall-time targets do (T3, within
-    # 3x of the floor, read 3.01x on a loaded machine; T2's "3x faster"): exit 1 is accepted
-    # when only such a target is unmet (no timed test: tests/package/test_no_timed_tests.py).
-    unmet = [line for line in printed.splitlines() if line.startswith("| T") and "| NO |" in line]
-    timing_only = bool(unmet) and all("wall time" in line or "faster" in line for line in unmet)
-    assert done.returncode == 0 or (done.returncode == 1 and timing_only), \
-        f"bench solvers failed: {printed[-2000:]}{done.stderr[-2000:]}"
+    # The counts do not depend on the machine; the command judges no target (the lab does:
+    # tests/lab/solver_targets.py), so it exits 0 when every run ran.
+    assert done.returncode == 0, f"bench solvers failed: {printed[-2000:]}{done.stderr[-2000:]}"
     table = printed.split("| error | rkn | solve_ivp DOP853 | ode dop853 | ratio |", 1)
     assert len(table) == 2, f"bench solvers no longer prints the rkn / DOP853 table:\n{printed[-2000:]}"
     ratios = [float(line.strip("|").split("|")[-1]) for line in table[1].strip().splitlines()[1:]

@@ -6,7 +6,7 @@ from pathlib import Path
 
 import pytest
 
-from pendulum_fmu.bench.masters import Point, measure, orders, table
+from pendulum_fmu.bench.masters import MasterRun, measure, orders, table
 from pendulum_fmu.cli.main import main
 from pendulum_fmu.split.masters import MASTERS
 
@@ -38,8 +38,8 @@ def test_bench_masters_with_one_engine() -> None:
 
 
 def test_orders_and_table_from_points() -> None:
-    points = [Point("m", "master", 0.1, 1e-2, 0.1), Point("m", "master", 0.05, 2.5e-3, 0.2),
-              Point("e (FMI 3)", "engine", 0.1, float("nan"), float("nan"), "cannot: no")]
+    points = [MasterRun("m", "master", 0.1, 1e-2, 0.1), MasterRun("m", "master", 0.05, 2.5e-3, 0.2),
+              MasterRun("e (FMI 3)", "engine", 0.1, float("nan"), float("nan"), "cannot: no")]
     assert orders(points)["m"] == pytest.approx([2.0])
     lines = table(points)
     assert lines[3] == "| m | 0.05 | reference master | 0.0025 | 2.00 | 0.2 |"

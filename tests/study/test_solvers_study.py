@@ -56,9 +56,9 @@ def test_energy_errors_of_the_exact_motion_are_rounding() -> None:
     t = np.linspace(0.0, 4 * ellipk(k * k) / w0, 200)
     sn, cn, _, _ = ellipj(w0 * t + ellipk(k * k), k * k)
     theta, omega = 2 * np.arcsin(k * sn), 2 * k * w0 * cn
-    worst, _, _ = energy_errors(theta, omega, cases("P1")[3].energy0)
+    worst, _, _ = energy_errors(theta, omega, cases("P1")[3])
     assert worst < 1e-13
-    worst, _, _ = energy_errors(theta * 1.001, omega, cases("P1")[3].energy0)
+    worst, _, _ = energy_errors(theta * 1.001, omega, cases("P1")[3])
     assert worst > 1e-4
 
 
@@ -111,8 +111,9 @@ def test_a_peer_run_is_measured_against_the_same_truth(unzipped: Path) -> None:
 def test_bench_solvers_quick_run_writes_its_outputs(fmu_path: Path, driver: Path, tmp_path: Path) -> None:
     code = main(["bench", "solvers", "--fmu", str(fmu_path), "--driver", str(driver), "--out", str(tmp_path),
                  "--problems", "P1,P2", "--quick", "--no-peers"])
-    assert code in (0, 1)  # 1: a timing target missed on a busy machine; the outputs are still written
+    assert code == 0  # every run ran (the targets are the lab's: tests/lab/solver_targets.py)
     report = (tmp_path / "report.md").read_text()
+    assert "## Targets" not in report
     assert "| rkn (FMU, C driver) |" in report
     assert "equal the C driver's: 16 of 16 points" in report
     assert (tmp_path / "wp_P1.png").stat().st_size > 10_000 and (tmp_path / "wp_P2.png").exists()

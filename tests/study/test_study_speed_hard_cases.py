@@ -125,7 +125,7 @@ def test_cvode_evaluations_match_the_benchmarks_count(fmu_path: Path) -> None:
     unzipped = Path(extract(str(fmu_path)))
     with FmuRunner(fmu_path) as loaded:
         for tol in (1e-6, 1e-10):
-            theirs = run_fmu_me(unzipped, make_grid(unzipped, Case("P1", 80.0, 10.0), 50), "cvode", tol)
+            theirs = run_fmu_me(unzipped, make_grid(unzipped, Case.from_rest("P1", 80.0, 10.0), 50), "cvode", tol)
             ours = loaded.run(Pendulum.from_degrees(80.0), Method("cvode", tol), GRID)
             assert ours.derivative_calls == theirs.rhs_evaluations > 100
             assert ours.max_error == theirs.max_err

@@ -19,19 +19,20 @@ import numpy as np
 
 from pendulum_fmu.bench.reference import DIGITS, closed_form, exact_frequency, frequency, max_abs_diff, omega_scale
 from pendulum_fmu.fmu.exact_port import ExactPort
+from pendulum_fmu.spec import InitialValueProblem
 
-CASES: dict[str, tuple[float, float, float, float]] = {  # name: theta0 (rad), omega0 (rad/s), L (m), g (m/s^2)
-    "at rest at the bottom": (0.0, 0.0, 1.0, 9.81),
-    "10 deg": (math.radians(10.0), 0.0, 1.0, 9.81),
-    "90 deg": (math.radians(90.0), 0.0, 1.0, 9.81),
-    "170 deg": (math.radians(170.0), 0.0, 1.0, 9.81),
-    "pi - 1e-6": (math.pi - 1e-6, 0.0, 1.0, 9.81),
-    "pi - 1e-12": (math.pi - 1e-12, 0.0, 1.0, 9.81),
-    "pi (the double)": (math.pi, 0.0, 1.0, 9.81),
-    "separatrix, forward": (0.0, 5.0, 1.0, 6.25),          # g/L = 6.25: w0 = 2.5 exactly
-    "separatrix, backward": (0.0, -5.0, 1.0, 6.25),
-    "rotation, forward": (0.5, 2.5, 1.0, 1.0),
-    "rotation, backward": (0.5, -2.5, 1.0, 1.0),
+CASES: dict[str, InitialValueProblem] = {
+    "at rest at the bottom": InitialValueProblem(0.0),
+    "10 deg": InitialValueProblem.from_degrees(10.0),
+    "90 deg": InitialValueProblem.from_degrees(90.0),
+    "170 deg": InitialValueProblem.from_degrees(170.0),
+    "pi - 1e-6": InitialValueProblem(math.pi - 1e-6),
+    "pi - 1e-12": InitialValueProblem(math.pi - 1e-12),
+    "pi (the double)": InitialValueProblem(math.pi),
+    "separatrix, forward": InitialValueProblem(0.0, 5.0, g=6.25),          # g/L = 6.25: w0 = 2.5 exactly
+    "separatrix, backward": InitialValueProblem(0.0, -5.0, g=6.25),
+    "rotation, forward": InitialValueProblem(0.5, 2.5, g=1.0),
+    "rotation, backward": InitialValueProblem(0.5, -2.5, g=1.0),
 }
 LONG_CASE = "170 deg, w0 = 1, after 1e6 periods"
 
@@ -75,30 +76,27 @@ def measure(fmu: Path, points: int = 301) -> list[Accuracy]:
     """
     results = []
     with ExactPort(fmu) as port:
-        for name, (theta0, omega0, length, gravity) in CASES.items():
-            w0 = frequency(length, gravity)
-            port.initialize(theta0, omega0, length, gravity)
+        for name, problem in CASES.items():
+            port.initialize(problem.theta0, problem.omega0, problem.L, problem.g)
             period = port.period()
-            horizon = 3.0 * period if math.isfinite(period) else 40.0 / w0
+            horizon = 3.0 * period if math.isfinite(period) else 40.0 / frequency(problem.L, problem.g)
             times = np.linspace(0.0, horizon, points)
-            results.append(_compare(name, port, theta0, omega0, length, gravity, times))
-        theta0 = math.radians(170.0)
-        port.initialize(theta0, 0.0, 1.0, 1.0)
+            results.append(_compare(name, port, problem, times))
+        long_case = InitialValueProblem.from_degrees(170.0, g=1.0)
+        port.initialize(long_case.theta0, 0.0, 1.0, 1.0)
         period = port.period()
         times = 1e6 * period + np.linspace(0.0, period, points)
-        long_run = _compare(LONG_CASE, port, theta0, 0.0, 1.0, 1.0, times)
+        long_run = _compare(LONG_CASE, port, long_case, times)
         results.append(Accuracy(LONG_CASE, long_run.theta_error, long_run.omega_error,
-                                _naive_scipy_error(theta0, times)))
+                                _naive_scipy_error(long_case.theta0, times)))
     return results
 
 
-def _compare(name: str, port: ExactPort, theta0: float, omega0: float, length: float, gravity: float,
-             times: np.ndarray) -> Accuracy:
-    w0 = frequency(length, gravity)
+def _compare(name: str, port: ExactPort, problem: InitialValueProblem, times: np.ndarray) -> Accuracy:
     theta, omega = port.evaluate(times)
-    ref_theta, ref_omega, _ = closed_form(theta0, omega0, exact_frequency(length, gravity), times)
+    ref_theta, ref_omega, _ = closed_form(problem.theta0, problem.omega0, exact_frequency(problem.L, problem.g), times)
     return Accuracy(name, max_abs_diff(theta, ref_theta),
-                    max_abs_diff(omega, ref_omega) / omega_scale(ref_omega, w0))
+                    max_abs_diff(omega, ref_omega) / omega_scale(ref_omega, frequency(problem.L, problem.g)))
 
 
 def _naive_scipy_error(theta0: float, times: np.ndarray) -> float:

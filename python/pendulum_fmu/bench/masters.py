@@ -35,7 +35,7 @@ STOP = 10.0
 
 
 @dataclass(frozen=True)
-class Point:
+class MasterRun:
     """One run: a reference master or an engine at one H.
 
     Attributes
@@ -81,7 +81,7 @@ def _judged(path: Path) -> str:
 
 
 def measure(steps: tuple[float, ...] = STEPS, stop: float = STOP, engines: bool = True,
-            fmi_versions: tuple[int, ...] = (2, 3)) -> list[Point]:
+            fmi_versions: tuple[int, ...] = (2, 3)) -> list[MasterRun]:
     """Run every reference master and engine at every H (see the module's docstring).
 
     Parameters
@@ -97,13 +97,13 @@ def measure(steps: tuple[float, ...] = STEPS, stop: float = STOP, engines: bool 
 
     Returns
     -------
-    list of Point
+    list of MasterRun
     """
     points = []
     for master in MASTERS:
         for H in steps:
             run = run_master(master, H, stop)
-            points.append(Point(master.name, "master", H, run.error, run.seconds))
+            points.append(MasterRun(master.name, "master", H, run.error, run.seconds))
     if not engines:
         return points
     with tempfile.TemporaryDirectory(prefix="pendulum-bench-masters-") as folder:
@@ -117,14 +117,14 @@ def measure(steps: tuple[float, ...] = STEPS, stop: float = STOP, engines: bool 
                     try:
                         engine_run = run_engine(engine, H, stop, path, version)
                     except (EngineError, Exception) as error:  # noqa: BLE001 (any engine's own failure)
-                        points.append(Point(name, "engine", H, math.nan, math.nan, f"cannot: {error}"))
+                        points.append(MasterRun(name, "engine", H, math.nan, math.nan, f"cannot: {error}"))
                         break
                     note = _judged(path)
-                    points.append(Point(name, "engine", H, engine_error(path, H), engine_run.seconds, note))
+                    points.append(MasterRun(name, "engine", H, engine_error(path, H), engine_run.seconds, note))
     return points
 
 
-def orders(points: list[Point]) -> dict[str, list[float]]:
+def orders(points: list[MasterRun]) -> dict[str, list[float]]:
     """The observed orders of each master or engine over its consecutive H."""
     found: dict[str, list[float]] = {}
     for name in dict.fromkeys(p.name for p in points):
@@ -134,7 +134,7 @@ def orders(points: list[Point]) -> dict[str, list[float]]:
     return found
 
 
-def table(points: list[Point]) -> list[str]:
+def table(points: list[MasterRun]) -> list[str]:
     """The Markdown table: one row per master or engine and H: conformance, error, order, wall time."""
     found = orders(points)
     lines = ["| master or engine | H (s) | conformance; identification | error in theta (rad) | order | wall s |",
@@ -159,7 +159,7 @@ def versions() -> str:
     return ", ".join(f"{e} {engine_version(e) or 'not installed'}" for e in engine_names())
 
 
-def figure(points: list[Point], path: Path) -> Path:
+def figure(points: list[MasterRun], path: Path) -> Path:
     """Error against wall time, log-log, one line per master or engine; written to ``path`` (PNG)."""
     import matplotlib
 

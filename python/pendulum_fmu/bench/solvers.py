@@ -7,7 +7,7 @@ measures their true error against the FMU's exact solution and their cost, and w
 - ``points.csv``: the runs aggregated per problem (P1: its four amplitudes together);
 - ``floors.csv``: the cost of the exact solution at the same points (C driver);
 - ``wp_P1.png``, ``wp_P2.png``, ``wp_P3.png``: the work-precision diagrams;
-- ``report.md``: the tables, the default's ranking and the targets, each met or not.
+- ``report.md``: the tables, the default's ranking and its cost beside DOP853's.
 
 Problems: P1 75, 80, 85, 90 deg over 10 periods; P2 179.99 deg over 20 periods; P3 90 deg
 over 10,000 periods; all from rest, 50 points a period. Methods: the FMU's dopri5, rk4, rkn
@@ -20,20 +20,30 @@ A Python run predicted to take longer than ``--budget`` seconds is skipped and l
 such (on P3 most of the slow peers at tight tolerances); the C driver runs everything.
 
 ``pendulum-fmu bench solvers`` runs it (:mod:`pendulum_fmu.cli.bench.solvers` reads its options).
+:func:`run_study` returns what it measured (:class:`Study`), for a caller that judges it
+further (the repository's ``tests/lab/solver_targets.py`` holds it to the project's targets).
 """
 
 from __future__ import annotations
 
 import math
 import shutil
-import sys
 import time
 from collections.abc import Callable
+from dataclasses import dataclass
 from pathlib import Path
 
 from fmpy import extract, read_model_description
 
-from pendulum_fmu.bench.workprecision.analysis import Point, aggregate, best_method, curve, log_slope
+from pendulum_fmu.bench.workprecision.analysis import (
+    LEVELS,
+    Point,
+    against_dop853,
+    aggregate,
+    best_method,
+    curve,
+    log_slope,
+)
 from pendulum_fmu.bench.workprecision.cdriver import Floor, run_driver, shared_library
 from pendulum_fmu.bench.workprecision.problems import Grid, cases, make_grid
 from pendulum_fmu.bench.workprecision.report import cost_table, energy_table, plot_problem, write_csv
@@ -45,15 +55,7 @@ from pendulum_fmu.bench.workprecision.runs import (
     run_ode_dop853,
     run_solve_ivp,
 )
-from pendulum_fmu.bench.workprecision.targets import (
-    T1_LEVELS,
-    TargetOutcome,
-    default_near_separatrix,
-    default_vs_dop853,
-    fmpy_against_dop853,
-    grid_independence,
-    wall_against_floor,
-)
+from pendulum_fmu.errors import SimulationError
 from pendulum_fmu.spec import CS_SOLVERS
 
 FMU_TOLS: tuple[float, ...] = tuple(float(f"1e-{k}") for k in range(3, 13))
@@ -151,16 +153,10 @@ def python_runs(unzipped: Path, grid: Grid, tols_fmu: tuple[float, ...], tols_pe
     return runs
 
 
-def _markdown_targets(verdicts: list[TargetOutcome]) -> str:
-    lines = ["| target | met | measured |", "|---|---|---|"]
-    lines += [f"| {v.name} | {'yes' if v.met else 'NO'} | {v.figure} |" for v in verdicts]
-    return "\n".join(lines)
-
-
-def report(points: list[Point], floors: list[Floor], verdicts: list[TargetOutcome],
-           t1_rows: list[tuple[float, float, float, float]], default: str, problems: list[str],
-           p3_periods: float) -> str:
-    """The Markdown report: tables per problem, the default's ranking, the targets."""
+def report(points: list[Point], floors: list[Floor], default: str, problems: list[str], p3_periods: float,
+           quick: bool = False) -> str:
+    """The Markdown report: tables per problem, the default's ranking and its cost beside DOP853's
+    (a quick run's few tolerances: only at the errors the default reaches)."""
     parts = ["# Speed against error: the FMU's solvers and their peers", "",
              "Cells: right-hand-side evaluations to reach the error (and wall time per simulated period); "
              "'-': not reached. P1 sums its four amplitudes.", ""]
@@ -170,23 +166,58 @@ def report(points: list[Point], floors: list[Floor], verdicts: list[TargetOutcom
         if problem == "P3":
             parts += ["Energy behaviour (P3):", "", energy_table(points, problem), ""]
     if "P1" in problems:
-        ranking = best_method(points, "P1", "c", list(CS_SOLVERS), list(T1_LEVELS))
+        ranking = best_method(points, "P1", "c", list(CS_SOLVERS), list(LEVELS))
         parts += ["## The default", "", f"The FMU's default solver is `{default}`. Cheapest of the FMU's solvers "
                   "on P1 at each error level: " + ", ".join(f"{lvl:.0e}: {m or 'none'}" for lvl, m in ranking.items()),
                   ""]
-        parts += ["| error | " + default + " | solve_ivp DOP853 | ode dop853 | ratio |", "|---|---|---|---|---|"]
-        for level, ours, ivp, hairer in t1_rows:
-            best = min(ivp, hairer)
-            ratio = f"{ours / best:.2f}" if math.isfinite(best) else "DOP853 does not reach it"
-            parts.append(f"| {level:.0e} | {ours:,.0f} | {ivp:,.0f} | {hairer:,.0f} | {ratio} |".replace(",", " "))
-        parts.append("")
-    parts += ["## Targets", "", _markdown_targets(verdicts), ""]
+        rows = [row for row in against_dop853(points, default) if not quick or math.isfinite(row[1])]
+        if any(math.isfinite(ivp) or math.isfinite(hairer) for _, _, ivp, hairer in rows):  # with the peers
+            parts += ["| error | " + default + " | solve_ivp DOP853 | ode dop853 | ratio |", "|---|---|---|---|---|"]
+            for level, ours, ivp, hairer in rows:
+                best = min(ivp, hairer)
+                ratio = f"{ours / best:.2f}" if math.isfinite(best) else "DOP853 does not reach it"
+                parts.append(f"| {level:.0e} | {ours:,.0f} | {ivp:,.0f} | {hairer:,.0f} | {ratio} |".replace(",", " "))
+            parts.append("")
     return "\n".join(parts)
 
 
-def study(fmu: Path, driver: Path, out: Path, problems: list[str], budget_s: float = 30.0,
-          p3_periods: float = 10_000.0, points: int = 50, peers: bool = True, quick: bool = False) -> int:
-    """Run the study and write its files; print its progress and report.
+@dataclass(frozen=True)
+class Study:
+    """What one run of the study measured (its files are in ``out``).
+
+    Attributes
+    ----------
+    runs : list of Run
+        Every run, skipped and failed ones included.
+    points : list of Point
+        The runs aggregated per problem, runner, method and tolerance.
+    floors : list of Floor
+        The exact evaluation's cost at the same points (C driver).
+    default : str
+        The FMU's default solver.
+    problems : list of str
+        The problems run.
+    report : str
+        The Markdown of ``report.md``.
+    """
+
+    runs: list[Run]
+    points: list[Point]
+    floors: list[Floor]
+    default: str
+    problems: list[str]
+    report: str
+
+    @property
+    def failed(self) -> list[Run]:
+        """The runs whose solver gave up."""
+        return [r for r in self.runs if r.status == "failed"]
+
+
+def run_study(fmu: Path, driver: Path, out: Path, problems: list[str], budget_s: float = 30.0,
+              p3_periods: float = 10_000.0, points: int = 50, peers: bool = True, quick: bool = False,
+              log: Callable[[str], None] = lambda line: None) -> Study:
+    """Run the study and write its files.
 
     Parameters
     ----------
@@ -207,12 +238,19 @@ def study(fmu: Path, driver: Path, out: Path, problems: list[str], budget_s: flo
     peers : bool
         Also run the peers (else only the FMU's solvers).
     quick : bool
-        A smoke run: tolerances 1e-4 and 1e-8, P3 at most 100 periods, no targets 2 and 4.
+        A smoke run: tolerances 1e-4 and 1e-8, P3 at most 100 periods.
+    log : callable
+        Takes each line of progress and, last, the report and the summary line.
 
     Returns
     -------
-    int
-        0 when every target is met, 1 when one is not or a run failed.
+    Study
+        The runs, their points, the floors and the report.
+
+    Raises
+    ------
+    SimulationError
+        If the C driver cannot run.
     """
     fmu_tols, peer_tols, p3_tols, euler = FMU_TOLS, PEER_TOLS, P3_TOLS, EULER_STEPS
     if quick:
@@ -220,7 +258,6 @@ def study(fmu: Path, driver: Path, out: Path, problems: list[str], budget_s: flo
         euler = (1, 16)
         p3_periods = min(p3_periods, 100.0)
     out.mkdir(parents=True, exist_ok=True)
-    log = print
     started = time.perf_counter()
     unzipped = Path(extract(str(fmu)))
     try:
@@ -234,8 +271,7 @@ def study(fmu: Path, driver: Path, out: Path, problems: list[str], budget_s: flo
             c_runs, floors = run_driver(driver, shared_library(unzipped), problems, list(fmu_tols), p3_periods,
                                         points)
         except (RuntimeError, OSError) as error:  # OSError: a file the kernel cannot execute
-            print(f"pendulum-fmu bench solvers: error: the C driver {driver} failed: {error}", file=sys.stderr)
-            return 1
+            raise SimulationError(f"the C driver {driver} failed: {error}") from None
         runs: list[Run] = list(c_runs)
         budget = Budget(budget_s)
         hints: dict[tuple[str, str, float], float] = {}
@@ -257,33 +293,18 @@ def study(fmu: Path, driver: Path, out: Path, problems: list[str], budget_s: flo
         for problem in problems:
             plot_problem(aggregated, floors, problem, TITLES[problem].format(periods=p3_periods),
                          out / f"wp_{problem}.png")
-
-        verdicts: list[TargetOutcome] = []
-        t1_rows: list[tuple[float, float, float, float]] = []
-        if "P1" in problems and peers:
-            # --quick runs tolerances 1e-4 and 1e-8 only: target 1 is judged at the errors they reach.
-            verdict, t1_rows = default_vs_dop853(aggregated, default, reachable_only=quick)
-            verdicts.append(verdict)
-        if "P1" in problems:
-            verdicts.append(wall_against_floor(aggregated, floors, default)[0])
-        if "P2" in problems:
-            verdicts.append(default_near_separatrix(aggregated, default)[0])
-        if not quick:
-            log("targets 2 and 4 ...")
-            verdicts.append(fmpy_against_dop853(fmu, unzipped)[0])
-            verdicts.append(grid_independence(unzipped)[0])
         consistency = _fmpy_matches_c(aggregated)
-        text = report(aggregated, floors, verdicts, t1_rows, default, problems, p3_periods)
+        text = report(aggregated, floors, default, problems, p3_periods, quick)
         text += f"\nThe FMU's evaluation counts through fmpy equal the C driver's: {consistency}\n"
         text += f"\nTolerance proportionality of the default on P1 (slope of log error against log tol): " \
                 f"{log_slope(curve(aggregated, 'P1', 'c', default)):.2f}\n" if "P1" in problems else ""
         (out / "report.md").write_text(text)
         log(text)
-        failed = [r for r in runs if r.status == "failed"]
-        log(f"bench solvers: {len(runs)} runs ({len(failed)} failed, "
+        study = Study(runs, aggregated, floors, default, list(problems), text)
+        log(f"bench solvers: {len(runs)} runs ({len(study.failed)} failed, "
             f"{sum(r.status == 'skipped' for r in runs)} skipped over the budget) in "
             f"{time.perf_counter() - started:.0f} s; written to {out}")
-        return 0 if all(v.met for v in verdicts) and not failed else 1
+        return study
     finally:
         shutil.rmtree(unzipped, ignore_errors=True)
 
@@ -295,4 +316,3 @@ def _fmpy_matches_c(points: list[Point]) -> str:
              if p.runner == "fmpy" and p.status == "ok" and (p.problem, p.method, p.tol) in c]
     same = sum(a[0] == b[0] for a, b in pairs)
     return f"{same} of {len(pairs)} points"
-

@@ -39,13 +39,14 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from functools import partial
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
 from pendulum_fmu.fmu import driver
 from pendulum_fmu.fmu.library import exact
 from pendulum_fmu.fmu.runner import FmuRunner, reference_period
-from pendulum_fmu.spec import Method, Pendulum, TimeGrid
+from pendulum_fmu.spec import InitialValueProblem, Method, TimeGrid
 
 AMPLITUDE_DEG = 80.0
 PERIODS = 100
@@ -133,28 +134,28 @@ def measure(fmu: Path, rounds: int = 10) -> list[MethodTimes]:
     list of MethodTimes
         In the order of the module's list.
     """
-    pendulum = Pendulum.from_degrees(AMPLITUDE_DEG)
+    problem = InitialValueProblem.from_degrees(AMPLITUDE_DEG)
     grid = TimeGrid(PERIODS, "periods", POINTS_PER_PERIOD)
     scratch: list[Path] = []
     try:
         with FmuRunner(fmu) as runner, FmuRunner(fmu, loop="python") as python_runner:
-            period = runner.period(pendulum)
-            times = grid.times_array(reference_period(period, pendulum))
-            truth, _ = exact(pendulum.amplitude_rad, 0.0, pendulum.length, pendulum.gravity, times)
-            methods, rtol = _package_methods(runner, python_runner, pendulum, grid, times, truth)
-            methods += _fmpy_methods(runner, fmu, pendulum, times, truth, rtol, scratch)
+            period = runner.period(problem)  # type: ignore[arg-type]  # until FmuRunner takes InitialValueProblem
+            times = grid.times_array(reference_period(period, problem))  # type: ignore[arg-type]  # likewise
+            truth, _ = exact(problem.theta0, problem.omega0, problem.L, problem.g, times)
+            methods, rtol = _package_methods(runner, python_runner, problem, grid, times, truth)
+            methods += _fmpy_methods(runner, fmu, problem, times, truth, rtol, scratch)
             unavailable: list[MethodTimes] = []
-            for name, solve in ((NUMBALSODA, _numbalsoda(pendulum)), ("scipy ode dop853 (compiled)", _ode_dop853),
+            for name, solve in ((NUMBALSODA, _numbalsoda(problem)), ("scipy ode dop853 (compiled)", _ode_dop853),
                                 ("scipy solve_ivp DOP853", _solve_ivp_dop853)):
                 if isinstance(solve, str):
                     unavailable.append(MethodTimes(name, (), times.size, math.nan, solve))
                     continue
-                peer_rtol, error = _loosest(partial(solve, pendulum, times), truth)
+                peer_rtol, error = _loosest(partial(solve, problem, times), truth)
                 if peer_rtol is None:
                     unavailable.append(MethodTimes(name, (), times.size, error,
                                               f"never <= {TARGET_ERROR:g} down to rtol {PEER_TOLERANCES[-1]:g}"))
                     continue
-                methods.append(_Method(name, partial(solve, pendulum, times, peer_rtol), error,
+                methods.append(_Method(name, partial(solve, problem, times, peer_rtol), error,
                                        f"rtol {peer_rtol:g}, atol rtol/100"))
             seconds: dict[str, list[float]] = {m.name: [] for m in methods}
             for method in methods:
@@ -183,23 +184,24 @@ def measure(fmu: Path, rounds: int = 10) -> list[MethodTimes]:
     return sorted(every, key=lambda t: rows.index(t.name) if t.name in rows else len(rows))
 
 
-def _package_methods(runner: FmuRunner, python_runner: FmuRunner, pendulum: Pendulum, grid: TimeGrid,
+def _package_methods(runner: FmuRunner, python_runner: FmuRunner, problem: InitialValueProblem, grid: TimeGrid,
                      times: np.ndarray, truth: np.ndarray) -> tuple[list[_Method], float]:
     """The package's rows, all at rkn's loosest tolerance that reaches the error, and that tolerance."""
-    rtol, error = _loosest(lambda r: runner.run(pendulum, Method("rkn", r), grid).result["theta"], truth)
+    def full_run(on: FmuRunner, method: Method) -> np.ndarray:
+        return on.run(problem, method, grid).result["theta"]  # type: ignore[arg-type]  # until FmuRunner takes InitialValueProblem
+
+    rtol, error = _loosest(lambda r: full_run(runner, Method("rkn", r)), truth)
     if rtol is None:
         raise RuntimeError(f"the FMU's rkn does not reach {TARGET_ERROR:g} on the benchmark problem")
     method = Method("rkn", rtol)
     setting = f"rkn, tol {rtol:g}"
-    rows = [_Method(PACKAGE, lambda: runner.run(pendulum, method, grid).result["theta"], error,
-                    f"{setting}, 6 outputs, {runner.loop} loop"),
-            _Method(PACKAGE_PYTHON, lambda: python_runner.run(pendulum, method, grid).result["theta"],
-                    float(np.max(np.abs(python_runner.run(pendulum, method, grid).result["theta"] - truth))),
-                    f"{setting}, 6 outputs")]
+    rows = [_Method(PACKAGE, lambda: full_run(runner, method), error, f"{setting}, 6 outputs, {runner.loop} loop"),
+            _Method(PACKAGE_PYTHON, lambda: full_run(python_runner, method),
+                    float(np.max(np.abs(full_run(python_runner, method) - truth))), f"{setting}, 6 outputs")]
     if runner.loop != "c":
         return rows, rtol
     for label, names in LOOP_ROWS.items():
-        rows.append(_loop_row(runner, pendulum, method, times, truth, label, names, setting))
+        rows.append(_loop_row(runner, problem, method, times, truth, label, names, setting))
     return rows, rtol
 
 
@@ -212,39 +214,44 @@ LOOP_ROWS: dict[str, tuple[str, ...]] = {
 numbalsoda returns, then adding the FMU's outputs: where a full run's time goes."""
 
 
-def _loop_row(runner: FmuRunner, pendulum: Pendulum, method: Method, times: np.ndarray, truth: np.ndarray,
-              label: str, names: tuple[str, ...], setting: str) -> _Method:
-    """A row of :data:`LOOP_ROWS`: the runner's instance driven by a C loop over ``names``."""
+def _loop_row(runner: FmuRunner, problem: InitialValueProblem, method: Method, times: np.ndarray,
+              truth: np.ndarray, label: str, names: tuple[str, ...], setting: str) -> _Method:
+    """A row of :data:`LOOP_ROWS`: the runner's instance (:meth:`FmuRunner.initialized`) driven by
+    a C loop over ``names``."""
     rows = np.dtype([("time", np.float64)] + [(name, np.float64) for name in names])
-    loop = driver.OutputLoop(runner._fresh_slave(), runner.fmi_version, [runner.vr[name] for name in names])
+
+    def initialized() -> Any:
+        return runner.initialized(problem, method)  # type: ignore[arg-type]  # until FmuRunner takes InitialValueProblem
+
+    loop = driver.OutputLoop(initialized(), runner.fmi_version, [runner.vr[name] for name in names])
 
     def run() -> np.ndarray:
-        slave = runner._fresh_slave()
-        runner._initialize(slave, pendulum, method)
+        slave = initialized()
         out = np.empty(times.size, dtype=rows)
-        loop.run(times, out, names[0], runner._log)
+        loop.run(times, out, names[0], runner.log)
         slave.terminate()
         return out["theta"]
 
     return _Method(label, run, float(np.max(np.abs(run() - truth))), f"{setting}, {', '.join(names)}")
 
 
-def _fmpy_methods(runner: FmuRunner, fmu: Path, pendulum: Pendulum, times: np.ndarray, truth: np.ndarray,
-                  rtol: float, scratch: list[Path]) -> list[_Method]:
+def _fmpy_methods(runner: FmuRunner, fmu: Path, problem: InitialValueProblem, times: np.ndarray,
+                  truth: np.ndarray, rtol: float, scratch: list[Path]) -> list[_Method]:
     """fmpy's rows at the same tolerance as the package (FMI 2.0 only for the wrapper loop);
     the folders to delete afterwards go to ``scratch``."""
     from fmpy import extract, read_model_description, simulate_fmu
 
     rows: list[_Method] = []
     if runner.fmi_version == 2:
-        slave = runner._fresh_slave()  # the same instance, now driven by fmpy's wrappers
+        # the runner's own instance, now driven by fmpy's wrappers
+        slave = runner.initialized(problem, Method("rkn", rtol))  # type: ignore[arg-type]  # likewise
         vr = runner.vr
         refs = [vr["theta"]]
 
         def fmpy_loop() -> np.ndarray:
             slave.reset()
             slave.setupExperiment(tolerance=rtol, startTime=0.0)
-            slave.setReal([vr["theta"]], [pendulum.amplitude_rad])
+            slave.setReal([vr["theta"]], [problem.theta0])
             slave.enterInitializationMode()
             slave.exitInitializationMode()
             out = np.empty(times.size)
@@ -259,7 +266,7 @@ def _fmpy_methods(runner: FmuRunner, fmu: Path, pendulum: Pendulum, times: np.nd
                             f"rkn, tol {rtol:g}"))
     interval = float(times[1] - times[0])
     options = dict(start_time=0.0, stop_time=float(times[-1]), output_interval=interval, relative_tolerance=rtol,
-                   start_values={"theta": pendulum.amplitude_rad}, validate=False)
+                   start_values={"theta": problem.theta0}, validate=False)
 
     def plain() -> np.ndarray:
         return np.asarray(simulate_fmu(str(fmu), output=["theta", "theta_exact"], **options)["theta"])
@@ -277,9 +284,7 @@ def _fmpy_methods(runner: FmuRunner, fmu: Path, pendulum: Pendulum, times: np.nd
     return rows
 
 
-
-
-def _numbalsoda(pendulum: Pendulum) -> Callable[[Pendulum, np.ndarray, float], np.ndarray] | str:
+def _numbalsoda(problem: InitialValueProblem) -> Callable[[InitialValueProblem, np.ndarray, float], np.ndarray] | str:
     """numbalsoda's solver on this problem, or why it cannot run."""
     try:
         import numba
@@ -292,43 +297,43 @@ def _numbalsoda(pendulum: Pendulum) -> Callable[[Pendulum, np.ndarray, float], n
         du[0] = u[1]
         du[1] = -p[0] * math.sin(u[0])   # theta'' = -(g/L) sin theta
 
-    start = np.array([pendulum.amplitude_rad, pendulum.omega0])
-    data = np.array([pendulum.gravity / pendulum.length])
+    start = np.array([problem.theta0, problem.omega0])
+    data = np.array([problem.g / problem.L])
 
-    def solve(_: Pendulum, grid: np.ndarray, rtol: float) -> np.ndarray:
+    def solve(_: InitialValueProblem, grid: np.ndarray, rtol: float) -> np.ndarray:
         solution, ok = numbalsoda.dop853(rhs.address, start, grid, data=data, rtol=rtol, atol=rtol / 100.0)
         return solution[:, 0] if ok else np.full(grid.size, math.nan)
 
     return solve
 
 
-def _ode_dop853(pendulum: Pendulum, times: np.ndarray, rtol: float) -> np.ndarray:
+def _ode_dop853(problem: InitialValueProblem, times: np.ndarray, rtol: float) -> np.ndarray:
     """Hairer's DOP853 through scipy's ``ode``, from output point to output point."""
     from scipy.integrate import ode
 
-    w0sq = pendulum.gravity / pendulum.length
+    w0sq = problem.g / problem.L
 
     def rhs(_: float, y: np.ndarray) -> list[float]:
         return [y[1], -w0sq * math.sin(y[0])]
 
     solver = ode(rhs).set_integrator("dop853", rtol=rtol, atol=rtol / 100.0, nsteps=10**7)
-    solver.set_initial_value([pendulum.amplitude_rad, pendulum.omega0], 0.0)
+    solver.set_initial_value([problem.theta0, problem.omega0], 0.0)
     out = np.empty(times.size)
-    out[0] = pendulum.amplitude_rad
+    out[0] = problem.theta0
     for k in range(1, times.size):
         out[k] = solver.integrate(times[k])[0]
     return out
 
 
-def _solve_ivp_dop853(pendulum: Pendulum, times: np.ndarray, rtol: float) -> np.ndarray:
+def _solve_ivp_dop853(problem: InitialValueProblem, times: np.ndarray, rtol: float) -> np.ndarray:
     """scipy's ``solve_ivp`` DOP853 with ``t_eval`` on the grid."""
     from scipy.integrate import solve_ivp
 
-    w0sq = pendulum.gravity / pendulum.length
+    w0sq = problem.g / problem.L
 
     def rhs(_: float, y: np.ndarray) -> list[float]:
         return [y[1], -w0sq * math.sin(y[0])]
 
-    solution = solve_ivp(rhs, (0.0, float(times[-1])), [pendulum.amplitude_rad, pendulum.omega0], method="DOP853",
+    solution = solve_ivp(rhs, (0.0, float(times[-1])), [problem.theta0, problem.omega0], method="DOP853",
                          t_eval=times, rtol=rtol, atol=rtol / 100.0)
     return np.asarray(solution.y[0])

@@ -297,6 +297,45 @@ class FmuRunner:
         values = instance.getInteger(references) if self.fmi_version == 2 else instance.getInt32(references)
         return [int(value) for value in values]
 
+    # -- a benchmark's own loop ------------------------------------------------------------------
+    @property
+    def log(self) -> FmuLog:
+        """The log of this runner's instances (what the FMU logged since the last initialization)."""
+        return self._log
+
+    def initialized(self, pendulum: Pendulum, method: Method = DEFAULT_METHOD) -> Any:
+        """The runner's Co-Simulation instance, reset and initialized for one problem at t = 0.
+
+        For a caller that steps the instance itself (``pendulum-fmu bench speed`` times the
+        output loop alone, or fmpy's own wrappers, on the same instance :meth:`run` uses). The
+        instance stays the runner's: the caller terminates it when done, and the runner's next
+        call resets it. Its messages go to :attr:`log`.
+
+        Parameters
+        ----------
+        pendulum : Pendulum
+            Parameters and initial state.
+        method : Method
+            A Co-Simulation solver and its tolerance.
+
+        Returns
+        -------
+        fmpy.fmi2.FMU2Slave or fmpy.fmi3.FMU3Slave
+            Out of initialization mode, at t = 0.
+
+        Raises
+        ------
+        ValueError
+            For a Model Exchange method.
+        SimulationError
+            If the FMU fails to initialize.
+        """
+        if method.interface != "CS":
+            raise ValueError(f"{method.label} is not a Co-Simulation solver: give one of {CS_SOLVERS}")
+        if self.fmi_version == 2:
+            route_fmi2_messages()  # another fmpy call may have taken fmpy's one logging proxy since
+        return self._set_up(True, pendulum, method)
+
     # -- runs --------------------------------------------------------------------------------
     def period(self, pendulum: Pendulum) -> float:
         """The FMU's exact ``period`` for this problem, s (``inf`` on the separatrix)."""

@@ -203,3 +203,32 @@ def best_method(points: list[Point], problem: str, runner: str, methods: list[st
         name, value = min(costs.items(), key=lambda item: item[1])
         winners[level] = name if math.isfinite(value) else ""
     return winners
+
+
+LEVELS: tuple[float, ...] = (1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12)
+"""The error levels at which the default is ranked and set beside DOP853."""
+
+
+def against_dop853(points: list[Point], default: str,
+                   levels: tuple[float, ...] = LEVELS) -> list[tuple[float, float, float, float]]:
+    """The default's evaluations beside DOP853's at each error level on P1.
+
+    Parameters
+    ----------
+    points : list of Point
+        All points (the FMU's from the C driver; scipy's from the Python runs).
+    default : str
+        The FMU's default solver.
+    levels : tuple of float
+        Error levels.
+
+    Returns
+    -------
+    list of (float, float, float, float)
+        Per level: the level, the default's evaluations (C driver), ``solve_ivp`` DOP853's and
+        ``ode`` dop853's; inf where a method does not reach the level.
+    """
+    ours = curve(points, "P1", "c", default)
+    ivp = curve(points, "P1", "scipy", "DOP853")
+    hairer = curve(points, "P1", "scipy", "dop853")
+    return [(level, cost_at(ours, level), cost_at(ivp, level), cost_at(hairer, level)) for level in levels]

@@ -2,8 +2,9 @@
 
 P1 is the seed's amplitudes 75, 80, 85 and 90 deg over 10 periods, P2 179.99 deg over 20
 periods (the pendulum released next to the top, 7.6e-9 below the separatrix in energy), P3
-90 deg over 10,000 periods. All start from rest with g = 9.81 m/s2 and L = 1 m, and are
-sampled on the same grid: ``points`` points a period, t_i = i T / points.
+90 deg over 10,000 periods. All start from rest with g = 9.81 m/s2 and L = 1 m (a
+:class:`Case` holds its :class:`~pendulum_fmu.spec.InitialValueProblem` and its length in
+periods), and are sampled on the same grid: ``points`` points a period, t_i = i T / points.
 
 The truth is the FMU's own ``theta_exact``, read through its Model Exchange interface at the
 grid times (:func:`exact_theta`); it is checked against mpmath by tests of its own.
@@ -19,41 +20,46 @@ import numpy as np
 from fmpy import read_model_description
 from fmpy.fmi2 import FMU2Model
 
-GRAVITY = 9.81
-"""g in m/s2 for every problem."""
-LENGTH = 1.0
-"""L in m for every problem."""
-W0SQ = GRAVITY / LENGTH
-"""w0^2 = g / L in 1/s2."""
+from pendulum_fmu.spec import InitialValueProblem
 
 
 @dataclass(frozen=True)
 class Case:
-    """One initial value problem of a study problem.
+    """One initial value problem of a study problem, and how long it runs.
 
     Attributes
     ----------
     problem : str
         ``"P1"``, ``"P2"`` or ``"P3"``.
-    amplitude_deg : float
-        Release angle in degrees (from rest).
+    ivp : InitialValueProblem
+        The pendulum and its start (from rest, L = 1 m, g = 9.81 m/s2 in every study problem).
     periods : float
         Length of the run in exact periods.
     """
 
     problem: str
-    amplitude_deg: float
+    ivp: InitialValueProblem
     periods: float
 
+    @classmethod
+    def from_rest(cls, problem: str, amplitude_deg: float, periods: float) -> Case:
+        """The case released from rest at ``amplitude_deg`` degrees, L = 1 m, g = 9.81 m/s2."""
+        return cls(problem, InitialValueProblem.from_degrees(amplitude_deg), periods)
+
     @property
-    def theta0(self) -> float:
-        """Release angle in radians."""
-        return math.radians(self.amplitude_deg)
+    def amplitude_deg(self) -> float:
+        """Release angle in degrees."""
+        return self.ivp.theta0_deg
+
+    @property
+    def w0sq(self) -> float:
+        """w0^2 = g / L in 1/s2."""
+        return self.ivp.g / self.ivp.L
 
     @property
     def energy0(self) -> float:
-        """H0 = 2 w0^2 sin^2(theta0 / 2), the energy per unit m L^2 (J/(kg m2))."""
-        return 2.0 * W0SQ * math.sin(0.5 * self.theta0) ** 2
+        """H0 = omega0^2 / 2 + 2 w0^2 sin^2(theta0 / 2), the energy per unit m L^2 (J/(kg m2))."""
+        return 0.5 * self.ivp.omega0 ** 2 + 2.0 * self.w0sq * math.sin(0.5 * self.ivp.theta0) ** 2
 
 
 def cases(problem: str, p3_periods: float = 10_000.0) -> tuple[Case, ...]:
@@ -77,11 +83,11 @@ def cases(problem: str, p3_periods: float = 10_000.0) -> tuple[Case, ...]:
         For an unknown problem name.
     """
     if problem == "P1":
-        return tuple(Case("P1", a, 10.0) for a in (75.0, 80.0, 85.0, 90.0))
+        return tuple(Case.from_rest("P1", a, 10.0) for a in (75.0, 80.0, 85.0, 90.0))
     if problem == "P2":
-        return (Case("P2", 179.99, 20.0),)
+        return (Case.from_rest("P2", 179.99, 20.0),)
     if problem == "P3":
-        return (Case("P3", 90.0, p3_periods),)
+        return (Case.from_rest("P3", 90.0, p3_periods),)
     raise ValueError(f"unknown problem {problem!r}: P1, P2 or P3")
 
 
@@ -128,7 +134,8 @@ def _model_exchange_instance(unzipped: Path, case: Case) -> FMU2Model:
                     instanceName="truth")
     fmu.instantiate()
     fmu.setupExperiment(startTime=0.0)
-    fmu.setReal([vr["L"], vr["g"], vr["theta"], vr["omega"]], [LENGTH, GRAVITY, case.theta0, 0.0])
+    start = case.ivp.start_values()
+    fmu.setReal([vr[name] for name in start], list(start.values()))
     fmu.enterInitializationMode()
     fmu.exitInitializationMode()
     fmu.enterContinuousTimeMode()
@@ -192,15 +199,15 @@ def make_grid(unzipped: Path, case: Case, points: int) -> Grid:
     return Grid(case=case, period=period, points=points, times=times, theta_exact=theta)
 
 
-def energy_errors(theta: np.ndarray, omega: np.ndarray, energy0: float) -> tuple[float, float, float]:
+def energy_errors(theta: np.ndarray, omega: np.ndarray, case: Case) -> tuple[float, float, float]:
     """Relative energy error of a numerical solution.
 
     Parameters
     ----------
     theta, omega : numpy.ndarray
         The solution on the grid.
-    energy0 : float
-        H0 = 2 w0^2 sin^2(theta0 / 2).
+    case : Case
+        The problem (its w0^2 and its energy H0).
 
     Returns
     -------
@@ -209,7 +216,7 @@ def energy_errors(theta: np.ndarray, omega: np.ndarray, energy0: float) -> tuple
         them (a drift shows as the last larger than the first);
         H = omega^2 / 2 + 2 w0^2 sin^2(theta / 2).
     """
-    h = 0.5 * omega**2 + 2.0 * W0SQ * np.sin(0.5 * theta) ** 2
-    rel = np.abs(h - energy0) / energy0
+    h = 0.5 * omega**2 + 2.0 * case.w0sq * np.sin(0.5 * theta) ** 2
+    rel = np.abs(h - case.energy0) / case.energy0
     tenth = max(len(rel) // 10, 1)
     return float(np.max(rel)), float(np.max(rel[:tenth])), float(np.max(rel[-tenth:]))

@@ -32,7 +32,7 @@ from fmpy import read_model_description, simulate_fmu
 from fmpy.simulation import instantiate_fmu
 from scipy.integrate import ode, solve_ivp
 
-from pendulum_fmu.bench.workprecision.problems import GRAVITY, LENGTH, W0SQ, Grid, energy_errors
+from pendulum_fmu.bench.workprecision.problems import Grid, energy_errors
 from pendulum_fmu.spec import CS_SOLVERS
 
 SOLVE_IVP_METHODS: tuple[str, ...] = ("RK45", "DOP853", "LSODA", "Radau")
@@ -106,7 +106,7 @@ class Run:
 def _measured(run: Run, grid: Grid, theta: np.ndarray, omega: np.ndarray) -> Run:
     """Fills the error fields of ``run`` from a solution on ``grid``."""
     run.max_err = float(np.max(np.abs(theta - grid.theta_exact)))
-    run.energy_err_max, run.energy_err_first, run.energy_err_last = energy_errors(theta, omega, grid.case.energy0)
+    run.energy_err_max, run.energy_err_first, run.energy_err_last = energy_errors(theta, omega, grid.case)
     run.max_abs_theta = float(np.max(np.abs(theta)))
     return run
 
@@ -144,8 +144,7 @@ def run_fmu_cs(unzipped: Path, grid: Grid, solver: str, tol: float) -> Run:
     result = simulate_fmu(str(unzipped), model_description=md, validate=False, fmi_type="CoSimulation",
                           start_time=0.0, stop_time=grid.stop_time, output_interval=grid.interval,
                           relative_tolerance=tol,
-                          start_values={"L": LENGTH, "g": GRAVITY, "theta": case.theta0, "omega": 0.0,
-                                        "solver": CS_SOLVERS.index(solver) + 1},
+                          start_values={**case.ivp.start_values(), "solver": CS_SOLVERS.index(solver) + 1},
                           output=["theta", "omega", "stats.steps", "stats.rejected_steps",
                                   "stats.rhs_evaluations"])
     run.wall_s = time.perf_counter() - start
@@ -161,17 +160,18 @@ def run_fmu_cs(unzipped: Path, grid: Grid, solver: str, tol: float) -> Run:
 class _CountingRhs:
     """theta' = omega, omega' = -w0^2 sin(theta), counting its calls; and its Jacobian."""
 
-    def __init__(self) -> None:
+    def __init__(self, w0sq: float) -> None:
+        self.w0sq = w0sq
         self.calls = 0
         self.jac_calls = 0
 
     def __call__(self, t: float, y: np.ndarray) -> list[float]:
         self.calls += 1
-        return [y[1], -W0SQ * math.sin(y[0])]
+        return [y[1], -self.w0sq * math.sin(y[0])]
 
     def jac(self, t: float, y: np.ndarray) -> list[list[float]]:
         self.jac_calls += 1
-        return [[0.0, 1.0], [-W0SQ * math.cos(y[0]), 0.0]]
+        return [[0.0, 1.0], [-self.w0sq * math.cos(y[0]), 0.0]]
 
 
 PEER_ATOL_FACTOR = 1e-2
@@ -199,12 +199,13 @@ def run_solve_ivp(grid: Grid, method: str, rtol: float, atol: float | None = Non
         Error, energy, right-hand-side (+ Jacobian) evaluations and the wall time of the call.
     """
     run = _new_run(grid, "scipy", method, rtol)
-    rhs = _CountingRhs()
+    rhs = _CountingRhs(grid.case.w0sq)
+    state0 = [grid.case.ivp.theta0, grid.case.ivp.omega0]
     options: dict[str, Any] = {}
     if method in ("LSODA", "Radau"):
         options["jac"] = rhs.jac
     start = time.perf_counter()
-    sol = solve_ivp(rhs, (0.0, grid.stop_time), [grid.case.theta0, 0.0], method=method, t_eval=grid.times,
+    sol = solve_ivp(rhs, (0.0, grid.stop_time), state0, method=method, t_eval=grid.times,
                     rtol=rtol, atol=rtol * PEER_ATOL_FACTOR if atol is None else atol, **options)
     run.wall_s = time.perf_counter() - start
     run.rhs_evaluations = rhs.calls + rhs.jac_calls
@@ -230,13 +231,13 @@ def run_ode_dop853(grid: Grid, rtol: float) -> Run:
         Error, energy, right-hand-side evaluations and the wall time of the loop.
     """
     run = _new_run(grid, "scipy", "dop853", rtol)
-    rhs = _CountingRhs()
+    rhs = _CountingRhs(grid.case.w0sq)
     n = len(grid.times)
     theta, omega = np.empty(n), np.empty(n)
-    theta[0], omega[0] = grid.case.theta0, 0.0
+    theta[0], omega[0] = grid.case.ivp.theta0, grid.case.ivp.omega0
     start = time.perf_counter()
     solver = ode(rhs).set_integrator("dop853", rtol=rtol, atol=rtol * PEER_ATOL_FACTOR, nsteps=10**9)
-    solver.set_initial_value([grid.case.theta0, 0.0], 0.0)
+    solver.set_initial_value([theta[0], omega[0]], 0.0)
     for i in range(1, n):
         y = solver.integrate(grid.times[i])
         if not solver.successful():
@@ -300,7 +301,7 @@ def run_fmu_me(unzipped: Path, grid: Grid, method: str, tol: float) -> Run:
         result = simulate_fmu(str(unzipped), model_description=md, fmu_instance=fmu, validate=False,
                               fmi_type="ModelExchange", start_time=0.0, stop_time=grid.stop_time,
                               record_events=False,
-                              start_values={"L": LENGTH, "g": GRAVITY, "theta": case.theta0, "omega": 0.0},
+                              start_values=case.ivp.start_values(),
                               output=["theta", "omega"], **options)
     except Exception as error:  # noqa: BLE001 -- fmpy raises plain Exceptions for solver failures
         run.status, run.note = "failed", str(error).splitlines()[0][:120]

@@ -29,12 +29,11 @@ def run(args: argparse.Namespace) -> int:
 
     timings = bench_suite.measure(tuple(args.engines))
     print(f"the Pendulum cases of the suite, judged and reported; {machine()}")
-    print(f"| engine | cases | passed | wall s | engine runs s | judging s | wall / {timings[0].engine}'s | "
-          f"under {bench_suite.TARGET_S:g} s |")
-    print("|---|---:|---:|---:|---:|---:|---:|---|")
+    print(f"| engine | cases | passed | wall s | engine runs s | judging s | wall / {timings[0].engine}'s |")
+    print("|---|---:|---:|---:|---:|---:|---:|")
     for t in timings:
         print(f"| {t.engine} | {t.cases} | {t.passed} | {t.wall_s:.1f} | {t.run_s:.1f} | {t.judge_s:.1f} | "
-              f"{t.wall_s / timings[0].wall_s:.2f} | {'yes' if t.wall_s < bench_suite.TARGET_S else 'no'} |")
+              f"{t.wall_s / timings[0].wall_s:.2f} |")
     for t in timings:
         print(f"bench_suite engine={t.engine} cases={t.cases} passed={t.passed} wall_s={t.wall_s:.3f} "
               f"run_s={t.run_s:.3f} judge_s={t.judge_s:.3f}")

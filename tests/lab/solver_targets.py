@@ -1,4 +1,11 @@
-"""The solvers' work-precision targets, each measured and judged.
+"""The solvers' work-precision targets: ``pendulum-fmu bench solvers``'s study, each target judged.
+
+A team member's check from a source checkout, not part of the package:
+``bash scripts/bench.sh solvers [--quick] [options]`` builds the FMU and the C driver and runs
+``python tests/lab/solver_targets.py --fmu build/Pendulum.fmu --driver build/tests/c/bench_solvers``.
+It runs the package's study (:func:`pendulum_fmu.bench.solvers.run_study`, the same files and
+report), judges the targets below on what it measured, adds a "Targets" section to
+``report.md`` and exits 0 when every target is met and every run ran, 1 otherwise.
 
 1. The default solver reaches every error from 1e-4 to 1e-12 on P1 with fewer right-hand-side
    evaluations than DOP853 (scipy's ``solve_ivp`` and Hairer's ``dop853`` through
@@ -14,21 +21,25 @@
 
 from __future__ import annotations
 
+import argparse
 import math
+import shutil
+import sys
 import time
 from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
-from fmpy import read_model_description, simulate_fmu
+from fmpy import extract, read_model_description, simulate_fmu
 from scipy.integrate import solve_ivp
 
-from pendulum_fmu.bench.workprecision.analysis import Point, cost_at, curve
+from pendulum_fmu.bench.solvers import Study, run_study
+from pendulum_fmu.bench.workprecision.analysis import LEVELS, Point, against_dop853, cost_at, curve
 from pendulum_fmu.bench.workprecision.cdriver import Floor
-from pendulum_fmu.bench.workprecision.problems import GRAVITY, LENGTH, W0SQ, Case, cases, exact_theta
+from pendulum_fmu.bench.workprecision.problems import Case, cases, exact_theta
 
-T1_LEVELS: tuple[float, ...] = (1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12)
+T1_LEVELS: tuple[float, ...] = LEVELS
 """Error levels of target 1."""
 
 
@@ -72,10 +83,7 @@ def default_vs_dop853(points: list[Point], default: str,
         The verdict and, per level, (level, default's evaluations, solve_ivp DOP853's,
         ode dop853's); inf where a method does not reach the level.
     """
-    ours = curve(points, "P1", "c", default)
-    ivp = curve(points, "P1", "scipy", "DOP853")
-    hairer = curve(points, "P1", "scipy", "dop853")
-    rows = [(level, cost_at(ours, level), cost_at(ivp, level), cost_at(hairer, level)) for level in T1_LEVELS]
+    rows = against_dop853(points, default, T1_LEVELS)
     if reachable_only:
         rows = [row for row in rows if math.isfinite(row[1])]
     unreached = [level for level, o, _, _ in rows if not math.isfinite(o)]
@@ -117,7 +125,7 @@ def fmpy_against_dop853(fmu: Path, unzipped: Path, repeats: int = 5) -> tuple[Ta
     tuple of (TargetOutcome, dict)
         The verdict and the figures (errors, best wall times, their ratio).
     """
-    case = Case("T2", 80.0, 100.0)
+    case = Case.from_rest("T2", 80.0, 100.0)
     period, _ = exact_theta(unzipped, case, np.zeros(0))
     interval = period / 8
     times = np.arange(801) * interval
@@ -125,12 +133,13 @@ def fmpy_against_dop853(fmu: Path, unzipped: Path, repeats: int = 5) -> tuple[Ta
 
     def fmu_run() -> np.ndarray:
         result = simulate_fmu(str(fmu), start_time=0.0, stop_time=float(times[-1]), output_interval=interval,
-                              relative_tolerance=1e-10, start_values={"theta": case.theta0},
+                              relative_tolerance=1e-10, start_values={"theta": case.ivp.theta0},
                               output=["theta"])
         return np.asarray(result["theta"])
 
     def scipy_run() -> np.ndarray:
-        sol = solve_ivp(lambda t, y: [y[1], -W0SQ * math.sin(y[0])], (0.0, float(times[-1])), [case.theta0, 0.0],
+        sol = solve_ivp(lambda t, y: [y[1], -case.w0sq * math.sin(y[0])], (0.0, float(times[-1])),
+                        [case.ivp.theta0, case.ivp.omega0],
                         method="DOP853", rtol=1e-10, atol=1e-12, t_eval=times)
         return sol.y[0]
 
@@ -208,12 +217,12 @@ def grid_independence(unzipped: Path) -> tuple[TargetOutcome, dict[str, float]]:
             result = simulate_fmu(str(unzipped), model_description=md, start_time=0.0,
                                   stop_time=case.periods * period, output_interval=period / points,
                                   relative_tolerance=1e-10,
-                                  start_values={"L": LENGTH, "g": GRAVITY, "theta": case.theta0},
+                                  start_values=case.ivp.start_values(),
                                   output=["theta", "omega"])
             runs.append(result)
         coarse, fine = runs[0], runs[1][::100]
         worst = max(worst, float(np.max(np.abs(coarse["theta"] - fine["theta"]))),
-                    float(np.max(np.abs(coarse["omega"] - fine["omega"]))) / math.sqrt(W0SQ))
+                    float(np.max(np.abs(coarse["omega"] - fine["omega"]))) / math.sqrt(case.w0sq))
     return TargetOutcome("T4: 3 and 300 points a period agree to 1e-7 at rtol 1e-10 (P1, default solver)",
                    worst <= 1e-7, f"largest difference {worst:.1e} rad"), {"max_difference": worst}
 
@@ -261,3 +270,64 @@ def default_near_separatrix(points: list[Point], default: str) -> tuple[TargetOu
                    not flips and bool(pts) and shrinking and bounded,
                    f"flips at {flips or 'no tolerance'}; errors {sequence} "
                    f"({'strictly decreasing' if strict else 'flat at the floor at the tightest tolerances'})"), pts
+
+
+def judge(study: Study, fmu: Path, quick: bool, peers: bool) -> list[TargetOutcome]:
+    """Every target that the study's problems allow (targets 2 and 4 run the FMU again, not in a quick run)."""
+    verdicts: list[TargetOutcome] = []
+    points, default = study.points, study.default
+    if "P1" in study.problems and peers:
+        # a quick run's tolerances 1e-4 and 1e-8: target 1 is judged at the errors they reach
+        verdicts.append(default_vs_dop853(points, default, reachable_only=quick)[0])
+    if "P1" in study.problems:
+        verdicts.append(wall_against_floor(points, study.floors, default)[0])
+    if "P2" in study.problems:
+        verdicts.append(default_near_separatrix(points, default)[0])
+    if not quick:
+        print("targets 2 and 4 ...")
+        unzipped = Path(extract(str(fmu)))
+        try:
+            verdicts.append(fmpy_against_dop853(fmu, unzipped)[0])
+            verdicts.append(grid_independence(unzipped)[0])
+        finally:
+            shutil.rmtree(unzipped, ignore_errors=True)
+    return verdicts
+
+
+def markdown(verdicts: list[TargetOutcome]) -> str:
+    """The "Targets" section of the report."""
+    lines = ["## Targets", "", "| target | met | measured |", "|---|---|---|"]
+    lines += [f"| {v.name} | {'yes' if v.met else 'NO'} | {v.figure} |" for v in verdicts]
+    return "\n".join(lines) + "\n"
+
+
+def main(argv: list[str] | None = None) -> int:
+    """Run the study with the options of ``pendulum-fmu bench solvers``, judge the targets, print them."""
+    parser = argparse.ArgumentParser(prog="python tests/lab/solver_targets.py", description=__doc__,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--fmu", type=Path, required=True, help="the FMI 2.0 Pendulum.fmu")
+    parser.add_argument("--driver", type=Path, required=True, help="the C driver tests/c/bench_solvers of the build")
+    parser.add_argument("--out", type=Path, default=Path("out") / "bench", help="output folder (default: out/bench)")
+    parser.add_argument("--problems", default="P1,P2,P3", help="comma-separated subset of P1,P2,P3")
+    parser.add_argument("--budget", type=float, default=30.0, help="skip a Python run predicted over this, s")
+    parser.add_argument("--p3-periods", type=float, default=10_000.0, help="length of P3 in periods")
+    parser.add_argument("--points", type=int, default=50, help="output points a period")
+    parser.add_argument("--no-peers", action="store_true", help="only the FMU's solvers (no target 1)")
+    parser.add_argument("--quick", action="store_true",
+                        help="a smoke run: tolerances 1e-4 and 1e-8, P3 at most 100 periods, no targets 2 and 4")
+    args = parser.parse_args(argv)
+    problems = [p.strip() for p in args.problems.split(",") if p.strip()]
+    if not problems or any(p not in ("P1", "P2", "P3") for p in problems):
+        parser.error(f"--problems must name P1, P2 and/or P3, got {args.problems!r}")
+    study = run_study(args.fmu, args.driver, args.out, problems, args.budget, args.p3_periods, args.points,
+                      not args.no_peers, args.quick, log=print)
+    verdicts = judge(study, args.fmu, args.quick, not args.no_peers)
+    section = markdown(verdicts)
+    with (args.out / "report.md").open("a") as report:
+        report.write("\n" + section)
+    print(section)
+    return 0 if all(v.met for v in verdicts) and not study.failed else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
