@@ -15,7 +15,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from pendulum_fmu.errors import UsageError
-from pendulum_fmu.spec import Method, Pendulum, TimeGrid
+from pendulum_fmu.spec import InitialValueProblem, Method, TimeGrid
 
 if TYPE_CHECKING:
     from pendulum_fmu.fmu.runner import FmuRunner, Trajectory
@@ -180,7 +180,7 @@ def check_sweep(runs: int, points_per_run: int, workers: int, memory: int | None
     return seconds
 
 
-def planned_run(runner: FmuRunner, pendulum: Pendulum, method: Method, grid: TimeGrid,
+def planned_run(runner: FmuRunner, problem: InitialValueProblem, method: Method, grid: TimeGrid,
                 argument: str | None = None, what: str = "simulating") -> Trajectory:
     """Run one problem, its size checked before the first output point, saying so when it will take a while.
 
@@ -191,7 +191,7 @@ def planned_run(runner: FmuRunner, pendulum: Pendulum, method: Method, grid: Tim
     ----------
     runner : FmuRunner
         The loaded FMU.
-    pendulum, method, grid
+    problem, method, grid
         What to run.
     argument : str, optional
         The option to name in a refusal (default: the one that set the run's length,
@@ -216,4 +216,4 @@ def planned_run(runner: FmuRunner, pendulum: Pendulum, method: Method, grid: Tim
             print(f"{what} {quantity(points)} output points: about {duration_text(seconds)} ...", file=sys.stderr,
                   flush=True)
 
-    return runner.run(pendulum, method, grid, plan)
+    return runner.run(problem, method, grid, plan)

@@ -16,7 +16,7 @@ from pathlib import Path
 from pendulum_fmu.errors import UsageError
 from pendulum_fmu.fmu.locate import locate_fmu, runnable_problem
 from pendulum_fmu.output.paths import OutputError, check_output_file, check_output_folder
-from pendulum_fmu.spec import CS_SOLVERS, DEFAULT_CS_SOLVER, ME_SOLVERS, SOLVERS, Method, Pendulum, TimeGrid
+from pendulum_fmu.spec import CS_SOLVERS, DEFAULT_CS_SOLVER, ME_SOLVERS, SOLVERS, InitialValueProblem, Method, TimeGrid
 
 MAX_GRID_VALUES = 100_000
 """Most values one grid axis may expand to (a guard against a typo like ``0:1:1e9``)."""
@@ -265,9 +265,9 @@ def add_time_arguments(parser: argparse.ArgumentParser, default_periods: float) 
     parser.set_defaults(default_periods=default_periods)
 
 
-def pendulum_from(args: argparse.Namespace) -> Pendulum:
-    """The :class:`Pendulum` of the parsed pendulum options."""
-    return Pendulum(args.amplitude, args.omega0, args.length, args.gravity)
+def problem_from(args: argparse.Namespace) -> InitialValueProblem:
+    """The :class:`InitialValueProblem` of the parsed pendulum options (``--amplitude`` parsed to rad)."""
+    return InitialValueProblem(args.amplitude, args.omega0, args.length, args.gravity)
 
 
 def method_from(args: argparse.Namespace) -> Method:

@@ -56,7 +56,7 @@ def run(args: argparse.Namespace) -> int:
     points = bench_points(args.runs, args.periods)
     with FmuRunner(fmu) as runner:  # a run that fails here would be timed as a fast one: refuse now
         probe = points[0]
-        runner.run(probe.pendulum(), probe.method(), probe.grid())
+        runner.run(probe.problem(), probe.method(), probe.grid())
     physical, logical, usable = cores()
     print(f"sweep of {len(points)} runs (amplitudes 1-179 deg from rest, {args.periods:g} periods, dopri5 "
           f"at 1e-8), median of {args.repeat}; FMU {fmu}")
