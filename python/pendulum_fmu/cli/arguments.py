@@ -284,7 +284,7 @@ def method_from(args: argparse.Namespace) -> Method:
     allowed = ME_SOLVERS if interface == "ME" else CS_SOLVERS if interface == "CS" else SOLVERS
     if solver not in allowed:
         kind = "Model Exchange" if solver in ME_SOLVERS else "Co-Simulation"
-        raise UsageError("-s/--solver", f"{solver} is a {kind} method: with --interface {interface} choose from "
+        raise UsageError("solver", f"{solver} is a {kind} method: with --interface {interface} choose from "
                                         f"{', '.join(allowed)}")
     return Method(solver, args.tolerance)
 
@@ -297,14 +297,14 @@ def grid_from(args: argparse.Namespace) -> TimeGrid:
     return TimeGrid(periods, "periods", args.points_per_period)
 
 
-def size_option(args: argparse.Namespace) -> str:
-    """The time option the user gave, for a refusal of a run too big: ``-T/--stop-time``, else
-    ``-p/--periods``, else ``-n/--points-per-period`` (the default length alone always fits)."""
+def size_field(args: argparse.Namespace) -> str:
+    """The time field the user gave, for a refusal of a run too big: ``stop_time``, else
+    ``periods``, else ``points_per_period`` (the default length alone always fits)."""
     if args.stop_time is not None:
-        return "-T/--stop-time"
+        return "stop_time"
     if args.periods is not None:
-        return "-p/--periods"
-    return "-n/--points-per-period"
+        return "periods"
+    return "points_per_period"
 
 
 _ROLE = re.compile(r":[a-z]+:`(~?)([^`<]*?)(?:\s*<([^>]*)>)?`")

@@ -19,6 +19,7 @@ from pendulum_fmu import __version__
 from pendulum_fmu.cli import animate, bench, compare, completion, cross_check, judge, simulate, study, suite, sweep
 from pendulum_fmu.cli.arguments import resolve_fmu
 from pendulum_fmu.cli.fields import command_line_message
+from pendulum_fmu.cli.progress import show_progress
 from pendulum_fmu.errors import BuildError, SimulationError, UsageError
 from pendulum_fmu.interrupt import check as check_interrupt
 from pendulum_fmu.interrupt import default_dispositions, exit_quietly_on_interrupt
@@ -123,6 +124,7 @@ def main(argv: list[str] | None = None) -> int:
         argparse's own errors and ``--help`` leave through ``SystemExit`` as usual.
     """
     default_dispositions()  # Ctrl-C stops the command even if SIGINT was inherited as ignored
+    show_progress()  # the library's progress lines (a build starting, a long run's estimate) on stderr
     arguments = sys.argv[1:] if argv is None else list(argv)
     try:
         check_interrupt()  # one that came during the imports and was swallowed there

@@ -16,7 +16,7 @@ from pendulum_fmu.cli.arguments import (
     method_from,
     output_file,
     problem_from,
-    size_option,
+    size_field,
 )
 
 if TYPE_CHECKING:
@@ -88,7 +88,7 @@ def run(args: argparse.Namespace) -> int:
 
     with FmuRunner(args.fmu) as runner:
         # refused at once when it cannot fit, naming the time option given
-        trajectory = planned_run(runner, problem, method, grid, size_option(args))
+        trajectory = planned_run(runner, problem, method, grid, size_field(args))
         version = runner.fmi_version
         description = runner.model_description
     print(f"fmu       FMI {version}.0, {args.fmu}")

@@ -2,9 +2,9 @@
 
 from __future__ import annotations
 
+import logging
 import math
 import os
-import sys
 from collections.abc import Callable
 from pathlib import Path
 from typing import Any
@@ -14,6 +14,9 @@ import numpy as np
 from pendulum_fmu.errors import UsageError
 from pendulum_fmu.fmu.runner import FmuRunner, Trajectory
 from pendulum_fmu.spec import InitialValueProblem, Method, StopUnit, TimeGrid
+
+_log = logging.getLogger(__name__)
+"""The frames' progress (INFO): the command line shows it on stderr."""
 
 MAX_FRAMES = 1500
 """Most frames an animation may have (a minute at 25 frames/s; a GIF is assembled in memory)."""
@@ -209,6 +212,11 @@ def animate(fmu: Path, problem: InitialValueProblem, method: Method, stop: float
     ------
     UsageError
         If the film would have more than :data:`MAX_FRAMES` frames.
+
+    Notes
+    -----
+    It logs its progress at INFO (logger ``pendulum_fmu.figures.animation``): the frames to
+    draw, then each quarter drawn.
     """
     grid = TimeGrid(stop, unit, output_interval=speed / fps)
     counted: list[int] = []
@@ -217,17 +225,17 @@ def animate(fmu: Path, problem: InitialValueProblem, method: Method, stop: float
         frames = grid.point_count(period)
         counted.append(frames)
         if frames > MAX_FRAMES:
-            argument = "--periods" if unit == "periods" else "--stop-time"
-            raise UsageError(argument, f"the animation would have {frames} frames, at most {MAX_FRAMES} are "
-                                       "allowed: shorten it, lower --fps or raise --speed")
+            raise UsageError("periods" if unit == "periods" else "stop_time",
+                             f"the animation would have {frames} frames, at most {MAX_FRAMES} are allowed: "
+                             "shorten it, lower `fps` or raise `speed`")
 
     with FmuRunner(fmu) as runner:
         trajectory = runner.run(problem, method, grid, plan)   # refused before the first frame
     frames = counted[0]
-    print(f"animate: drawing {frames} frames into {out} ...", file=sys.stderr, flush=True)
+    _log.info("animate: drawing %d frames into %s ...", frames, out)
 
     def drawn(done: int, total: int) -> None:
-        print(f"animate: {done} of {total} frames drawn", file=sys.stderr, flush=True)
+        _log.info("animate: %d of %d frames drawn", done, total)
 
     render(trajectory, out, fps, progress=drawn)
     return trajectory

@@ -48,8 +48,8 @@ def run(args: argparse.Namespace) -> int:
     loops = ["c", "python"] if args.loop == "both" else [args.loop]
     # Every timed sweep, on the fewest workers asked for: refused at once past a week or the memory.
     seconds = check_sweep(args.runs * args.repeat * len(args.workers) * len(loops), math.ceil(args.periods * 50) + 1,
-                          min(args.workers), runs_argument="--runs",
-                          fewer="fewer --runs, --repeat or --workers counts, or one --loop")
+                          min(args.workers), runs_field="runs",
+                          fewer="fewer `runs`, `repeat` or `workers` counts, or one `loop`")
     if seconds > SLOW_SECONDS:
         print(f"bench sweep: about {duration_text(seconds)} of sweeps ...", file=sys.stderr, flush=True)
     fmu = args.fmu

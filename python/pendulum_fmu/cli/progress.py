@@ -1,0 +1,33 @@
+"""The library's progress lines on stderr: what the command says while it works.
+
+Library code does not print: it logs one INFO line where a person waiting would want to know
+what is going on (a CMake build starting, a long run's estimate, an animation's frames, a sweep
+resuming). The command shows those records on stderr as they are, one line each, flushed.
+"""
+
+from __future__ import annotations
+
+import logging
+import sys
+
+LOGGER = "pendulum_fmu"
+"""The package's logger: every module logs under it (``logging.getLogger(__name__)``)."""
+
+
+class _Stderr(logging.Handler):
+    """Each record's message on the ``sys.stderr`` of the moment (a test's capture included)."""
+
+    def emit(self, record: logging.LogRecord) -> None:
+        try:
+            print(self.format(record), file=sys.stderr, flush=True)
+        except Exception:  # noqa: BLE001 -- logging's own rule: a handler never raises
+            self.handleError(record)
+
+
+def show_progress() -> None:
+    """Print the package's INFO records (and worse) on stderr; once per process, however often called."""
+    logger = logging.getLogger(LOGGER)
+    if not any(isinstance(handler, _Stderr) for handler in logger.handlers):
+        logger.addHandler(_Stderr())
+    logger.setLevel(logging.INFO)
+    logger.propagate = False  # the line once, whatever the root logger does
