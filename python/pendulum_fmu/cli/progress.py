@@ -9,6 +9,8 @@ from __future__ import annotations
 
 import logging
 import sys
+from collections.abc import Iterator
+from contextlib import contextmanager
 
 LOGGER = "pendulum_fmu"
 """The package's logger: every module logs under it (``logging.getLogger(__name__)``)."""
@@ -24,10 +26,21 @@ class _Stderr(logging.Handler):
             self.handleError(record)
 
 
-def show_progress() -> None:
-    """Print the package's INFO records (and worse) on stderr; once per process, however often called."""
+@contextmanager
+def progress_on_stderr() -> Iterator[None]:
+    """While the command runs, print the package's INFO records (and worse) on stderr, each once.
+
+    The logger is as it was afterwards: a program that calls :func:`pendulum_fmu.cli.main`
+    and then the library gets no lines on stderr from the library.
+    """
     logger = logging.getLogger(LOGGER)
-    if not any(isinstance(handler, _Stderr) for handler in logger.handlers):
-        logger.addHandler(_Stderr())
+    handler, level, propagate = _Stderr(), logger.level, logger.propagate
+    logger.addHandler(handler)
     logger.setLevel(logging.INFO)
     logger.propagate = False  # the line once, whatever the root logger does
+    try:
+        yield
+    finally:
+        logger.removeHandler(handler)
+        logger.setLevel(level)
+        logger.propagate = propagate
