@@ -2,10 +2,10 @@
 
 The typed API, imported on first use (so ``import pendulum_fmu`` stays quick)::
 
-    from pendulum_fmu import FmuRunner, Method, Pendulum, TimeGrid, fmu_path
+    from pendulum_fmu import FmuRunner, InitialValueProblem, Method, TimeGrid, fmu_path
 
     with FmuRunner(fmu_path()) as runner:
-        run = runner.run(Pendulum.from_degrees(85), Method("rkn", 1e-10), TimeGrid(10, "periods"))
+        run = runner.run(InitialValueProblem.from_degrees(85), Method("rkn", 1e-10), TimeGrid(10, "periods"))
     print(run.period, run.max_error)
 
 Sweeps: :class:`SweepGrid` and :func:`run_sweep`; figures: ``pendulum_fmu.figures.comparison.compare``
@@ -21,7 +21,7 @@ from typing import TYPE_CHECKING, Any
 __version__ = "0.1.0"
 
 _EXPORTS: dict[str, str] = {
-    "Pendulum": "spec", "Method": "spec", "TimeGrid": "spec", "SOLVERS": "spec",
+    "InitialValueProblem": "spec", "Method": "spec", "TimeGrid": "spec", "SOLVERS": "spec",
     "FmuRunner": "fmu.runner", "Trajectory": "fmu.runner",
     "SweepGrid": "sweep.grid", "SweepPoint": "sweep.grid", "run_sweep": "sweep.run",
     "UsageError": "errors", "SimulationError": "errors", "BuildError": "errors",
@@ -33,7 +33,7 @@ if TYPE_CHECKING:
     from pendulum_fmu.fmu.library import exact
     from pendulum_fmu.fmu.locate import locate_fmu
     from pendulum_fmu.fmu.runner import FmuRunner, Trajectory
-    from pendulum_fmu.spec import SOLVERS, Method, Pendulum, TimeGrid
+    from pendulum_fmu.spec import SOLVERS, InitialValueProblem, Method, TimeGrid
     from pendulum_fmu.sweep.grid import SweepGrid, SweepPoint
     from pendulum_fmu.sweep.run import run_sweep
 
@@ -62,7 +62,7 @@ def __getattr__(name: str) -> Any:
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
-__all__ = ["SOLVERS", "BuildError", "exact", "FmuRunner", "Method", "Pendulum", "SimulationError", "SweepGrid",
-           "SweepPoint",
+__all__ = ["SOLVERS", "BuildError", "exact", "FmuRunner", "InitialValueProblem", "Method", "SimulationError",
+           "SweepGrid", "SweepPoint",
            "TimeGrid", "Trajectory", "UsageError", "__version__", "fmu_path", "locate_fmu", "run_sweep",
            "split_path"]

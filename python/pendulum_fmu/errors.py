@@ -7,9 +7,11 @@ class UsageError(ValueError):
     """A bad argument: the message names the field and the allowed range.
 
     The library names the field as its own API does (``"theta0"``, ``"fmu"``, ``"stop_time"``),
-    or ``"$NAME"`` for an environment variable; the command line alone knows which flag sets a
-    field (``cli/main.py`` maps it to one, e.g. ``fmu`` to ``--fmu``) and prints an
-    argparse-style ``error:`` line with exit code 2, never a traceback.
+    or ``"$NAME"`` for an environment variable, never a command-line flag; the command line
+    alone knows which flag sets a field (``cli/fields.py`` maps it to one, e.g. ``fmu`` to
+    ``--fmu``) and prints an argparse-style ``error:`` line with exit code 2, never a traceback.
+    A message that points at another field writes its name in backquotes (``lower `fps```):
+    the command line puts the flag there (``lower --fps``).
 
     Parameters
     ----------
@@ -17,7 +19,7 @@ class UsageError(ValueError):
         The field or parameter that is wrong, e.g. ``"L"``, or ``"$NAME"`` for an environment
         variable.
     message : str
-        What is wrong and what is allowed.
+        What is wrong and what is allowed; other fields in backquotes.
     """
 
     def __init__(self, field: str, message: str) -> None:

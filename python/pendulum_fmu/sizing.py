@@ -9,16 +9,19 @@ refusal and a progress hint, not promises.
 
 from __future__ import annotations
 
+import logging
 import os
-import sys
 from pathlib import Path
 from typing import TYPE_CHECKING
 
 from pendulum_fmu.errors import UsageError
-from pendulum_fmu.spec import Method, Pendulum, TimeGrid
+from pendulum_fmu.spec import InitialValueProblem, Method, TimeGrid
 
 if TYPE_CHECKING:
     from pendulum_fmu.fmu.runner import FmuRunner, Trajectory
+
+_log = logging.getLogger(__name__)
+"""Says a long run's size and estimate before it starts (INFO; the command line shows it on stderr)."""
 
 BYTES_PER_POINT = 256
 """Memory per output point of one run: the recorded values, the result table, the time list
@@ -79,15 +82,15 @@ def duration_text(seconds: float) -> str:
     return f"{seconds / 86400:.0f} days"
 
 
-def check_run(points: int, argument: str = "-T/--stop-time", memory: int | None = None) -> float:
+def check_run(points: int, field: str = "stop_time", memory: int | None = None) -> float:
     """Refuse a run whose output points do not fit in memory; return its estimated seconds.
 
     Parameters
     ----------
     points : int
         Output points of the run (:meth:`TimeGrid.point_count`).
-    argument : str
-        The option to name in the refusal.
+    field : {"stop_time", "periods", "points_per_period"}
+        The field that set the run's size, named in the refusal.
     memory : int, optional
         Bytes available (default :func:`available_memory`).
 
@@ -106,26 +109,26 @@ def check_run(points: int, argument: str = "-T/--stop-time", memory: int | None 
     need = points * BYTES_PER_POINT
     fits = int(memory * MEMORY_SHARE / BYTES_PER_POINT)
     if need > memory * MEMORY_SHARE:
-        raise UsageError(argument, f"this run would record {quantity(points)} output points, about "
-                                   f"{size_text(need)} of memory, over the limit of half the "
-                                   f"{size_text(memory)} available: {_advice(argument)} (at most about "
-                                   f"{quantity(fits)} points fit)")
+        raise UsageError(field, f"this run would record {quantity(points)} output points, about "
+                                f"{size_text(need)} of memory, over the limit of half the "
+                                f"{size_text(memory)} available: {_advice(field)} (at most about "
+                                f"{quantity(fits)} points fit)")
     seconds = points * SECONDS_PER_POINT
     if seconds > MAX_SECONDS:
-        raise UsageError(argument, f"this run would record {quantity(points)} output points, about "
-                                   f"{duration_text(seconds)} of computing: {_advice(argument)}")
+        raise UsageError(field, f"this run would record {quantity(points)} output points, about "
+                                f"{duration_text(seconds)} of computing: {_advice(field)}")
     return seconds
 
 
-def _advice(argument: str) -> str:
-    """What to lower when a run is too big: the option named, and the output density if not that one."""
-    density = "-n/--points-per-period"
-    return f"lower {argument}" if argument == density else f"lower {argument} or {density}"
+def _advice(field: str) -> str:
+    """What to lower when a run is too big: the field named, and the output density if not that one."""
+    density = "points_per_period"
+    return f"lower `{field}`" if field == density else f"lower `{field}` or `{density}`"
 
 
-def length_option(grid: TimeGrid) -> str:
-    """The option that set the run's length: ``-T/--stop-time`` for seconds, ``-p/--periods`` for periods."""
-    return "-T/--stop-time" if grid.unit == "s" else "-p/--periods"
+def length_field(grid: TimeGrid) -> str:
+    """The field that set the run's length: ``stop_time`` for seconds, ``periods`` for periods."""
+    return "stop_time" if grid.unit == "s" else "periods"
 
 
 def sweep_run_seconds(points_per_run: int) -> float:
@@ -138,7 +141,7 @@ def sweep_run_seconds(points_per_run: int) -> float:
 
 
 def check_sweep(runs: int, points_per_run: int, workers: int, memory: int | None = None,
-                runs_argument: str = "-a/--amplitudes", fewer: str = "use fewer values on its axes") -> float:
+                runs_field: str = "amplitudes", fewer: str = "use fewer values on its axes") -> float:
     """Refuse a sweep that does not fit in memory or in :data:`MAX_SECONDS`; return its estimated seconds.
 
     Parameters
@@ -151,8 +154,9 @@ def check_sweep(runs: int, points_per_run: int, workers: int, memory: int | None
         Worker threads that share the runs (and each hold one run's points).
     memory : int, optional
         Bytes available (default :func:`available_memory`).
-    runs_argument, fewer : str
-        The option a refusal for too many runs names, and what it advises.
+    runs_field, fewer : str
+        The field a refusal for too many runs names, and what it advises (other fields in
+        backquotes, as :class:`~pendulum_fmu.errors.UsageError` says).
 
     Raises
     ------
@@ -162,26 +166,26 @@ def check_sweep(runs: int, points_per_run: int, workers: int, memory: int | None
     memory = available_memory() if memory is None else memory
     per_run = points_per_run * BYTES_PER_POINT
     if per_run * workers > memory * MEMORY_SHARE:
-        raise UsageError("-p/--periods", f"each run would record {quantity(points_per_run)} output points, about "
-                                         f"{size_text(per_run)} of memory per worker ({workers} workers), and "
-                                         f"{size_text(memory)} is available: lower -p/--periods or "
-                                         "-n/--points-per-period, or use fewer -j/--workers")
+        raise UsageError("periods", f"each run would record {quantity(points_per_run)} output points, about "
+                                    f"{size_text(per_run)} of memory per worker ({workers} workers), and "
+                                    f"{size_text(memory)} is available: lower `periods` or "
+                                    "`points_per_period`, or use fewer `workers`")
     need = runs * BYTES_PER_SWEEP_RUN
     if need > memory * MEMORY_SHARE:
         fits = int(memory * MEMORY_SHARE / BYTES_PER_SWEEP_RUN)
-        raise UsageError(runs_argument, f"this sweep has {quantity(runs)} runs, about {size_text(need)} of "
-                                        f"memory for their rows, and {size_text(memory)} is available: {fewer} "
-                                        f"(at most about {quantity(fits)} runs fit)")
+        raise UsageError(runs_field, f"this sweep has {quantity(runs)} runs, about {size_text(need)} of "
+                                     f"memory for their rows, and {size_text(memory)} is available: {fewer} "
+                                     f"(at most about {quantity(fits)} runs fit)")
     seconds = runs * sweep_run_seconds(points_per_run) / max(workers, 1)
     if seconds > MAX_SECONDS:
-        raise UsageError(runs_argument, f"this sweep has {quantity(runs)} runs of {quantity(points_per_run)} "
-                                        f"points, about {duration_text(seconds)} on {workers} workers: {fewer}, "
-                                        "fewer periods or points per period")
+        raise UsageError(runs_field, f"this sweep has {quantity(runs)} runs of {quantity(points_per_run)} "
+                                     f"points, about {duration_text(seconds)} on {workers} workers: {fewer}, "
+                                     "fewer periods or points per period")
     return seconds
 
 
-def planned_run(runner: FmuRunner, pendulum: Pendulum, method: Method, grid: TimeGrid,
-                argument: str | None = None, what: str = "simulating") -> Trajectory:
+def planned_run(runner: FmuRunner, problem: InitialValueProblem, method: Method, grid: TimeGrid,
+                field: str | None = None, what: str = "simulating") -> Trajectory:
     """Run one problem, its size checked before the first output point, saying so when it will take a while.
 
     The check comes between the FMU's initialization (which gives the period the grid counts
@@ -191,13 +195,15 @@ def planned_run(runner: FmuRunner, pendulum: Pendulum, method: Method, grid: Tim
     ----------
     runner : FmuRunner
         The loaded FMU.
-    pendulum, method, grid
+    problem, method, grid
         What to run.
-    argument : str, optional
-        The option to name in a refusal (default: the one that set the run's length,
-        :func:`length_option`).
+    field : str, optional
+        The field to name in a refusal (default: the one that set the run's length,
+        :func:`length_field`).
     what : str
-        The verb of the progress line (``simulating``, ``drawing``).
+        The verb of the progress line (``simulating``, ``drawing``), logged at INFO
+        (``simulating 10 million output points: about 30 s ...``) before a run estimated
+        longer than :data:`SLOW_SECONDS`.
 
     Returns
     -------
@@ -211,9 +217,8 @@ def planned_run(runner: FmuRunner, pendulum: Pendulum, method: Method, grid: Tim
     """
     def plan(period: float) -> None:
         points = grid.point_count(period)
-        seconds = check_run(points, length_option(grid) if argument is None else argument)
+        seconds = check_run(points, length_field(grid) if field is None else field)
         if seconds > SLOW_SECONDS:
-            print(f"{what} {quantity(points)} output points: about {duration_text(seconds)} ...", file=sys.stderr,
-                  flush=True)
+            _log.info("%s %s output points: about %s ...", what, quantity(points), duration_text(seconds))
 
-    return runner.run(pendulum, method, grid, plan)
+    return runner.run(problem, method, grid, plan)

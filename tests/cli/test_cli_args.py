@@ -13,7 +13,7 @@ from pendulum_fmu.cli.arguments import grid, positive
 from pendulum_fmu.cli.main import main
 from pendulum_fmu.errors import UsageError
 from pendulum_fmu.fmu import locate
-from pendulum_fmu.spec import Method, Pendulum, TimeGrid
+from pendulum_fmu.spec import InitialValueProblem, Method, TimeGrid
 
 SUBCOMMANDS = ("simulate", "compare", "study", "animate", "sweep", "bench")
 
@@ -93,10 +93,26 @@ def test_a_missing_build_without_cmake_is_a_usage_error(monkeypatch: pytest.Monk
     monkeypatch.setattr(locate, "PACKAGED_FMU", tmp_path / "packaged" / "Pendulum.fmu")
     monkeypatch.setattr(locate, "DEFAULT_BUILD_DIR", tmp_path / "build")
     monkeypatch.setattr(locate.shutil, "which", lambda name: None)
-    with pytest.raises(UsageError, match=r"argument --fmu: .*is missing or out of date and cmake is not on PATH"):
+    with pytest.raises(UsageError, match=r"argument fmu: .*is missing or out of date and cmake is not on PATH"):
         locate.locate_fmu()
-    with pytest.raises(UsageError, match=r"argument --fmu: .*is missing: build it"):
+    with pytest.raises(UsageError, match=r"argument fmu: .*is missing: build it") as refused:
         locate.locate_fmu(build=False)
+    assert refused.value.field == "fmu" and refused.value.message.endswith("pass `fmu` PATH or set PENDULUM_FMU")
+
+
+def test_a_missing_build_without_cmake_names_the_fmu_flag_on_the_command_line(
+        monkeypatch: pytest.MonkeyPatch, tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    monkeypatch.delenv("PENDULUM_FMU", raising=False)
+    monkeypatch.setattr(locate, "PACKAGED_FMU", tmp_path / "packaged" / "Pendulum.fmu")
+    monkeypatch.setattr(locate, "DEFAULT_BUILD_DIR", tmp_path / "build")
+    monkeypatch.setattr(locate.shutil, "which", lambda name: None)
+    with pytest.raises(SystemExit) as stop:
+        main(["simulate", "-p", "1"])
+    assert stop.value.code == 2
+    line, = capsys.readouterr().err.splitlines()
+    assert line.startswith("pendulum-fmu simulate: error: argument --fmu: ")
+    assert "is missing or out of date and cmake is not on PATH to build it: install cmake, pass --fmu PATH or set " \
+           "PENDULUM_FMU" in line
 
 
 @pytest.mark.parametrize("command", SUBCOMMANDS)
@@ -133,10 +149,11 @@ def test_grid_expands_ranges_and_lists() -> None:
 
 
 def test_the_api_raises_usage_errors_too() -> None:
-    with pytest.raises(UsageError, match="argument length: must be a finite number > 0"):
-        Pendulum(1.0, length=-1.0)
-    with pytest.raises(UsageError, match="argument amplitude: must be a finite angle"):
-        Pendulum(float("nan"))
+    with pytest.raises(UsageError, match="argument L: must be a finite number > 0") as refused:
+        InitialValueProblem(1.0, L=-1.0)
+    assert refused.value.field == "L"
+    with pytest.raises(UsageError, match="argument theta0: must be a finite angle"):
+        InitialValueProblem(float("nan"))
     with pytest.raises(UsageError, match="argument solver: must be one of dopri5, rk4, rkn, symplectic, cvode"):
         Method("euler")
     with pytest.raises(UsageError, match="argument tolerance: must be in"):

@@ -14,7 +14,7 @@ from scipy.special import ellipk
 from pendulum_fmu.cli.main import main
 from pendulum_fmu.fmu.runner import FmuRunner
 from pendulum_fmu.output.tables import read_table
-from pendulum_fmu.spec import CS_SOLVERS, Method, Pendulum, TimeGrid
+from pendulum_fmu.spec import CS_SOLVERS, InitialValueProblem, Method, TimeGrid
 
 
 def exact_period(amplitude_rad: float, length: float, gravity: float = 9.81) -> float:
@@ -71,7 +71,7 @@ def test_every_cosimulation_solver_is_the_one_run(fmu_path: Path) -> None:
     counts = {}
     with FmuRunner(fmu_path) as runner:
         for solver in CS_SOLVERS:
-            run = runner.run(Pendulum.from_degrees(80.0), Method(solver, 1e-8), TimeGrid(2, "periods"))
+            run = runner.run(InitialValueProblem.from_degrees(80.0), Method(solver, 1e-8), TimeGrid(2, "periods"))
             counts[solver] = (run.steps, run.rhs_evaluations)
             assert run.max_error < 1e-5, solver
     assert len(set(counts.values())) == len(CS_SOLVERS), counts

@@ -15,7 +15,7 @@ from pendulum_fmu import interrupt
 from pendulum_fmu.errors import UsageError
 from pendulum_fmu.fmu.runner import FmuRunner
 from pendulum_fmu.sizing import BYTES_PER_POINT, check_run, check_sweep, planned_run
-from pendulum_fmu.spec import Method, Pendulum, TimeGrid
+from pendulum_fmu.spec import InitialValueProblem, Method, TimeGrid
 from pendulum_fmu.sweep.grid import SweepGrid
 
 
@@ -98,9 +98,10 @@ def test_a_run_is_refused_past_half_the_memory() -> None:
     fits = int(memory * 0.5 / BYTES_PER_POINT)
     assert check_run(fits, memory=memory) == pytest.approx(fits * 3e-6)
     with pytest.raises(UsageError, match=r"this run would record 15\.6 million output points, about 4 GB of "
-                                         r"memory, over the limit of half the 8 GB available: lower -T/--stop-time or "
-                                         r"-n/--points-per-period \(at most about 15\.6 million points fit\)$"):
+                                         r"memory, over the limit of half the 8 GB available: lower `stop_time` or "
+                                         r"`points_per_period` \(at most about 15\.6 million points fit\)$") as refused:
         check_run(fits + 1, memory=memory)
+    assert refused.value.field == "stop_time"   # the library names fields; the command line, flags
 
 
 def test_a_sweep_is_counted_without_building_it_and_refused_past_the_memory() -> None:
@@ -122,8 +123,8 @@ def test_a_planned_run_initializes_the_fmu_once(fmu_path: Path, monkeypatch: pyt
     monkeypatch.setattr(FmuRunner, "_initialize", lambda runner, *args: calls.append(args) or initialize(runner, *args))
     method = Method(solver)
     with FmuRunner(fmu_path) as runner:
-        trajectory = planned_run(runner, Pendulum.from_degrees(80.0), method, TimeGrid(1, "periods", 10))
+        trajectory = planned_run(runner, InitialValueProblem.from_degrees(80.0), method, TimeGrid(1, "periods", 10))
         assert len(calls) == 1 and trajectory.result.size == 11
         with pytest.raises(UsageError, match="output points"):
-            planned_run(runner, Pendulum.from_degrees(80.0), method, TimeGrid(1e12, "periods", 1000))
+            planned_run(runner, InitialValueProblem.from_degrees(80.0), method, TimeGrid(1e12, "periods", 1000))
         assert len(calls) == 2   # refused after its initialization, before any point

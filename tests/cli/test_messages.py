@@ -7,7 +7,7 @@ from pathlib import Path
 
 import pytest
 
-from pendulum_fmu.cli.arguments import size_option
+from pendulum_fmu.cli.arguments import size_field
 from pendulum_fmu.cli.main import main
 from pendulum_fmu.cli.summary import warning_lines
 
@@ -44,12 +44,12 @@ def test_other_warnings_stay_as_the_fmu_logged_them() -> None:
 
 
 @pytest.mark.parametrize(("given", "named"), [
-    ({"stop_time": 3.0, "periods": None}, "-T/--stop-time"),
-    ({"stop_time": None, "periods": 100000.0}, "-p/--periods"),
-    ({"stop_time": None, "periods": None}, "-n/--points-per-period"),
+    ({"stop_time": 3.0, "periods": None}, "stop_time"),
+    ({"stop_time": None, "periods": 100000.0}, "periods"),
+    ({"stop_time": None, "periods": None}, "points_per_period"),
 ])
 def test_a_run_too_big_names_the_time_option_given(given: dict[str, float | None], named: str) -> None:
-    assert size_option(argparse.Namespace(**given)) == named
+    assert size_field(argparse.Namespace(**given)) == named
 
 
 def test_simulate_refuses_a_run_too_big_naming_periods_and_the_half(fmu_path: Path,

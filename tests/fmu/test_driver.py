@@ -27,10 +27,11 @@ import pytest
 from pendulum_fmu.errors import SimulationError
 from pendulum_fmu.fmu import driver
 from pendulum_fmu.fmu.runner import RECORDED, RESULT_DTYPE, FmuRunner, RunInterrupted
-from pendulum_fmu.spec import CS_SOLVERS, Method, Pendulum, TimeGrid
+from pendulum_fmu.spec import CS_SOLVERS, InitialValueProblem, Method, TimeGrid
 
-HARD_CASE = Pendulum(math.pi, 1e-15)   # a rotation the solvers reverse at the top (test_hard_case_warning)
-CASES = [Pendulum.from_degrees(80.0), Pendulum(0.5, 9.0), Pendulum.from_degrees(179.0, 0.3)]
+HARD_CASE = InitialValueProblem(math.pi, 1e-15)   # a rotation the solvers reverse at the top (test_hard_case_warning)
+CASES = [InitialValueProblem.from_degrees(80.0), InitialValueProblem(0.5, 9.0),
+         InitialValueProblem.from_degrees(179.0, 0.3)]
 
 
 def test_the_c_loop_is_built_and_used(fmu_path: Path) -> None:
@@ -73,7 +74,7 @@ def test_fmi2_and_fmi3_give_the_same_numbers(fmu_path: Path, fmu3_path: Path) ->
             assert a.result.tobytes() == b.result.tobytes() and a.period == b.period
 
 
-def _initialized(runner: FmuRunner, pendulum: Pendulum) -> object:
+def _initialized(runner: FmuRunner, pendulum: InitialValueProblem) -> object:
     return runner.initialized(pendulum, Method("rkn", 1e-8))
 
 

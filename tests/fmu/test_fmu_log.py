@@ -10,7 +10,7 @@ import numpy as np
 from pendulum_fmu.cli.summary import summary_lines
 from pendulum_fmu.fmu import log as fmu_log
 from pendulum_fmu.fmu.runner import FmuRunner, Trajectory
-from pendulum_fmu.spec import Method, Pendulum, TimeGrid
+from pendulum_fmu.spec import InitialValueProblem, Method, TimeGrid
 from pendulum_fmu.sweep.grid import SweepPoint
 from pendulum_fmu.sweep.worker import row_of
 
@@ -34,10 +34,10 @@ def test_warnings_are_routed_to_their_instance_and_kept_once_in_order() -> None:
 
 def test_a_run_without_warnings_has_none_and_a_warned_run_says_so(fmu_path: Path) -> None:
     with FmuRunner(fmu_path) as runner:
-        run = runner.run(Pendulum.from_degrees(80.0), Method(), TimeGrid(1, "periods"))
+        run = runner.run(InitialValueProblem.from_degrees(80.0), Method(), TimeGrid(1, "periods"))
     assert run.warnings == ()
     assert not any(line.startswith("warning") for line in summary_lines(run))
-    warned = Trajectory(run.pendulum, run.method, run.grid, run.period, run.result, run.steps, run.rejected_steps,
+    warned = Trajectory(run.problem, run.method, run.grid, run.period, run.result, run.steps, run.rejected_steps,
                         run.rhs_evaluations, run.wall_time, ("hard case: near the top",))
     assert summary_lines(warned)[-1] == "warning   the FMU: hard case: near the top"
     point = SweepPoint(80.0, 0.0, 1.0, 9.81, "rkn", 1e-8, 1.0, 50)
@@ -54,7 +54,7 @@ def test_a_run_keeps_its_warnings_after_fmpy_took_the_logging_proxy(fmu_path: Pa
 
     elsewhere: list[object] = []
     with FmuRunner(fmu_path) as runner:  # the package's callbacks exist before fmpy's call
-        runner.run(Pendulum.from_degrees(80.0), Method(), TimeGrid(1, "periods"))
+        runner.run(InitialValueProblem.from_degrees(80.0), Method(), TimeGrid(1, "periods"))
         simulate_fmu(str(fmu_path), stop_time=0.1, logger=lambda *message: elsewhere.append(message))
-        run = runner.run(Pendulum(math.pi, 1e-15), Method("rkn", 1e-8), TimeGrid(1, "periods"))
+        run = runner.run(InitialValueProblem(math.pi, 1e-15), Method("rkn", 1e-8), TimeGrid(1, "periods"))
     assert any(w.startswith("certificate:") or "hard case:" in w for w in run.warnings), run.warnings

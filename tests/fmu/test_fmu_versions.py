@@ -21,7 +21,7 @@ from pendulum_fmu.cli.main import main
 from pendulum_fmu.errors import UsageError
 from pendulum_fmu.fmu.identity import pendulum_problem
 from pendulum_fmu.fmu.runner import FmuRunner
-from pendulum_fmu.spec import Method, Pendulum, TimeGrid
+from pendulum_fmu.spec import InitialValueProblem, Method, TimeGrid
 from pendulum_fmu.sweep.grid import SweepGrid
 from pendulum_fmu.sweep.run import run_sweep
 
@@ -114,7 +114,7 @@ def test_fmi_version_and_fmu_must_agree(fmu_path: Path, capsys: pytest.CaptureFi
 def test_runner_and_sweep_take_fmi3_and_refuse_others(fmu3_path: Path, foreign: dict[str, Path],
                                                       tmp_path: Path) -> None:
     with FmuRunner(fmu3_path) as runner:
-        run = runner.run(Pendulum.from_degrees(80.0), Method("rkn", 1e-9), TimeGrid(2, "periods", 20))
+        run = runner.run(InitialValueProblem.from_degrees(80.0), Method("rkn", 1e-9), TimeGrid(2, "periods", 20))
         assert runner.fmi_version == 3 and run.max_error < 1e-9 and run.steps and run.steps > 0
     for fmu in foreign.values():
         with pytest.raises(UsageError, match="argument fmu: '.*' (is not the Pendulum FMU|cannot be read)"):

@@ -18,7 +18,7 @@ import numpy as np
 from fmpy import simulate_fmu
 from scipy.special import ellipkm1
 
-from pendulum_fmu.spec import Pendulum
+from pendulum_fmu.spec import InitialValueProblem
 
 Interface = Literal["CS", "ME"]
 
@@ -33,19 +33,19 @@ class Scenario:
     points_per_period: int = 50
 
     @property
-    def pendulum(self) -> Pendulum:
+    def problem(self) -> InitialValueProblem:
         """The initial value problem."""
-        return Pendulum.from_degrees(self.amplitude_deg)
+        return InitialValueProblem.from_degrees(self.amplitude_deg)
 
     @property
     def w0(self) -> float:
         """sqrt(g / L), rad/s."""
-        return self.pendulum.w0
+        return self.problem.w0
 
     @property
     def period(self) -> float:
         """4 K(m) / w0, s."""
-        return 4.0 * float(ellipkm1(math.cos(self.pendulum.amplitude_rad / 2.0) ** 2)) / self.w0
+        return 4.0 * float(ellipkm1(math.cos(self.problem.theta0 / 2.0) ** 2)) / self.w0
 
 
 @dataclass
@@ -67,6 +67,6 @@ def simulate(fmu: Path, scenario: Scenario, interface: Interface = "CS", toleran
     steps = round(scenario.periods * scenario.points_per_period)
     result = simulate_fmu(str(fmu), fmi_type="CoSimulation" if interface == "CS" else "ModelExchange",
                           start_time=0.0, stop_time=steps * step, output_interval=step, relative_tolerance=tolerance,
-                          start_values=scenario.pendulum.start_values(),
+                          start_values=scenario.problem.start_values(),
                           output=["theta", "omega", "theta_exact", "omega_exact"], validate=False)
     return FmpyRun(scenario, result)

@@ -132,7 +132,7 @@ def test_a_gif_needs_no_ffmpeg(monkeypatch: pytest.MonkeyPatch) -> None:
     def stop_here(*args: object) -> None:
         raise Reached
 
-    monkeypatch.setattr(animate_command, "pendulum_from", stop_here)
+    monkeypatch.setattr(animate_command, "problem_from", stop_here)
     with pytest.raises(Reached):
         animate_command.run(argparse.Namespace(out=Path("film.gif")))
     with pytest.raises(SystemExit):

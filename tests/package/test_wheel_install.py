@@ -78,8 +78,9 @@ def test_the_installed_package_runs_its_shipped_c_loop(installed: Path, tmp_path
     (not the checkout's build/), for the FMI 2.0 and the FMI 3.0 FMU it carries."""
     python = installed.parent / "python"
     script = ("from pendulum_fmu.fmu import driver; from pendulum_fmu.fmu.build import PACKAGED_FMU, PACKAGED_FMU3; "
-              "from pendulum_fmu import FmuRunner, Pendulum, Method, TimeGrid; print(driver.library_path()); "
-              "[print(r.loop, r.fmi_version, r.run(Pendulum.from_degrees(80), Method('rkn', 1e-9), "
+              "from pendulum_fmu import FmuRunner, InitialValueProblem, Method, TimeGrid; "
+              "print(driver.library_path()); "
+              "[print(r.loop, r.fmi_version, r.run(InitialValueProblem.from_degrees(80), Method('rkn', 1e-9), "
               "TimeGrid(2, 'periods', 20)).max_error) for r in (FmuRunner(PACKAGED_FMU), FmuRunner(PACKAGED_FMU3))]")
     private_tmp = tmp_path / "tmp"
     private_tmp.mkdir()

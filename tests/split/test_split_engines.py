@@ -120,13 +120,13 @@ def test_fmi2_messages_after_a_container_run(tmp_path: Path, capsys: pytest.Capt
     reaches fmpy's logger, not freed memory (which crashed the process)."""
     from fmpy.fmi1 import FMICallException
 
-    from pendulum_fmu.split.pair import ALPHA, Pair, Problem
+    from pendulum_fmu.split.pair import ALPHA, DEFAULT_PROBLEM, Pair
 
     _skip_unless_installed("fmucontainer")
     run_engine("fmucontainer", 0.01, 0.2, tmp_path / "container.csv", 2)
     import gc
 
     gc.collect()
-    with Pair(Problem(), 2) as pair, pytest.raises(FMICallException, match="status 3"):
+    with Pair(DEFAULT_PROBLEM, 2) as pair, pytest.raises(FMICallException, match="status 3"):
         pair.set(pair.body, ALPHA, math.nan)
     assert "alpha (value reference 16) = nan: must be a finite number" in capsys.readouterr().out

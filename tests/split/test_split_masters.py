@@ -17,6 +17,7 @@ import numpy as np
 import pytest
 
 from pendulum_fmu import exact
+from pendulum_fmu.spec import InitialValueProblem
 from pendulum_fmu.split.masters import (
     ITERATION_CAP,
     MASTERS,
@@ -26,7 +27,7 @@ from pendulum_fmu.split.masters import (
     observed_orders,
     run_master,
 )
-from pendulum_fmu.split.pair import Problem
+from pendulum_fmu.split.pair import DEFAULT_PROBLEM
 from split_closed_form import simulate
 
 STOP = 2.0
@@ -36,7 +37,7 @@ STOP = 2.0
 def test_masters_equal_the_closed_form(master: Master) -> None:
     """Through the FMUs, each master's theta and omega equal the closed form's to 1e-13
     (75 deg and a rotation with L = 2)."""
-    for problem in (Problem(), Problem(L=2.0, g=9.81, theta0=0.3, omega0=4.5)):
+    for problem in (DEFAULT_PROBLEM, InitialValueProblem(L=2.0, g=9.81, theta0=0.3, omega0=4.5)):
         fmus = run_master(master, 0.05, STOP, problem)
         again = simulate(master.scheme, master.coupling, 0.05, STOP, problem.theta0, problem.omega0, problem.L,
                          problem.g)
@@ -47,7 +48,7 @@ def test_masters_equal_the_closed_form(master: Master) -> None:
 
 def test_theta_exact_is_the_exact_pendulum() -> None:
     """Body's theta_exact (the error's reference) against pendulum_fmu.exact at the same times."""
-    problem = Problem(L=1.5, g=9.81, theta0=2.8, omega0=0.0)
+    problem = InitialValueProblem(L=1.5, g=9.81, theta0=2.8, omega0=0.0)
     run = run_master(master_named("gauss-seidel-zoh"), 0.01, STOP, problem)
     theta, omega = exact(problem.theta0, problem.omega0, problem.L, problem.g, run.time)
     assert np.max(np.abs(run.theta_exact - theta)) < 1e-12

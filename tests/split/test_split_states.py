@@ -17,9 +17,10 @@ import numpy as np
 import pytest
 from fmpy.fmi1 import FMICallException
 
-from pendulum_fmu.split.pair import ALPHA, OMEGA, OMEGA_EXACT, THETA, THETA_EXACT, Pair, Problem
+from pendulum_fmu.spec import InitialValueProblem
+from pendulum_fmu.split.pair import ALPHA, OMEGA, OMEGA_EXACT, THETA, THETA_EXACT, Pair
 
-PROBLEM = Problem(L=1.5, g=9.81, theta0=2.5, omega0=-0.75)
+PROBLEM = InitialValueProblem(L=1.5, g=9.81, theta0=2.5, omega0=-0.75)
 
 
 def gauss_seidel(pair: Pair, first: int, last: int, H: float = 0.03) -> np.ndarray:
@@ -69,7 +70,7 @@ def test_a_serialized_state_continues_in_another_pair(version: int) -> None:
         blobs = serialized(pair, states)
         first = gauss_seidel(pair, 11, 40)
         pair.free(states)
-    with Pair(Problem(L=1.5, g=9.81, theta0=0.2, omega0=3.0), version) as other:
+    with Pair(InitialValueProblem(L=1.5, g=9.81, theta0=0.2, omega0=3.0), version) as other:
         restored = [fmu.deserializeFMUState(blob) for fmu, blob in zip(other.instances, blobs, strict=True)]
         assert serialized(other, restored) == blobs
         other.restore(restored)

@@ -28,7 +28,7 @@ from mpmath_pendulum import DIGITS, true_state
 from pendulum_fmu.cli.main import main
 from pendulum_fmu.errors import UsageError
 from pendulum_fmu.fmu.runner import FmuRunner
-from pendulum_fmu.spec import CS_SOLVERS, Method, Pendulum, TimeGrid
+from pendulum_fmu.spec import CS_SOLVERS, InitialValueProblem, Method, TimeGrid
 from pendulum_fmu.study.hard_cases import hard_cases
 from pendulum_fmu.study.speed import LEVELS
 from pendulum_fmu.study.tradeoff import cost_to_reach, pareto_front
@@ -60,19 +60,19 @@ def runner(fmu_path: Path) -> Iterator[FmuRunner]:
 _references: dict[tuple[float, float, bytes], np.ndarray] = {}
 
 
-def true_states(pendulum: Pendulum, times: np.ndarray, start: float = 0.0) -> np.ndarray:
+def true_states(pendulum: InitialValueProblem, times: np.ndarray, start: float = 0.0) -> np.ndarray:
     """(theta, omega) at ``times`` by mpmath (40 digits), the time since ``start`` taken exactly;
     shape (2, len(times))."""
-    key = (pendulum.amplitude_rad, pendulum.omega0, np.asarray(times).tobytes() + repr(start).encode())
+    key = (pendulum.theta0, pendulum.omega0, np.asarray(times).tobytes() + repr(start).encode())
     if key not in _references:
         with mp.workdps(DIGITS):
             _references[key] = np.array([[float(v) for v in true_state(
-                pendulum.amplitude_rad, pendulum.omega0, pendulum.gravity, pendulum.length,
+                pendulum.theta0, pendulum.omega0, pendulum.g, pendulum.L,
                 mp.mpf(float(t)) - mp.mpf(start))] for t in times]).T
     return _references[key]
 
 
-def true_theta(pendulum: Pendulum, times: np.ndarray, start: float = 0.0) -> np.ndarray:
+def true_theta(pendulum: InitialValueProblem, times: np.ndarray, start: float = 0.0) -> np.ndarray:
     """theta at ``times`` by mpmath (:func:`true_states`)."""
     return true_states(pendulum, times, start)[0]
 
@@ -94,7 +94,7 @@ def test_the_error_column_is_the_true_error_by_mpmath(study: dict, runner: FmuRu
         method = Method(row["method"], float(row["tolerance"]))
         worst, rhs = 0.0, 0
         for amplitude in AMPLITUDES:
-            pendulum = Pendulum.from_degrees(amplitude)
+            pendulum = InitialValueProblem.from_degrees(amplitude)
             run = runner.run(pendulum, method, GRID)
             worst = max(worst, float(np.max(np.abs(run.result["theta"] - true_theta(pendulum, run.result["time"])))))
             rhs += run.rhs_evaluations if run.rhs_evaluations is not None else run.derivative_calls or 0
@@ -126,7 +126,7 @@ def test_cvode_evaluations_match_the_benchmarks_count(fmu_path: Path) -> None:
     with FmuRunner(fmu_path) as loaded:
         for tol in (1e-6, 1e-10):
             theirs = run_fmu_me(unzipped, make_grid(unzipped, Case.from_rest("P1", 80.0, 10.0), 50), "cvode", tol)
-            ours = loaded.run(Pendulum.from_degrees(80.0), Method("cvode", tol), GRID)
+            ours = loaded.run(InitialValueProblem.from_degrees(80.0), Method("cvode", tol), GRID)
             assert ours.derivative_calls == theirs.rhs_evaluations > 100
             assert ours.max_error == theirs.max_err
 
@@ -202,15 +202,15 @@ def test_the_creep_over_the_top_warns_for_every_solver(study: dict, runner: FmuR
     case = next(c for c in hard_cases() if c.short == "creep over the top")
     rows = {r["solver"]: r for r in study["hard"] if r["case"] == case.name}
     for solver in CS_SOLVERS:
-        run = runner.run(case.pendulum, Method(solver), TimeGrid(case.periods, "periods", 50))
-        theta, omega = true_states(case.pendulum, run.result["time"][1:])
+        run = runner.run(case.problem, Method(solver), TimeGrid(case.periods, "periods", 50))
+        theta, omega = true_states(case.problem, run.result["time"][1:])
         assert abs(run.result["theta"][-1] - theta[-1]) > 1.0   # qualitatively wrong
         assert int(rows[solver]["hard_case_warnings"]) == 1 and rows[solver]["verdict"].startswith("WARNED")
         # the steps beyond the bound, counted against mpmath's state: the table's count, give or
         # take a step within the exact port's 5e-14 of the bound
         bound = 100 * 1e-8
         beyond = ((np.abs(run.result["theta"][1:] - theta) > bound * np.maximum(1.0, np.abs(theta)))
-                  | (np.abs(run.result["omega"][1:] - omega) > bound * np.maximum(case.pendulum.w0, np.abs(omega))))
+                  | (np.abs(run.result["omega"][1:] - omega) > bound * np.maximum(case.problem.w0, np.abs(omega))))
         assert abs(int(rows[solver]["steps_beyond"]) - int(np.count_nonzero(beyond))) <= 1, solver
     assert rows["cvode"]["verdict"].startswith("UNCERTIFIED (ME)")
 
@@ -223,10 +223,10 @@ def test_certified_runs_are_within_the_true_bound(study: dict, runner: FmuRunner
     rows = {r["solver"]: r for r in study["hard"] if r["case"] == case.name}
     for solver in ("rkn", "dopri5"):
         assert rows[solver]["verdict"].startswith("certified"), rows[solver]
-        run = runner.run(case.pendulum, Method(solver), TimeGrid(case.periods, "periods", 50),
+        run = runner.run(case.problem, Method(solver), TimeGrid(case.periods, "periods", 50),
                          start_time=case.start_time)
         assert run.result["time"][0] == case.start_time
-        truth = true_theta(case.pendulum, run.result["time"], case.start_time)
+        truth = true_theta(case.problem, run.result["time"], case.start_time)
         bound = 100 * 1e-8 * np.maximum(1.0, np.abs(truth))
         assert np.all(np.abs(run.result["theta"] - truth) <= bound), solver
         assert float(rows[solver]["max_error_rad"]) == pytest.approx(run.max_error, rel=1e-12, abs=0.0)
@@ -239,9 +239,9 @@ def test_the_long_run_warns_where_the_last_point_is_beyond_the_bound(study: dict
     beyond = []
     grid = TimeGrid(case.periods, "periods", 50)
     for solver in CS_SOLVERS:
-        run = runner.run(case.pendulum, Method(solver), grid)
+        run = runner.run(case.problem, Method(solver), grid)
         assert int(rows[solver]["points"]) == run.result.size - 1 == 500_000
-        truth = true_theta(case.pendulum, run.result["time"][-1:])[0]
+        truth = true_theta(case.problem, run.result["time"][-1:])[0]
         if abs(run.result["theta"][-1] - truth) > 100 * 1e-8 * max(1.0, abs(truth)):
             beyond.append(solver)
             assert int(rows[solver]["certificate_warnings"]) > 0, rows[solver]
@@ -263,14 +263,14 @@ def test_model_exchange_beyond_100_tol_is_said(study: dict) -> None:
 
 def test_a_start_time_that_is_not_finite_is_refused(runner: FmuRunner) -> None:
     with pytest.raises(UsageError, match="start_time"):
-        runner.run(Pendulum.from_degrees(75.0), Method(), GRID, start_time=math.nan)
+        runner.run(InitialValueProblem.from_degrees(75.0), Method(), GRID, start_time=math.nan)
 
 
 def test_both_fmi_versions_count_cvode_calls_and_start_late(fmu_any: Path) -> None:
     """FMI 2.0 and 3.0 alike: Model Exchange counts its derivative calls (fmi2GetDerivatives,
     fmi3GetContinuousStateDerivatives) and Co-Simulation starts at a large start time, where the
     exact solution agrees with mpmath counted from that time and the run holds its bound."""
-    pendulum = Pendulum.from_degrees(75.0)
+    pendulum = InitialValueProblem.from_degrees(75.0)
     grid = TimeGrid(2, "periods", 50)
     with FmuRunner(fmu_any) as loaded:
         me = loaded.run(pendulum, Method("cvode", 1e-8), grid)

@@ -27,7 +27,7 @@ import numpy as np
 from pendulum_fmu.split.diagnosis import label_shift
 from pendulum_fmu.split.engines import EngineError, engine_names, engine_version, missing, run_engine
 from pendulum_fmu.split.masters import MASTERS, observed_orders, run_master
-from pendulum_fmu.split.pair import Problem
+from pendulum_fmu.split.pair import DEFAULT_PROBLEM
 from pendulum_fmu.split.reading import read_coupled
 
 STEPS: tuple[float, ...] = (1e-3, 5e-4, 2.5e-4, 1.25e-4)
@@ -67,7 +67,7 @@ def engine_error(path: Path, H: float) -> float:
     from pendulum_fmu import exact
 
     result = read_coupled(path)
-    problem = Problem()
+    problem = DEFAULT_PROBLEM
     time = result.time + label_shift(result.time, result.values, result.resolution, problem, H) * H
     theta = exact(problem.theta0, problem.omega0, problem.L, problem.g, time)[0]
     return float(np.max(np.abs(result.values["theta"] - theta)))

@@ -11,8 +11,8 @@ from pendulum_fmu.cli.arguments import (
     integer,
     method_from,
     output_file,
-    pendulum_from,
     positive,
+    problem_from,
 )
 from pendulum_fmu.cli.extras import require_extra
 from pendulum_fmu.spec import StopUnit
@@ -59,10 +59,10 @@ def run(args: argparse.Namespace) -> int:
     from pendulum_fmu.cli.summary import summary_lines
     from pendulum_fmu.figures.animation import animate
 
-    pendulum, method = pendulum_from(args), method_from(args)
+    problem, method = problem_from(args), method_from(args)
     unit: StopUnit = "s" if args.stop_time is not None else "periods"
     stop = args.stop_time if unit == "s" else args.periods or 2.0
-    trajectory = animate(args.fmu, pendulum, method, stop, unit, args.out, args.fps, args.speed)
+    trajectory = animate(args.fmu, problem, method, stop, unit, args.out, args.fps, args.speed)
     print("\n".join(summary_lines(trajectory)))
     print(f"written   {args.out} ({trajectory.result.size} frames at {args.fps} frames/s)")
     return 0

@@ -16,7 +16,7 @@ from pathlib import Path
 from pendulum_fmu.errors import UsageError
 from pendulum_fmu.fmu.locate import locate_fmu, runnable_problem
 from pendulum_fmu.output.paths import OutputError, check_output_file, check_output_folder
-from pendulum_fmu.spec import CS_SOLVERS, DEFAULT_CS_SOLVER, ME_SOLVERS, SOLVERS, Method, Pendulum, TimeGrid
+from pendulum_fmu.spec import CS_SOLVERS, DEFAULT_CS_SOLVER, ME_SOLVERS, SOLVERS, InitialValueProblem, Method, TimeGrid
 
 MAX_GRID_VALUES = 100_000
 """Most values one grid axis may expand to (a guard against a typo like ``0:1:1e9``)."""
@@ -265,9 +265,9 @@ def add_time_arguments(parser: argparse.ArgumentParser, default_periods: float) 
     parser.set_defaults(default_periods=default_periods)
 
 
-def pendulum_from(args: argparse.Namespace) -> Pendulum:
-    """The :class:`Pendulum` of the parsed pendulum options."""
-    return Pendulum(args.amplitude, args.omega0, args.length, args.gravity)
+def problem_from(args: argparse.Namespace) -> InitialValueProblem:
+    """The :class:`InitialValueProblem` of the parsed pendulum options (``--amplitude`` parsed to rad)."""
+    return InitialValueProblem(args.amplitude, args.omega0, args.length, args.gravity)
 
 
 def method_from(args: argparse.Namespace) -> Method:
@@ -284,7 +284,7 @@ def method_from(args: argparse.Namespace) -> Method:
     allowed = ME_SOLVERS if interface == "ME" else CS_SOLVERS if interface == "CS" else SOLVERS
     if solver not in allowed:
         kind = "Model Exchange" if solver in ME_SOLVERS else "Co-Simulation"
-        raise UsageError("-s/--solver", f"{solver} is a {kind} method: with --interface {interface} choose from "
+        raise UsageError("solver", f"{solver} is a {kind} method: with --interface {interface} choose from "
                                         f"{', '.join(allowed)}")
     return Method(solver, args.tolerance)
 
@@ -297,14 +297,14 @@ def grid_from(args: argparse.Namespace) -> TimeGrid:
     return TimeGrid(periods, "periods", args.points_per_period)
 
 
-def size_option(args: argparse.Namespace) -> str:
-    """The time option the user gave, for a refusal of a run too big: ``-T/--stop-time``, else
-    ``-p/--periods``, else ``-n/--points-per-period`` (the default length alone always fits)."""
+def size_field(args: argparse.Namespace) -> str:
+    """The time field the user gave, for a refusal of a run too big: ``stop_time``, else
+    ``periods``, else ``points_per_period`` (the default length alone always fits)."""
     if args.stop_time is not None:
-        return "-T/--stop-time"
+        return "stop_time"
     if args.periods is not None:
-        return "-p/--periods"
-    return "-n/--points-per-period"
+        return "periods"
+    return "points_per_period"
 
 
 _ROLE = re.compile(r":[a-z]+:`(~?)([^`<]*?)(?:\s*<([^>]*)>)?`")

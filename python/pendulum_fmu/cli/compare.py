@@ -12,7 +12,7 @@ from pendulum_fmu.cli.arguments import (
     grid_from,
     method_from,
     output_file,
-    pendulum_from,
+    problem_from,
 )
 
 NAME = "compare"
@@ -48,8 +48,8 @@ def run(args: argparse.Namespace) -> int:
     from pendulum_fmu.cli.summary import summary_lines
     from pendulum_fmu.figures.comparison import compare
 
-    pendulum, method, grid = pendulum_from(args), method_from(args), grid_from(args)
-    trajectory = compare(args.fmu, pendulum, method, grid, args.out)
+    problem, method, grid = problem_from(args), method_from(args), grid_from(args)
+    trajectory = compare(args.fmu, problem, method, grid, args.out)
     print("\n".join(summary_lines(trajectory)))
     print(f"written   {args.out}")
     if args.data is not None:

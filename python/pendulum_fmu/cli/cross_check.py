@@ -46,13 +46,13 @@ def run(args: argparse.Namespace) -> int:
             described = describe(fmu)
             _, left_out = platforms(fmu, described)
         except ValueError as error:
-            raise UsageError("--fmu", str(error)) from None
+            raise UsageError("fmu", str(error)) from None
         if left_out:
             print(f"{fmu}: no cross-check platform for binaries/{', binaries/'.join(left_out)}: left out")
     try:
         folders = export(fmus, args.out)
     except ValueError as error:
-        raise UsageError("--fmu", str(error)) from None
+        raise UsageError("fmu", str(error)) from None
     for folder in folders:
         print(folder)
     return 0

@@ -1,14 +1,16 @@
 """Which command-line flag sets which field: the library names fields, the command names flags.
 
 A :class:`~pendulum_fmu.errors.UsageError` carries the field its API names (``theta0``,
-``fmu``, ``stop_time``); the command line reports it under the flag the user typed. The flag
-is read off the subcommand's own parser (the option whose ``dest`` is the field, or the
-field's ``dest`` in :data:`DESTS` where the two differ), so a new option needs no entry here.
+``fmu``, ``stop_time``); the command line reports it under the flag the user typed, and puts
+flags for the fields its message names in backquotes. The flag is read off the subcommand's
+own parser (the option whose ``dest`` is the field, or the field's ``dest`` in :data:`DESTS`
+where the two differ), so a new option needs no entry here.
 """
 
 from __future__ import annotations
 
 import argparse
+import re
 
 from pendulum_fmu.errors import UsageError
 
@@ -48,10 +50,20 @@ def command_line_message(error: UsageError, parser: argparse.ArgumentParser) -> 
     Returns
     -------
     str
-        The message under the flag that sets the field; an environment variable, or a field no
-        option sets, as the error names it.
+        The message under the flag that sets the field, each field it names in backquotes
+        replaced by its flag; an environment variable, or a field no option sets, as the error
+        names it.
     """
+    message = _MENTION.sub(lambda mention: flag_of(mention.group(1), parser), error.message)
     if error.field.startswith("$"):
-        return str(error)
-    flag = _option_of(parser, DESTS.get(error.field, error.field))
-    return f"argument {flag or error.field}: {error.message}"
+        return f"environment variable {error.field[1:]}: {message}"
+    return f"argument {flag_of(error.field, parser)}: {message}"
+
+
+_MENTION = re.compile(r"`(\w+)`")
+"""A field a message names in backquotes."""
+
+
+def flag_of(field: str, parser: argparse.ArgumentParser) -> str:
+    """``-L/--length`` for ``L``: the option of ``parser`` that sets ``field``, else the field's name."""
+    return _option_of(parser, DESTS.get(field, field)) or field

@@ -19,6 +19,7 @@ from pendulum_fmu import __version__
 from pendulum_fmu.cli import animate, bench, compare, completion, cross_check, judge, simulate, study, suite, sweep
 from pendulum_fmu.cli.arguments import resolve_fmu
 from pendulum_fmu.cli.fields import command_line_message
+from pendulum_fmu.cli.progress import progress_on_stderr
 from pendulum_fmu.errors import BuildError, SimulationError, UsageError
 from pendulum_fmu.interrupt import check as check_interrupt
 from pendulum_fmu.interrupt import default_dispositions, exit_quietly_on_interrupt
@@ -109,7 +110,7 @@ def _unexpected(error: Exception) -> str:
 
 
 def main(argv: list[str] | None = None) -> int:
-    """Run ``pendulum-fmu COMMAND [options]``.
+    """Run ``pendulum-fmu COMMAND [options]``, the library's progress lines on stderr.
 
     Parameters
     ----------
@@ -143,9 +144,10 @@ def main(argv: list[str] | None = None) -> int:
     subparser: argparse.ArgumentParser = args.subparser
     hint = "; run the same command again to resume" if args.command == "sweep" else ""
     try:
-        resolve_fmu(args)
-        check_interrupt()
-        code = int(args.handler(args))
+        with progress_on_stderr():  # the library's progress lines (a build starting, a long run's estimate)
+            resolve_fmu(args)
+            check_interrupt()
+            code = int(args.handler(args))
         check_interrupt()  # one a garbage collector's callback could not raise (interrupt._quiet_unraisable)
         if argv is None:   # the program itself: an interrupt from here to its exit is one line too
             exit_quietly_on_interrupt(f"\n{subparser.prog}: interrupted{hint}\n")

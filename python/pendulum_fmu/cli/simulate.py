@@ -15,8 +15,8 @@ from pendulum_fmu.cli.arguments import (
     grid_from,
     method_from,
     output_file,
-    pendulum_from,
-    size_option,
+    problem_from,
+    size_field,
 )
 
 if TYPE_CHECKING:
@@ -57,9 +57,9 @@ def trajectory_columns(trajectory: Trajectory) -> dict[str, np.ndarray]:
 
 def trajectory_metadata(trajectory: Trajectory) -> dict[str, str]:
     """The run's inputs and scalar results, for the Parquet schema."""
-    p, m = trajectory.pendulum, trajectory.method
-    return {"amplitude_rad": repr(p.amplitude_rad), "omega0_rad_s": repr(p.omega0), "length_m": repr(p.length),
-            "gravity_m_s2": repr(p.gravity), "interface": m.interface, "solver": m.solver,
+    p, m = trajectory.problem, trajectory.method
+    return {"amplitude_rad": repr(p.theta0), "omega0_rad_s": repr(p.omega0), "length_m": repr(p.L),
+            "gravity_m_s2": repr(p.g), "interface": m.interface, "solver": m.solver,
             "tolerance": repr(m.effective_tolerance), "period_s": repr(trajectory.period),
             "max_error_rad": repr(trajectory.max_error), "steps": str(trajectory.steps),
             "rhs_evaluations": str(trajectory.rhs_evaluations)}
@@ -83,12 +83,12 @@ def run(args: argparse.Namespace) -> int:
     from pendulum_fmu.fmu.runner import FmuRunner
     from pendulum_fmu.output.experiment_record import record_of, write_series
 
-    pendulum, method, grid = pendulum_from(args), method_from(args), grid_from(args)
+    problem, method, grid = problem_from(args), method_from(args), grid_from(args)
     from pendulum_fmu.sizing import planned_run
 
     with FmuRunner(args.fmu) as runner:
         # refused at once when it cannot fit, naming the time option given
-        trajectory = planned_run(runner, pendulum, method, grid, size_option(args))
+        trajectory = planned_run(runner, problem, method, grid, size_field(args))
         version = runner.fmi_version
         description = runner.model_description
     print(f"fmu       FMI {version}.0, {args.fmu}")

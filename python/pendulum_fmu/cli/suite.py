@@ -116,7 +116,7 @@ def _fmus(paths: list[Path] | None) -> dict[int, Path]:
         try:
             chosen[int(describe(path).fmi_version[0])] = path
         except (OSError, ValueError, KeyError) as error:
-            raise UsageError("--fmu", f"{path}: {error}") from None
+            raise UsageError("fmu", f"{path}: {error}") from None
     return chosen
 
 
@@ -127,10 +127,7 @@ def _export(args: argparse.Namespace) -> int:
     from pendulum_fmu.suite.cross_check_layout import export_case
     from pendulum_fmu.suite.session import suite_name
 
-    try:
-        chosen = cases.select(args.cases, ("pendulum",))
-    except ValueError as error:
-        raise UsageError("--cases", str(error).removeprefix("--cases: ")) from None
+    chosen = cases.select(args.cases, ("pendulum",))
     fmus = _fmus(args.fmu)
     for case in chosen:
         fmu = fmus.get(case.fmi_major) or locate_fmu(None, fmi_version=case.fmi_major)
@@ -138,7 +135,7 @@ def _export(args: argparse.Namespace) -> int:
             for folder in export_case(case, fmu, args.out, suite_name()):
                 print(folder)
         except ValueError as error:
-            raise UsageError("--fmu", str(error)) from None
+            raise UsageError("fmu", str(error)) from None
     return 0
 
 
@@ -148,11 +145,8 @@ def run(args: argparse.Namespace) -> int:
     from pendulum_fmu.suite import adapters, cases
 
     if args.suite_action == "list":
-        try:
-            for case in cases.select(args.cases):
-                print(case.describe())
-        except ValueError as error:
-            raise UsageError("--cases", str(error).removeprefix("--cases: ")) from None
+        for case in cases.select(args.cases):
+            print(case.describe())
         return 0
     if args.suite_action == "export":
         return _export(args)
@@ -162,37 +156,30 @@ def run(args: argparse.Namespace) -> int:
         engines = tuple(e.strip() for e in args.engines.split(",")) if args.engines else adapters.ENGINES
         for name in engines:
             if name not in adapters.ENGINES:
-                raise UsageError("--engines", f"no engine {name!r} (one of {', '.join(adapters.ENGINES)})")
+                raise UsageError("engines", f"no engine {name!r} (one of {', '.join(adapters.ENGINES)})")
         write_table(args.out, engines, args.work, args.timeout, lambda line: print(line, file=sys.stderr, flush=True))
         print(args.out)
         return 0
     if not args.timeout > 0:
-        raise UsageError("--timeout", f"must be > 0, got {args.timeout:g}")
+        raise UsageError("timeout", f"must be > 0, got {args.timeout:g}")
     if args.jobs < 1:
-        raise UsageError("--jobs", f"must be >= 1, got {args.jobs}")
-    try:
-        if args.engine is not None:
-            adapter = adapters.engine(args.engine)
-        elif args.command is not None:
-            adapter = adapters.command(args.command)
-        else:
-            if not args.results.is_dir():
-                raise UsageError("--results", f"no such folder: {str(args.results)!r}")
-            adapter = adapters.results(args.results, args.master)
-    except ValueError as error:
-        option = str(error).split(":")[0]
-        raise UsageError(option, str(error).removeprefix(option + ": ")) from None
+        raise UsageError("jobs", f"must be >= 1, got {args.jobs}")
+    if args.engine is not None:
+        adapter = adapters.engine(args.engine)
+    elif args.command is not None:
+        adapter = adapters.command(args.command)
+    else:
+        if not args.results.is_dir():
+            raise UsageError("results", f"no such folder: {str(args.results)!r}")
+        adapter = adapters.results(args.results, args.master)
     if args.master is not None:
         from pendulum_fmu.split.masters import master_named
 
         try:
             master_named(args.master)
         except ValueError as error:
-            raise UsageError("--master", str(error)) from None
-    try:
-        chosen = cases.select(args.cases, adapter.kinds)
-    except ValueError as error:
-        raise UsageError("--cases", str(error).removeprefix("--cases: ")) from None
+            raise UsageError("master", str(error)) from None
+    chosen = cases.select(args.cases, adapter.kinds)
     from pendulum_fmu.suite.session import run_and_report, suite_name
 
     print(f"{suite_name()}: {len(chosen)} cases with {adapter.version()}", file=sys.stderr, flush=True)

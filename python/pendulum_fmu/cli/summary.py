@@ -14,10 +14,10 @@ def pendulum_text(trajectory: Trajectory) -> str:
     The initial angle is the amplitude only when the pendulum is released from rest; with
     omega0 != 0 it swings further (or goes over the top), so it is called the initial angle.
     """
-    p = trajectory.pendulum
+    p = trajectory.problem
     angle = "amplitude" if p.omega0 == 0.0 else "initial angle"
-    return (f"{angle} {p.amplitude_deg:.6g} deg, omega0 {p.omega0:g} rad/s, L {p.length:g} m, "
-            f"g {p.gravity:g} m/s^2")
+    return (f"{angle} {p.theta0_deg:.6g} deg, omega0 {p.omega0:g} rad/s, L {p.L:g} m, "
+            f"g {p.g:g} m/s^2")
 
 
 def periods_text(count: float) -> str:
@@ -28,7 +28,7 @@ def periods_text(count: float) -> str:
 
 def summary_lines(trajectory: Trajectory) -> list[str]:
     """What was run, the exact period, the cost and the error, one fact a line."""
-    p, t = trajectory.pendulum, trajectory
+    p, t = trajectory.problem, trajectory
     period = t.period
     stop = float(t.result["time"][-1])
     if math.isfinite(period):

@@ -2,9 +2,9 @@
 
 from __future__ import annotations
 
+import logging
 import math
 import os
-import sys
 from collections.abc import Callable
 from pathlib import Path
 from typing import Any
@@ -13,7 +13,10 @@ import numpy as np
 
 from pendulum_fmu.errors import UsageError
 from pendulum_fmu.fmu.runner import FmuRunner, Trajectory
-from pendulum_fmu.spec import Method, Pendulum, StopUnit, TimeGrid
+from pendulum_fmu.spec import InitialValueProblem, Method, StopUnit, TimeGrid
+
+_log = logging.getLogger(__name__)
+"""The frames' progress (INFO): the command line shows it on stderr."""
 
 MAX_FRAMES = 1500
 """Most frames an animation may have (a minute at 25 frames/s; a GIF is assembled in memory)."""
@@ -95,10 +98,10 @@ def render(trajectory: Trajectory, out: Path, fps: int, trail: float = 1.0,
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    r, p, m = trajectory.result, trajectory.pendulum, trajectory.method
+    r, p, m = trajectory.result, trajectory.problem, trajectory.method
     time = r["time"]
     theta = {"numeric": r["theta"], "exact": r["theta_exact"]}
-    xy = {name: (p.length * np.sin(angle), -p.length * np.cos(angle)) for name, angle in theta.items()}
+    xy = {name: (p.L * np.sin(angle), -p.L * np.cos(angle)) for name, angle in theta.items()}
     dt = float(time[1] - time[0]) if time.size > 1 else 1.0
     trail_points = max(2, round(trail / dt))
     period = trajectory.period if math.isfinite(trajectory.period) else p.small_angle_period
@@ -112,7 +115,7 @@ def render(trajectory: Trajectory, out: Path, fps: int, trail: float = 1.0,
     titles = {"numeric": f"numerical: FMU, {m.label}", "exact": "exact: Jacobi elliptic (theta_exact, in the FMU)"}
     colors = {"numeric": "tab:blue", "exact": "tab:orange"}
     moving: dict[str, tuple[Any, Any, Any, Any]] = {}
-    limit = 1.22 * p.length
+    limit = 1.22 * p.L
     for ax, name in zip(axes, ("numeric", "exact"), strict=True):
         ax.set_xlim(-limit, limit)
         ax.set_ylim(-limit, limit)
@@ -162,8 +165,8 @@ def render(trajectory: Trajectory, out: Path, fps: int, trail: float = 1.0,
                 text.set_text(line)
                 for artist in (path, rod, bob, text):
                     ax.draw_artist(artist)
-            heading.set_text(f"theta0 = {p.amplitude_deg:.6g} deg, omega0 = {p.omega0:g} rad/s, L = {p.length:g} m, "
-                             f"g = {p.gravity:g} m/s^2        t = {time[k]:6.2f} s  ({time[k] / period:5.2f} periods)")
+            heading.set_text(f"theta0 = {p.theta0_deg:.6g} deg, omega0 = {p.omega0:g} rad/s, L = {p.L:g} m, "
+                             f"g = {p.g:g} m/s^2        t = {time[k]:6.2f} s  ({time[k] / period:5.2f} periods)")
             fig.draw_artist(heading)
             frames.add(np.asarray(canvas.buffer_rgba())[:, :, :3])  # type: ignore[attr-defined]
             if progress is not None and (k + 1) in quarters:
@@ -179,7 +182,7 @@ def render(trajectory: Trajectory, out: Path, fps: int, trail: float = 1.0,
     return out
 
 
-def animate(fmu: Path, pendulum: Pendulum, method: Method, stop: float, unit: StopUnit, out: Path,
+def animate(fmu: Path, problem: InitialValueProblem, method: Method, stop: float, unit: StopUnit, out: Path,
             fps: int = 25, speed: float = 1.0) -> Trajectory:
     """Simulate one frame per 1/fps s of film and write the animation.
 
@@ -187,7 +190,7 @@ def animate(fmu: Path, pendulum: Pendulum, method: Method, stop: float, unit: St
     ----------
     fmu : Path
         ``Pendulum.fmu``.
-    pendulum, method
+    problem, method
         What to run.
     stop : float
         Simulated time span, in seconds or periods (``unit``).
@@ -209,6 +212,11 @@ def animate(fmu: Path, pendulum: Pendulum, method: Method, stop: float, unit: St
     ------
     UsageError
         If the film would have more than :data:`MAX_FRAMES` frames.
+
+    Notes
+    -----
+    It logs its progress at INFO (logger ``pendulum_fmu.figures.animation``): the frames to
+    draw, then each quarter drawn.
     """
     grid = TimeGrid(stop, unit, output_interval=speed / fps)
     counted: list[int] = []
@@ -217,17 +225,17 @@ def animate(fmu: Path, pendulum: Pendulum, method: Method, stop: float, unit: St
         frames = grid.point_count(period)
         counted.append(frames)
         if frames > MAX_FRAMES:
-            argument = "--periods" if unit == "periods" else "--stop-time"
-            raise UsageError(argument, f"the animation would have {frames} frames, at most {MAX_FRAMES} are "
-                                       "allowed: shorten it, lower --fps or raise --speed")
+            raise UsageError("periods" if unit == "periods" else "stop_time",
+                             f"the animation would have {frames} frames, at most {MAX_FRAMES} are allowed: "
+                             "shorten it, lower `fps` or raise `speed`")
 
     with FmuRunner(fmu) as runner:
-        trajectory = runner.run(pendulum, method, grid, plan)   # refused before the first frame
+        trajectory = runner.run(problem, method, grid, plan)   # refused before the first frame
     frames = counted[0]
-    print(f"animate: drawing {frames} frames into {out} ...", file=sys.stderr, flush=True)
+    _log.info("animate: drawing %d frames into %s ...", frames, out)
 
     def drawn(done: int, total: int) -> None:
-        print(f"animate: {done} of {total} frames drawn", file=sys.stderr, flush=True)
+        _log.info("animate: %d of %d frames drawn", done, total)
 
     render(trajectory, out, fps, progress=drawn)
     return trajectory

@@ -11,7 +11,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 from pendulum_fmu.fmu.runner import FmuRunner, Trajectory
-from pendulum_fmu.spec import Method, Pendulum, TimeGrid
+from pendulum_fmu.spec import InitialValueProblem, Method, TimeGrid
 
 
 def positive_or_nan(values: np.ndarray) -> np.ndarray:
@@ -46,7 +46,7 @@ def plot_comparison(trajectory: Trajectory, path: Path) -> None:
     path : Path
         PNG file to write.
     """
-    result, p = trajectory.result, trajectory.pendulum
+    result, p = trajectory.result, trajectory.problem
     time = result["time"]
     fig, (top, theta_ax, omega_ax) = plt.subplots(3, 1, figsize=(10, 8), sharex=True,
                                                   gridspec_kw={"height_ratios": (3, 2, 2)})
@@ -60,22 +60,22 @@ def plot_comparison(trajectory: Trajectory, path: Path) -> None:
     error_panel(omega_ax, time, np.abs(result["omega"] - result["omega_exact"]), "tab:orange",
                 r"$|\omega - \omega_{exact}|$ (rad/s)")
     omega_ax.set_xlabel("t (s)")
-    fig.suptitle(f"Numerical against exact: {p.amplitude_deg:.6g} deg, omega0 = {p.omega0:g} rad/s, "
-                 f"L = {p.length:g} m, g = {p.gravity:g} m/s$^2$", fontsize=11)
+    fig.suptitle(f"Numerical against exact: {p.theta0_deg:.6g} deg, omega0 = {p.omega0:g} rad/s, "
+                 f"L = {p.L:g} m, g = {p.g:g} m/s$^2$", fontsize=11)
     fig.align_ylabels()
     fig.tight_layout()
     fig.savefig(path, dpi=130)
     plt.close(fig)
 
 
-def compare(fmu: Path, pendulum: Pendulum, method: Method, grid: TimeGrid, out: Path) -> Trajectory:
+def compare(fmu: Path, problem: InitialValueProblem, method: Method, grid: TimeGrid, out: Path) -> Trajectory:
     """Simulate and write the comparison figure.
 
     Parameters
     ----------
     fmu : Path
         ``Pendulum.fmu``.
-    pendulum, method, grid
+    problem, method, grid
         What to run.
     out : Path
         The PNG to write.
@@ -88,7 +88,7 @@ def compare(fmu: Path, pendulum: Pendulum, method: Method, grid: TimeGrid, out: 
     from pendulum_fmu.sizing import planned_run
 
     with FmuRunner(fmu) as runner:
-        trajectory = planned_run(runner, pendulum, method, grid)  # refused at once when it cannot fit
+        trajectory = planned_run(runner, problem, method, grid)  # refused at once when it cannot fit
     plot_comparison(trajectory, out)
     return trajectory
 

@@ -1,9 +1,9 @@
 """Find the ``Pendulum.fmu`` that matches this package, building it when needed.
 
-Order: an explicit path (``--fmu``), then ``$PENDULUM_FMU``, then the FMU installed inside
+Order: an explicit path (``fmu``, the command's ``--fmu``), then ``$PENDULUM_FMU``, then the FMU installed inside
 the package (a wheel built by ``setup.py`` carries one), then, in a source checkout, the
 CMake build in ``build/``, rebuilt incrementally when a source is newer than it. Asked for
-FMI 3.0 (``--fmi-version 3``), the same order with the FMI 3.0 FMU: ``$PENDULUM_FMU`` when it
+FMI 3.0 (``fmi_version=3``), the same order with the FMI 3.0 FMU: ``$PENDULUM_FMU`` when it
 is one, the package's ``fmi3/Pendulum.fmu``, the checkout's ``build/fmi3/Pendulum.fmu``.
 An explicit path or ``$PENDULUM_FMU`` must be this project's Pendulum FMU
 (:func:`pendulum_fmu.fmu.identity.pendulum_problem`).
@@ -11,9 +11,9 @@ An explicit path or ``$PENDULUM_FMU`` must be this project's Pendulum FMU
 
 from __future__ import annotations
 
+import logging
 import os
 import shutil
-import sys
 import zipfile
 from functools import lru_cache
 from pathlib import Path
@@ -22,6 +22,9 @@ from xml.etree import ElementTree
 from pendulum_fmu.errors import BuildError, UsageError
 from pendulum_fmu.fmu.build import DEFAULT_BUILD_DIR, PACKAGED_FMU, PACKAGED_FMU3, REPO_ROOT, build_fmu, fmu3_in, fmu_in
 from pendulum_fmu.fmu.identity import file_key, fmi_version_of, pendulum_problem
+
+_log = logging.getLogger(__name__)
+"""Says that a build starts (INFO): ``pendulum-fmu`` shows it on stderr, a program sees it if it logs."""
 
 SOURCES: tuple[str, ...] = ("fmu_src", "modelDescription.xml", "CMakeLists.txt", "cmake")
 """What the FMUs (FMI 2.0 and 3.0) are built from, relative to the repository root: the C code, each
@@ -102,7 +105,7 @@ def locate_fmu(explicit: Path | None = None, build: bool = True, fmi_version: in
     Parameters
     ----------
     explicit : Path, optional
-        A path the user gave (``--fmu``); it must exist.
+        A path the user gave (the command's ``--fmu``); it must exist.
     build : bool
         In a source checkout, (re)build ``build/Pendulum.fmu`` when it is missing or older
         than its sources.
@@ -121,14 +124,19 @@ def locate_fmu(explicit: Path | None = None, build: bool = True, fmi_version: in
         not of the FMI version asked), or no FMU can be found.
     BuildError
         If CMake fails.
+
+    Notes
+    -----
+    Before a CMake build it logs one INFO line (logger ``pendulum_fmu.fmu.locate``) saying
+    so; the command line prints it on stderr.
     """
     if explicit is not None:
         if not Path(explicit).exists():
-            raise UsageError("--fmu", f"no such file: {str(explicit)!r}")
+            raise UsageError("fmu", f"no such file: {str(explicit)!r}")
         problem = runnable_problem(Path(explicit))
         if problem is not None:
-            raise UsageError("--fmu", problem)
-        _check_version("--fmu", Path(explicit), fmi_version)
+            raise UsageError("fmu", problem)
+        _check_version(Path(explicit), fmi_version)
         return Path(explicit)
     override = os.environ.get("PENDULUM_FMU")
     if override:
@@ -145,21 +153,21 @@ def locate_fmu(explicit: Path | None = None, build: bool = True, fmi_version: in
     if packaged.is_file():
         return packaged
     if not is_source_checkout():
-        raise UsageError("--fmu", f"no {'FMI 3.0 ' if fmi3 else ''}Pendulum.fmu installed with the package and no "
-                                  "source checkout to build one from: pass --fmu PATH or set PENDULUM_FMU")
+        raise UsageError("fmu", f"no {'FMI 3.0 ' if fmi3 else ''}Pendulum.fmu installed with the package and no "
+                                "source checkout to build one from: pass `fmu` PATH or set PENDULUM_FMU")
     fmu = (fmu3_in if fmi3 else fmu_in)(DEFAULT_BUILD_DIR)
     if fmu.is_file() and (not build or fmu.stat().st_mtime >= newest_source_time()):
         return fmu
     if not build:
-        raise UsageError("--fmu", f"{fmu} is missing: build it (cmake -S . -B build && cmake --build build), "
-                                  "pass --fmu PATH or set PENDULUM_FMU")
+        raise UsageError("fmu", f"{fmu} is missing: build it (cmake -S . -B build && cmake --build build), "
+                                "pass `fmu` PATH or set PENDULUM_FMU")
     if shutil.which("cmake") is None:
-        raise UsageError("--fmu", f"{fmu} is missing or out of date and cmake is not on PATH to build it: "
-                                  "install cmake, pass --fmu PATH or set PENDULUM_FMU")
-    # a build takes from seconds to minutes: say so, on stderr, before it starts
-    print(f"pendulum-fmu: {fmu.relative_to(REPO_ROOT) if fmu.is_relative_to(REPO_ROOT) else fmu} is "
-          f"{'out of date' if fmu.is_file() else 'missing'}: building it with CMake (a minute or more) ...",
-          file=sys.stderr, flush=True)
+        raise UsageError("fmu", f"{fmu} is missing or out of date and cmake is not on PATH to build it: "
+                                "install cmake, pass `fmu` PATH or set PENDULUM_FMU")
+    # a build takes from seconds to minutes: say so before it starts (the command line shows it on stderr)
+    _log.info("pendulum-fmu: %s is %s: building it with CMake (a minute or more) ...",
+              fmu.relative_to(REPO_ROOT) if fmu.is_relative_to(REPO_ROOT) else fmu,
+              "out of date" if fmu.is_file() else "missing")
     try:
         build_fmu(DEFAULT_BUILD_DIR)
     except RuntimeError as error:
@@ -170,11 +178,11 @@ def locate_fmu(explicit: Path | None = None, build: bool = True, fmi_version: in
     return fmu
 
 
-def _check_version(argument: str, path: Path, wanted: int | None) -> None:
+def _check_version(path: Path, wanted: int | None) -> None:
     """UsageError when the FMU at ``path`` is not of the FMI version ``wanted`` (None: any)."""
     if wanted is None:
         return
     actual = fmi_version_of(path)
     if actual != wanted:
-        raise UsageError(argument, f"{str(path)!r} is an FMI {actual}.0 FMU, but --fmi-version {wanted} was given: "
-                                   "drop one of the two")
+        raise UsageError("fmu", f"{str(path)!r} is an FMI {actual}.0 FMU, but `fmi_version` {wanted} was given: "
+                                "drop one of the two")

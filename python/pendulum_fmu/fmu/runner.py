@@ -48,7 +48,7 @@ from pendulum_fmu.fmu.log import (
 )
 from pendulum_fmu.interrupt import deferred_interrupt
 from pendulum_fmu.interrupt import pending as interrupt_pending
-from pendulum_fmu.spec import CS_SOLVERS, Method, Pendulum, TimeGrid
+from pendulum_fmu.spec import CS_SOLVERS, InitialValueProblem, Method, TimeGrid
 
 Loop = Literal["auto", "c", "python"]
 """Who runs a runner's output loop: the C library when there is one, or either by name."""
@@ -72,7 +72,7 @@ class Trajectory:
 
     Attributes
     ----------
-    pendulum, method, grid
+    problem, method, grid
         What was run.
     period : float
         The FMU's exact ``period`` output, s (``inf`` on the separatrix).
@@ -92,7 +92,7 @@ class Trajectory:
         The experiment's start time, s: the first output time (the grid's times are after it).
     """
 
-    pendulum: Pendulum
+    problem: InitialValueProblem
     method: Method
     grid: TimeGrid
     period: float
@@ -121,9 +121,9 @@ class Trajectory:
         return float(np.max(np.abs(self.result["omega"] - self.result["omega_exact"])))
 
 
-def reference_period(period: float, pendulum: Pendulum) -> float:
+def reference_period(period: float, problem: InitialValueProblem) -> float:
     """The period a time grid counts in: the exact one, or T0 where that is infinite or 0."""
-    return period if math.isfinite(period) and period > 0 else pendulum.small_angle_period
+    return period if math.isfinite(period) and period > 0 else problem.small_angle_period
 
 
 class RunInterrupted(KeyboardInterrupt):
@@ -251,9 +251,9 @@ class FmuRunner:
         self._model_used = True
         return self._model
 
-    def _initialize(self, instance: Any, pendulum: Pendulum, method: Method, start_time: float = 0.0) -> None:
+    def _initialize(self, instance: Any, problem: InitialValueProblem, method: Method, start_time: float = 0.0) -> None:
         """Experiment (from ``start_time``, s), start values, initialization."""
-        values = pendulum.start_values()
+        values = problem.start_values()
         references = [self.vr[name] for name in values]
         solver = [CS_SOLVERS.index(method.solver) + 1] if method.interface == "CS" else None
         if self.fmi_version == 2:
@@ -270,8 +270,9 @@ class FmuRunner:
         instance.enterInitializationMode(tolerance=method.effective_tolerance, startTime=start_time)
         instance.exitInitializationMode()
 
-    def _set_up(self, co_simulation: bool, pendulum: Pendulum, method: Method, start_time: float = 0.0) -> Any:
-        """The runner's instance, fresh and initialized for ``pendulum`` and ``method`` at ``start_time``.
+    def _set_up(self, co_simulation: bool, problem: InitialValueProblem, method: Method,
+                start_time: float = 0.0) -> Any:
+        """The runner's instance, fresh and initialized for ``problem`` and ``method`` at ``start_time``.
 
         Raises
         ------
@@ -281,9 +282,9 @@ class FmuRunner:
         try:
             instance = self._fresh_slave() if co_simulation else self._fresh_model()
             self._log.clear()
-            self._initialize(instance, pendulum, method, start_time)
+            self._initialize(instance, problem, method, start_time)
         except Exception as error:  # fmpy raises FMICallException, ctypes may raise OSError
-            raise SimulationError(f"the FMU failed to initialize {pendulum}: {self._reason(error)}") from error
+            raise SimulationError(f"the FMU failed to initialize {problem}: {self._reason(error)}") from error
         return instance
 
     def _read(self, instance: Any, name: str) -> float:
@@ -337,24 +338,24 @@ class FmuRunner:
         return self._set_up(True, pendulum, method)
 
     # -- runs --------------------------------------------------------------------------------
-    def period(self, pendulum: Pendulum) -> float:
+    def period(self, problem: InitialValueProblem) -> float:
         """The FMU's exact ``period`` for this problem, s (``inf`` on the separatrix)."""
         with deferred_interrupt():
-            slave = self._set_up(True, pendulum, DEFAULT_METHOD)
+            slave = self._set_up(True, problem, DEFAULT_METHOD)
             try:
                 value = self._read(slave, "period")
                 slave.terminate()
             except Exception as error:  # fmpy raises FMICallException
-                raise SimulationError(f"the FMU failed to initialize {pendulum}: {self._reason(error)}") from error
+                raise SimulationError(f"the FMU failed to initialize {problem}: {self._reason(error)}") from error
         return value
 
-    def run(self, pendulum: Pendulum, method: Method = DEFAULT_METHOD, grid: TimeGrid = DEFAULT_GRID,
+    def run(self, problem: InitialValueProblem, method: Method = DEFAULT_METHOD, grid: TimeGrid = DEFAULT_GRID,
             plan: Callable[[float], object] | None = None, start_time: float = 0.0) -> Trajectory:
         """Simulate one problem.
 
         Parameters
         ----------
-        pendulum : Pendulum
+        problem : InitialValueProblem
             Parameters and initial state.
         method : Method
             Solver and tolerance (``cvode`` runs in Model Exchange).
@@ -389,15 +390,15 @@ class FmuRunner:
         try:
             with deferred_interrupt():  # Ctrl-C inside a ctypes callback would be lost
                 if method.interface == "CS":
-                    return self._run_cs(pendulum, method, grid, plan, start_time)
-                return self._run_me(pendulum, method, grid, plan, start_time)
+                    return self._run_cs(problem, method, grid, plan, start_time)
+                return self._run_me(problem, method, grid, plan, start_time)
         except (SimulationError, UsageError):
             raise
         except MemoryError:
-            raise SimulationError(f"{method.label} on {pendulum}: not enough memory for the output points "
+            raise SimulationError(f"{method.label} on {problem}: not enough memory for the output points "
                                   "of this run: fewer periods or points per period") from None
         except Exception as error:  # fmpy raises FMICallException or a plain Exception
-            raise SimulationError(f"{method.label} failed on {pendulum}: {self._reason(error)}") from error
+            raise SimulationError(f"{method.label} failed on {problem}: {self._reason(error)}") from error
 
     def _reason(self, error: Exception) -> str:
         """The error's text, followed by what the FMU logged as its reason (one line)."""
@@ -408,12 +409,12 @@ class FmuRunner:
             text = f"{text.rstrip('.')}: {rest if rest and call in text else logged}"
         return " ".join(text.split())
 
-    def _run_cs(self, pendulum: Pendulum, method: Method, grid: TimeGrid,
+    def _run_cs(self, problem: InitialValueProblem, method: Method, grid: TimeGrid,
                 plan: Callable[[float], object] | None, start_time: float = 0.0) -> Trajectory:
         start = time.perf_counter()
-        slave = self._set_up(True, pendulum, method, start_time)
+        slave = self._set_up(True, problem, method, start_time)
         period = self._read(slave, "period")
-        counted_in = reference_period(period, pendulum)
+        counted_in = reference_period(period, problem)
         if plan is not None:
             plan(counted_in)
         times = grid.times_array(counted_in)
@@ -428,25 +429,25 @@ class FmuRunner:
             self._loop.run(times, result, RECORDED[0], self._log)
         except driver.LoopInterrupted as interrupt:
             wall = time.perf_counter() - start
-            raise RunInterrupted(Trajectory(pendulum, method, grid, period, result[:interrupt.done].copy(), None,
+            raise RunInterrupted(Trajectory(problem, method, grid, period, result[:interrupt.done].copy(), None,
                                             None, None, wall, self._log.warnings(),
                                             start_time=start_time)) from None
         steps, rejected, rhs = self._integers(slave, STATS)
         slave.terminate()
         wall = time.perf_counter() - start
-        return Trajectory(pendulum, method, grid, period, result, steps, rejected, rhs, wall, self._log.warnings(),
+        return Trajectory(problem, method, grid, period, result, steps, rejected, rhs, wall, self._log.warnings(),
                           start_time=start_time)
 
-    def _run_me(self, pendulum: Pendulum, method: Method, grid: TimeGrid,
+    def _run_me(self, problem: InitialValueProblem, method: Method, grid: TimeGrid,
                 plan: Callable[[float], object] | None, start_time: float = 0.0) -> Trajectory:
         start = time.perf_counter()
         # The grid needs the period before the run, and fmpy's simulate_fmu initializes the
         # instance it is handed itself: ask the FMU, then start afresh.
-        model = self._set_up(False, pendulum, method, start_time)
+        model = self._set_up(False, problem, method, start_time)
         period = self._read(model, "period")
         model.terminate()
         model.reset()
-        counted_in = reference_period(period, pendulum)
+        counted_in = reference_period(period, problem)
         if plan is not None:
             plan(counted_in)
         times = grid.times(counted_in)
@@ -461,23 +462,23 @@ class FmuRunner:
 
         setattr(model, derivatives, counted)
         try:
-            recorded = self._simulate_me(model, pendulum, method, start_time, times[-1], interval)
+            recorded = self._simulate_me(model, problem, method, start_time, times[-1], interval)
         finally:
             delattr(model, derivatives)   # the class's method again
         wall = time.perf_counter() - start
         result = np.empty(recorded.size, dtype=RESULT_DTYPE)
         for name in result.dtype.names or ():
             result[name] = recorded[name]
-        return Trajectory(pendulum, method, grid, period, result, None, None, None, wall, self._log.warnings(),
+        return Trajectory(problem, method, grid, period, result, None, None, None, wall, self._log.warnings(),
                           derivative_calls=calls[0], start_time=start_time)
 
-    def _simulate_me(self, model: Any, pendulum: Pendulum, method: Method, start_time: float, span: float,
+    def _simulate_me(self, model: Any, problem: InitialValueProblem, method: Method, start_time: float, span: float,
                      interval: float) -> Any:
         """fmpy's ``simulate_fmu`` with CVODE on the initialized-once Model Exchange instance."""
         return simulate_fmu(
             self._unzipdir, model_description=self.model_description, fmu_instance=model,
             fmi_type="ModelExchange", solver="CVode", start_time=start_time, stop_time=start_time + span,
             output_interval=interval, relative_tolerance=method.effective_tolerance,
-            start_values=pendulum.start_values(), output=list(RECORDED), validate=False,
+            start_values=problem.start_values(), output=list(RECORDED), validate=False,
             record_events=False, step_finished=lambda *_: not interrupt_pending())
 

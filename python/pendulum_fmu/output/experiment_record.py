@@ -188,12 +188,12 @@ def record_of(trajectory: Trajectory, fmu: Path, command: str, description: Any 
     from pendulum_fmu.fmu.runner import reference_period
 
     description = description if description is not None else read_description(Path(fmu))
-    p, m = trajectory.pendulum, trajectory.method
+    p, m = trajectory.problem, trajectory.method
     times = np.asarray(trajectory.result["time"], dtype=float)
     # the FMU's own solver runs at its floor at most; an importer's (Model Exchange) as asked
     used, asked = tolerance_used(m.effective_tolerance) if m.interface == "CS" else (m.effective_tolerance, None)
     return ExperimentRecord(
-        theta0=float(p.amplitude_rad), omega0=float(p.omega0), length=float(p.length), gravity=float(p.gravity),
+        theta0=float(p.theta0), omega0=float(p.omega0), length=float(p.L), gravity=float(p.g),
         interface=m.interface, solver=m.solver, tolerance=used, tolerance_asked=asked,
         start_time=float(times[0]), stop_time=float(times[-1]),
         step=trajectory.grid.step(reference_period(trajectory.period, p)),

@@ -23,7 +23,7 @@ from typing import Any
 
 _EXPORTS: dict[str, str] = {
     "judge_split": "judge", "judge_runs": "judge", "SplitVerdict": "judge", "MASTERS": "masters", "Master": "masters",
-    "run_master": "masters", "Problem": "pair", "split_path": "locate", "run_engine": "engines",
+    "run_master": "masters", "DEFAULT_PROBLEM": "pair", "split_path": "locate", "run_engine": "engines",
 }
 
 

@@ -14,7 +14,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from pendulum_fmu.split.pair import Problem
+from pendulum_fmu.spec import InitialValueProblem
 
 EXACT_AGREEMENT = 1e-9
 """Body's theta_exact agrees with pendulum_fmu.exact to this (rad), plus the print."""
@@ -32,14 +32,14 @@ class Finding:
     line: str
 
 
-def _exact(problem: Problem, time: np.ndarray) -> np.ndarray:
+def _exact(problem: InitialValueProblem, time: np.ndarray) -> np.ndarray:
     from pendulum_fmu.fmu.library import exact
 
     return exact(problem.theta0, problem.omega0, problem.L, problem.g, time)[0]
 
 
 def label_shift(time: np.ndarray, values: dict[str, np.ndarray], resolution: dict[str, np.ndarray],
-                problem: Problem, H: float) -> int:
+                problem: InitialValueProblem, H: float) -> int:
     """+1 when the rows are labelled one step early (the values at t + H are written at t), -1
     late, 0 neither (see the module's docstring)."""
     if "theta_exact" in values:
@@ -79,7 +79,7 @@ def label_finding(shift: int, H: float, has_exact: bool) -> Finding:
 
 
 def start_finding(time: np.ndarray, values: dict[str, np.ndarray], resolution: dict[str, np.ndarray],
-                  problem: Problem, stated: bool) -> Finding | None:
+                  problem: InitialValueProblem, stated: bool) -> Finding | None:
     """The row at t = 0 is not the start state (the SSP's, or ``--start``'s when ``stated``)."""
     if abs(time[0]) > resolution["time"][0] + 1e-12:
         return None

@@ -20,7 +20,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from pendulum_fmu.split.pair import Problem
+from pendulum_fmu.spec import InitialValueProblem
 
 RERUN_BUDGET = 60_000
 """Most macro steps of all reference masters together (10,000 each for six, H = 1e-3 over 10 s: a judge call on 1e5 rows
@@ -77,7 +77,7 @@ def rerun_steps() -> int:
     return RERUN_BUDGET // max(1, len(masters_for(2)))
 
 
-def _rerun(H: float, index: np.ndarray, theta: np.ndarray, problem: Problem,
+def _rerun(H: float, index: np.ndarray, theta: np.ndarray, problem: InitialValueProblem,
            allowed: np.ndarray, limit: int) -> tuple[dict[str, float], dict[str, float], float, int, str | None]:
     """Every master at H over the rows with index <= limit: differences, errors, end, rows, match."""
     from pendulum_fmu.split.masters import masters_for, run_master
@@ -106,7 +106,7 @@ def _rerun(H: float, index: np.ndarray, theta: np.ndarray, problem: Problem,
 
 
 def identify(index: np.ndarray | None, H: float | None, theta: np.ndarray,
-             resolution: np.ndarray, problem: Problem, step: float | None = None,
+             resolution: np.ndarray, problem: InitialValueProblem, step: float | None = None,
              own: str = "", decimated: bool = True) -> Identification:
     """The reference master the file reproduces (see the module's docstring).
 
@@ -120,7 +120,7 @@ def identify(index: np.ndarray | None, H: float | None, theta: np.ndarray,
         Body's theta per row.
     resolution : numpy.ndarray
         Half a unit in theta's last printed digit, per row.
-    problem : Problem
+    problem : InitialValueProblem
         Parameters and start values of the reruns.
     step : float, optional
         The macro step the caller states (the file holds every m-th point when it is H / m).

@@ -26,18 +26,19 @@ from __future__ import annotations
 import math
 import re
 from collections.abc import Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
+from pendulum_fmu.spec import InitialValueProblem
 from pendulum_fmu.split.accuracy import Accuracy, Order, accuracy, observed_order
 from pendulum_fmu.split.diagnosis import Finding, label_finding, label_shift, start_finding
 from pendulum_fmu.split.grid import read_grid
 from pendulum_fmu.split.identify import Identification, identify
 from pendulum_fmu.split.inputs import law_findings, read_law
-from pendulum_fmu.split.pair import Problem
+from pendulum_fmu.split.pair import DEFAULT_PROBLEM
 from pendulum_fmu.split.reading import read_coupled
 
 ORDER_SLACK = 0.2
@@ -88,7 +89,7 @@ class SplitVerdict:
         The macro step: the exact one on a uniform grid, else the mean step.
     uniform : bool
         The rows lie on t_0 + k H.
-    problem : Problem
+    problem : InitialValueProblem
         The system judged against (the SSP's, or ``--start``'s).
     conformance : Conformance
     identification : Identification
@@ -105,7 +106,7 @@ class SplitVerdict:
     rows: int
     H: float
     uniform: bool
-    problem: Problem
+    problem: InitialValueProblem
     conformance: Conformance
     identification: Identification
     accuracy: Accuracy
@@ -256,7 +257,7 @@ def judge_split(data: Any, start: Sequence[str] = (), master: str | None = None,
     resolution = {name: column[grid.keep] for name, column in result.resolution.items()}
     if grid.time.size < 3:
         raise ReadError(f"{result.source}: {grid.time.size} distinct times: a coupled run needs at least 3")
-    problem = Problem(**{**dict(L=Problem.L, g=Problem.g, theta0=Problem.theta0, omega0=Problem.omega0), **stated})
+    problem = replace(DEFAULT_PROBLEM, **stated)
     findings = list(grid.findings)
     times = grid.exact_times
     H = grid.H if grid.H is not None else float((times[-1] - times[0]) / (times.size - 1))
@@ -299,8 +300,8 @@ def judge_split(data: Any, start: Sequence[str] = (), master: str | None = None,
         own.append(f"multirate: Body's input refreshed every {schedule.multirate} macro steps")
     rerun_problem = problem
     if begin is not None:
-        rerun_problem = Problem(problem.L, problem.g, float(values["theta"][0]),
-                                float(values.get("omega", np.array([problem.omega0]))[0]))
+        rerun_problem = replace(problem, theta0=float(values["theta"][0]),
+                                omega0=float(values.get("omega", np.array([problem.omega0]))[0]))
     decimated = law is None or not law.held  # rows that are single held steps are every point
     who = identify(index, grid.H, values["theta"], resolution["theta"], rerun_problem, step, ", ".join(own),
                    decimated)

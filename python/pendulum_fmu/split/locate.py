@@ -59,8 +59,8 @@ def split_folder(fmi_version: int = 2) -> Path:
     for folder in candidate_folders():
         if _holds(folder, fmi_version):
             return _version_folder(folder, fmi_version)
-    raise UsageError("--system", "no PendulumSplit.ssp found: build it (cmake -S . -B build && cmake --build build) "
-                                 "or set PENDULUM_SPLIT_DIR")
+    raise UsageError("system", "no PendulumSplit.ssp found: build it (cmake -S . -B build && cmake --build build) "
+                                "or set PENDULUM_SPLIT_DIR")
 
 
 def split_path(fmi_version: int = 2) -> Path:

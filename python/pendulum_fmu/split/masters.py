@@ -52,7 +52,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from pendulum_fmu.split.pair import ALPHA, OMEGA, OMEGA_EXACT, THETA, THETA_EXACT, Pair, Problem
+from pendulum_fmu.spec import InitialValueProblem
+from pendulum_fmu.split.pair import ALPHA, DEFAULT_PROBLEM, OMEGA, OMEGA_EXACT, THETA, THETA_EXACT, Pair
 
 SCHEMES: tuple[str, ...] = ("jacobi", "gauss-seidel", "iterated")
 COUPLINGS: tuple[str, ...] = ("zoh", "extrapolation", "interpolation")
@@ -139,7 +140,7 @@ class Coupled:
         return float(np.max(np.abs(self.theta - self.theta_exact)))
 
 
-def run_master(master: Master, H: float, stop: float, problem: Problem | None = None,
+def run_master(master: Master, H: float, stop: float, problem: InitialValueProblem = DEFAULT_PROBLEM,
                fmi_version: int = 2) -> Coupled:
     """Run ``master`` with macro step ``H`` from 0 to ``stop`` (n = round(stop / H) steps).
 
@@ -151,8 +152,8 @@ def run_master(master: Master, H: float, stop: float, problem: Problem | None = 
         The macro step (s).
     stop : float
         The end time (s).
-    problem : Problem, optional
-        Parameters and start values (default: ``Problem()``).
+    problem : InitialValueProblem, optional
+        Parameters and start values (default :data:`~pendulum_fmu.split.pair.DEFAULT_PROBLEM`, the SSP's).
     fmi_version : {2, 3}
         The FMUs' version (FMI 3.0: zero-order hold only).
 
@@ -164,7 +165,6 @@ def run_master(master: Master, H: float, stop: float, problem: Problem | None = 
     if master not in masters_for(fmi_version):
         raise ValueError(f"{master.describe()} needs input and output derivatives, which FMI {fmi_version}.0 "
                          "Co-Simulation FMUs do not have")
-    problem = problem or Problem()
     n = round(stop / H)
     rows = np.empty((n + 1, 6))
     iterations = np.ones(n, dtype=int)

@@ -10,7 +10,6 @@ from __future__ import annotations
 import atexit
 import shutil
 import tempfile
-from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
 from typing import Any
@@ -19,36 +18,14 @@ from fmpy import extract, read_model_description
 from fmpy.fmi2 import FMU2Slave
 from fmpy.fmi3 import FMU3Slave
 
+from pendulum_fmu.spec import InitialValueProblem
 from pendulum_fmu.split.locate import split_fmus
 
 L, G, THETA, OMEGA, THETA_EXACT, OMEGA_EXACT, ALPHA = 1, 2, 3, 5, 7, 8, 16
 """The value references both FMUs share."""
-THETA0 = 1.3089969389957472
-"""75 deg, the FMUs' and the SSP's start angle."""
-
-
-@dataclass(frozen=True)
-class Problem:
-    """The pendulum a coupled run computes: parameters and start values.
-
-    Attributes
-    ----------
-    L, g : float
-        Length (m) and gravitational acceleration (m/s2), the same in both FMUs.
-    theta0, omega0 : float
-        Body's start values (rad, rad/s); Gravity's input starts at theta0.
-    """
-
-    L: float = 1.0
-    g: float = 9.81
-    theta0: float = THETA0
-    omega0: float = 0.0
-
-    def alpha(self, theta: Any) -> Any:
-        """Gravity's law, -(g/L) sin(theta), on floats or numpy arrays."""
-        import numpy as np
-
-        return -(self.g / self.L) * np.sin(theta)
+DEFAULT_PROBLEM = InitialValueProblem(theta0=1.3089969389957472, omega0=0.0, L=1.0, g=9.81)
+"""The problem both FMUs and the SSP start with: 75 deg from rest, L = 1 m, g = 9.81 m/s^2
+(the start values of their model descriptions)."""
 
 
 @lru_cache(maxsize=8)
@@ -65,15 +42,17 @@ class Pair:
 
     Parameters
     ----------
-    problem : Problem
-        Parameters and start values.
+    problem : InitialValueProblem
+        Parameters (L, g, the same in both FMUs) and start values (Body's theta0 and omega0;
+        Gravity's input starts at theta0).
     fmi_version : {2, 3}
         Which FMUs (:func:`pendulum_fmu.split.locate.split_fmus`).
     fmus : tuple of Path, optional
         Body's and Gravity's files instead of the ones found.
     """
 
-    def __init__(self, problem: Problem, fmi_version: int = 2, fmus: tuple[Path, Path] | None = None) -> None:
+    def __init__(self, problem: InitialValueProblem, fmi_version: int = 2,
+                 fmus: tuple[Path, Path] | None = None) -> None:
         self.v3 = fmi_version == 3
         self.instances: list[Any] = []
         for name, path in zip(("Body", "Gravity"), fmus or split_fmus(fmi_version), strict=True):

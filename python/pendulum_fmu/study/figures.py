@@ -42,13 +42,13 @@ T_LABEL = r"$t / T_0$"
 
 def _cycles(run: Trajectory) -> np.ndarray:
     """The run's output times in small-angle periods T0 = 2 pi sqrt(L/g), as in Figures 3 and 4."""
-    return run.result["time"] / run.pendulum.small_angle_period
+    return run.result["time"] / run.problem.small_angle_period
 
 
 def constants_text(runs: list[Trajectory]) -> str:
     """``L = 1 m, g = 9.81 m/s^2, T0 = 2 pi sqrt(L/g) = 2.006 s`` for the runs' pendulum (mathtext);
     each distinct pendulum once, should the runs differ."""
-    seen = dict.fromkeys((r.pendulum.length, r.pendulum.gravity, r.pendulum.small_angle_period) for r in runs)
+    seen = dict.fromkeys((r.problem.L, r.problem.g, r.problem.small_angle_period) for r in runs)
     return "; ".join(rf"L = {length:g} m, g = {gravity:g} m/s$^2$, $T_0 = 2\pi\sqrt{{L/g}}$ = {t0:.4g} s"
                      for length, gravity, t0 in seen)
 
@@ -83,8 +83,8 @@ def plot_solutions(runs: list[Trajectory], field: str, title: str, path: Path) -
         fig, axes = plt.subplots(len(runs), 1, figsize=(10.5, 1.75 * len(runs) + 1.5), sharex=True, sharey=True,
                                  squeeze=False)
         for ax, run in zip(axes[:, 0], runs, strict=True):
-            amplitude = run.pendulum.amplitude_deg
-            t0 = run.pendulum.small_angle_period
+            amplitude = run.problem.theta0_deg
+            t0 = run.problem.small_angle_period
             cycles = run.result["time"] / t0
             ax.plot(cycles, np.degrees(run.result[field]), color=color, lw=1.3)
             for sign in (1.0, -1.0):
@@ -104,7 +104,7 @@ def plot_solutions(runs: list[Trajectory], field: str, title: str, path: Path) -
             ax.set_ylabel(rf"$\theta_0$ = {amplitude:g}$^\circ$" + "\n" + r"$\theta$ (deg)")
             ax.text(1.008, 0.5, f"T =\n{ratio:.4f} $T_0$", transform=ax.transAxes, va="center", fontsize=10.5)
         last = axes[-1, 0]
-        last.set_xlim(0, max(run.result["time"][-1] / run.pendulum.small_angle_period for run in runs))
+        last.set_xlim(0, max(run.result["time"][-1] / run.problem.small_angle_period for run in runs))
         last.set_xlabel(rf"$t / T_0$ (grid lines every $T_0$);  {constants_text(runs)}")
         fig.suptitle(title + "\n" + r"$\blacktriangledown$ end of each period T: the larger $\theta_0$, the further "
                      r"behind the $T_0$ grid lines", fontsize=13)
@@ -137,12 +137,12 @@ def plot_comparison_grid(cs_runs: list[Trajectory], me_runs: list[Trajectory], p
         for column, (cs, me) in enumerate(zip(cs_runs, me_runs, strict=True)):
             top, bottom = axes[0, column], axes[1, column]
             cycles = _cycles(cs)
-            last = cycles >= cycles[-1] - 2.0 * cs.period / cs.pendulum.small_angle_period - 1e-9
+            last = cycles >= cycles[-1] - 2.0 * cs.period / cs.problem.small_angle_period - 1e-9
             top.plot(cycles[last], np.degrees(cs.result["theta_exact"][last]), color=EXACT_BAND, lw=7,
                      solid_capstyle="butt", label="exact (wide band)")
             top.plot(cycles[last], np.degrees(cs.result["theta"][last]), color=NUMERIC_COLOR, lw=1.3,
                      label="numerical, CS rkn (thin line)")
-            top.set_title(rf"$\theta_0$ = {cs.pendulum.amplitude_deg:g}$^\circ$, last 2 periods")
+            top.set_title(rf"$\theta_0$ = {cs.problem.theta0_deg:g}$^\circ$, last 2 periods")
             top.set_xlabel(T_LABEL)
             top.grid(alpha=0.3)
             for run, color, label, row in ((cs, CS_ERROR_COLOR, "error, CS (rkn, tol 1e-8)", 1.0),

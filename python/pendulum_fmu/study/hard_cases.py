@@ -19,7 +19,7 @@ import numpy as np
 
 from pendulum_fmu.errors import SimulationError
 from pendulum_fmu.fmu.runner import FmuRunner, Trajectory, reference_period
-from pendulum_fmu.spec import CS_SOLVERS, Method, Pendulum, TimeGrid
+from pendulum_fmu.spec import CS_SOLVERS, InitialValueProblem, Method, TimeGrid
 from pendulum_fmu.study.seed import ME_TOLERANCE
 from pendulum_fmu.study.speed import microseconds
 
@@ -49,7 +49,7 @@ class HardCase:
         What it is, for the table.
     short : str
         Its name in a sentence.
-    pendulum : Pendulum
+    problem : InitialValueProblem
         Start values (L = 1 m, g = 9.81 m/s^2).
     periods : float
         Length in periods (exact periods; revolutions in rotation).
@@ -61,7 +61,7 @@ class HardCase:
 
     name: str
     short: str
-    pendulum: Pendulum
+    problem: InitialValueProblem
     periods: float = 10.0
     start_time: float = 0.0
     me_periods: float | None = None
@@ -69,18 +69,19 @@ class HardCase:
 
 def hard_cases() -> tuple[HardCase, ...]:
     """The study's hard cases, in the table's order."""
-    w0 = Pendulum(0.0).w0
+    ivp = InitialValueProblem
+    w0 = ivp(0.0).w0
     return (
-        HardCase("released at 179.9 deg from rest", "179.9 deg release", Pendulum.from_degrees(179.9)),
-        HardCase("released at 179.9999 deg from rest", "179.9999 deg release", Pendulum.from_degrees(179.9999)),
+        HardCase("released at 179.9 deg from rest", "179.9 deg release", ivp.from_degrees(179.9)),
+        HardCase("released at 179.9999 deg from rest", "179.9999 deg release", ivp.from_degrees(179.9999)),
         HardCase(f"rotation just above the separatrix: theta0 = 0, omega0 = 2 w0 (1 + {ROTATION_EXCESS:g})",
-                 "rotation above the separatrix", Pendulum(0.0, 2.0 * w0 * (1.0 + ROTATION_EXCESS))),
+                 "rotation above the separatrix", ivp(0.0, 2.0 * w0 * (1.0 + ROTATION_EXCESS))),
         HardCase("creeping over the top: theta0 = pi, omega0 = 1e-15 rad/s", "creep over the top",
-                 Pendulum(math.pi, 1e-15)),
+                 ivp(math.pi, 1e-15)),
         HardCase("long run: 90 deg from rest, " + f"{LONG_PERIODS:,.0f}".replace(",", " ") + " periods", "long run",
-                 Pendulum.from_degrees(90.0), LONG_PERIODS, me_periods=LONG_PERIODS_ME),
+                 ivp.from_degrees(90.0), LONG_PERIODS, me_periods=LONG_PERIODS_ME),
         HardCase(f"large start time: 75 deg from rest at t0 = {LARGE_START_S:g} s", "large start time",
-                 Pendulum.from_degrees(75.0), start_time=LARGE_START_S),
+                 ivp.from_degrees(75.0), start_time=LARGE_START_S),
     )
 
 
@@ -185,7 +186,7 @@ def certificate_departures(run: Trajectory, exact_error: float = EXACT_ERROR) ->
     r = run.result[1:]
     bound = 100.0 * run.method.effective_tolerance - exact_error
     theta = np.abs(r["theta"] - r["theta_exact"]) / (bound * np.maximum(1.0, np.abs(r["theta_exact"])))
-    omega = np.abs(r["omega"] - r["omega_exact"]) / (bound * np.maximum(run.pendulum.w0, np.abs(r["omega_exact"])))
+    omega = np.abs(r["omega"] - r["omega_exact"]) / (bound * np.maximum(run.problem.w0, np.abs(r["omega_exact"])))
     return np.asarray(np.maximum(theta, omega))
 
 
@@ -194,7 +195,7 @@ def assess(case: HardCase, run: Trajectory) -> HardRun:
     me = run.method.interface == "ME"
     departures = certificate_departures(run, 0.0 if me else EXACT_ERROR)
     warnings = run.warnings
-    counted_in = reference_period(run.period, run.pendulum)
+    counted_in = reference_period(run.period, run.problem)
     asked = run.grid.point_count(counted_in) - 1
     periods = float(run.result["time"][-1] - run.start_time) / counted_in
     rhs = run.rhs_evaluations if run.rhs_evaluations is not None else run.derivative_calls or 0
@@ -231,9 +232,9 @@ def run_hard_cases(runner: FmuRunner, points_per_period: int,
             periods = case.me_periods if method.interface == "ME" and case.me_periods else case.periods
             grid = TimeGrid(periods, "periods", points_per_period)
             try:
-                run = runner.run(case.pendulum, method, grid, start_time=case.start_time)
+                run = runner.run(case.problem, method, grid, start_time=case.start_time)
                 for _ in range(QUICK_REPEATS if run.wall_time < QUICK_S else 0):   # the same run: best wall time
-                    again = runner.run(case.pendulum, method, grid, start_time=case.start_time)
+                    again = runner.run(case.problem, method, grid, start_time=case.start_time)
                     run = again if again.wall_time < run.wall_time else run
                 rows.append(assess(case, run))
             except SimulationError as failure:

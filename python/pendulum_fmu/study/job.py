@@ -104,7 +104,7 @@ def write_study(fmu: Path, out: Path, periods: float = 10.0,
     write_csv(runs, out / "runs.csv")
     # each run's experiment, picked out by its interface and amplitude (docs/results.md)
     write_record(out / "runs.csv", [({"interface": run.method.interface,
-                                      "amplitude_deg": f"{run.pendulum.amplitude_deg:g}"}, record_of(run, fmu, "study"))
+                                      "amplitude_deg": f"{run.problem.theta0_deg:g}"}, record_of(run, fmu, "study"))
                                     for run in runs])
     rows = table_rows(runs)
     table = format_table(rows)

@@ -18,7 +18,7 @@ import numpy as np
 
 from pendulum_fmu.fmu.period import measured_period
 from pendulum_fmu.fmu.runner import FmuRunner, Trajectory
-from pendulum_fmu.spec import Method, Pendulum, TimeGrid
+from pendulum_fmu.spec import InitialValueProblem, Method, TimeGrid
 
 SEED_AMPLITUDES_DEG = (75.0, 80.0, 85.0, 90.0)
 ME_TOLERANCE = 1e-10
@@ -73,7 +73,7 @@ def run_study(runner: FmuRunner, periods: float = 10.0,
     for k, (method, a) in enumerate(todo, 1):
         if progress is not None:
             progress(f"run {k} of {len(todo)}: {a:g} deg, {method.label}, {periods:g} periods")
-        runs.append(runner.run(Pendulum.from_degrees(a), method, grid))
+        runs.append(runner.run(InitialValueProblem.from_degrees(a), method, grid))
     return runs
 
 
@@ -81,9 +81,9 @@ def table_rows(runs: list[Trajectory]) -> list[tuple[str, ...]]:
     """One row of TABLE_HEADER per run."""
     rows: list[tuple[str, ...]] = []
     for run in runs:
-        p = run.pendulum
+        p = run.problem
         measured = measured_period(run.result["time"], run.result["theta"])
-        rows.append((f"{p.amplitude_deg:g}", run.method.interface, f"{run.period:.9f}", f"{measured:.9f}",
+        rows.append((f"{p.theta0_deg:g}", run.method.interface, f"{run.period:.9f}", f"{measured:.9f}",
                      f"{run.period / p.small_angle_period:.6f}", f"{run.max_error:.2e}"))
     return rows
 
@@ -102,10 +102,10 @@ def write_csv(runs: list[Trajectory], path: Path) -> None:
         writer.writerow(["interface", "amplitude_deg", "time_s", "w0t", "theta_rad", "theta_exact_rad",
                          "omega_rad_s", "omega_exact_rad_s", "fmu_warning"])
         for run in runs:
-            r, p = run.result, run.pendulum
+            r, p = run.result, run.problem
             warning = "; ".join(run.warnings)
             for i in range(r.size):
-                writer.writerow([run.method.interface, f"{p.amplitude_deg:g}", repr(float(r["time"][i])),
+                writer.writerow([run.method.interface, f"{p.theta0_deg:g}", repr(float(r["time"][i])),
                                  repr(float(p.w0 * r["time"][i])), repr(float(r["theta"][i])),
                                  repr(float(r["theta_exact"][i])), repr(float(r["omega"][i])),
                                  repr(float(r["omega_exact"][i])), warning])
@@ -121,11 +121,11 @@ def period_curve(runner: FmuRunner) -> PeriodCurve:
     linear = np.linspace(0.5, 179.5, 359)
     top = 180.0 - np.logspace(1.0, -6.0, 120)
     amplitudes = np.unique(np.concatenate([linear, top]))
-    ratios = np.array([runner.period(Pendulum.from_degrees(float(a))) for a in amplitudes])
+    ratios = np.array([runner.period(InitialValueProblem.from_degrees(float(a))) for a in amplitudes])
     ratios = ratios * math.sqrt(9.81) / (2.0 * math.pi)
     grid = TimeGrid(10, "periods", POINTS_PER_PERIOD)
     measured = []
     for amplitude in MARKER_AMPLITUDES_DEG:
-        run = runner.run(Pendulum.from_degrees(amplitude), Method("rkn", 1e-10), grid)
-        measured.append(measured_period(run.result["time"], run.result["theta"]) / run.pendulum.small_angle_period)
+        run = runner.run(InitialValueProblem.from_degrees(amplitude), Method("rkn", 1e-10), grid)
+        measured.append(measured_period(run.result["time"], run.result["theta"]) / run.problem.small_angle_period)
     return PeriodCurve(amplitudes, ratios, np.array(MARKER_AMPLITUDES_DEG), np.array(measured))

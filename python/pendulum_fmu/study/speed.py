@@ -22,7 +22,7 @@ from dataclasses import dataclass
 from pendulum_fmu.errors import BuildError, SimulationError
 from pendulum_fmu.fmu.library import exact
 from pendulum_fmu.fmu.runner import FmuRunner, reference_period
-from pendulum_fmu.spec import CS_SOLVERS, Method, Pendulum, TimeGrid
+from pendulum_fmu.spec import CS_SOLVERS, InitialValueProblem, Method, TimeGrid
 from pendulum_fmu.study.tradeoff import cost_to_reach, pareto_front
 
 CS_TOLERANCES: tuple[float, ...] = tuple(10.0 ** -k for k in range(3, 13))
@@ -109,14 +109,14 @@ class SpeedStudy:
     periods: float
 
 
-def _run_point(runner: FmuRunner, method: str, tolerance: float, pendulums: list[Pendulum],
+def _run_point(runner: FmuRunner, method: str, tolerance: float, problems: list[InitialValueProblem],
                grid: TimeGrid) -> SpeedPoint:
     """One method at one tolerance over every amplitude (a failed run gives a NaN error and its reason)."""
     error, rhs, steps, wall, periods = 0.0, 0, 0, 0.0, 0.0
     repeats = CS_REPEATS if method != "cvode" else ME_REPEATS
-    for pendulum in pendulums:
+    for problem in problems:
         try:
-            runs = [runner.run(pendulum, Method(method, tolerance), grid) for _ in range(repeats)]
+            runs = [runner.run(problem, Method(method, tolerance), grid) for _ in range(repeats)]
         except SimulationError as failure:
             return SpeedPoint(method, tolerance, math.nan, rhs, None, math.nan, periods, str(failure))
         run = runs[0]
@@ -124,25 +124,25 @@ def _run_point(runner: FmuRunner, method: str, tolerance: float, pendulums: list
         rhs += run.rhs_evaluations if run.rhs_evaluations is not None else run.derivative_calls or 0
         steps += run.steps or 0
         wall += min(r.wall_time for r in runs)
-        periods += float(run.result["time"][-1] - run.start_time) / reference_period(run.period, pendulum)
+        periods += float(run.result["time"][-1] - run.start_time) / reference_period(run.period, problem)
     return SpeedPoint(method, tolerance, error, rhs, steps if method != "cvode" else None, float(wall / periods),
                       float(periods))
 
 
-def measure_floor(runner: FmuRunner, pendulums: list[Pendulum], grid: TimeGrid) -> Floor:
-    """The exact solution at the grid's points of every pendulum, best of :data:`FLOOR_REPEATS`."""
+def measure_floor(runner: FmuRunner, problems: list[InitialValueProblem], grid: TimeGrid) -> Floor:
+    """The exact solution at the grid's points of every problem, best of :data:`FLOOR_REPEATS`."""
     grids = []
-    for pendulum in pendulums:
-        counted_in = reference_period(runner.period(pendulum), pendulum)
+    for problem in problems:
+        counted_in = reference_period(runner.period(problem), problem)
         times = grid.times_array(counted_in)
-        grids.append((pendulum, times, float(times[-1]) / counted_in))
+        grids.append((problem, times, float(times[-1]) / counted_in))
     points = sum(len(times) for _, times, _ in grids)
     try:
         best = math.inf
         for _ in range(FLOOR_REPEATS):
             start = time.perf_counter()
-            for pendulum, times, _ in grids:
-                exact(pendulum.amplitude_rad, pendulum.omega0, pendulum.length, pendulum.gravity, times, workers=1)
+            for problem, times, _ in grids:
+                exact(problem.theta0, problem.omega0, problem.L, problem.g, times, workers=1)
             best = min(best, time.perf_counter() - start)
     except BuildError as missing:
         return Floor(math.nan, points, f"not measured: {missing}")
@@ -172,15 +172,15 @@ def measure_speed(runner: FmuRunner, amplitudes_deg: tuple[float, ...], periods:
         The points in the order of :data:`METHODS` and their tolerances, and the floor.
     """
     grid = TimeGrid(periods, "periods", points_per_period)
-    pendulums = [Pendulum.from_degrees(a) for a in amplitudes_deg]
+    problems = [InitialValueProblem.from_degrees(a) for a in amplitudes_deg]
     found: list[SpeedPoint] = []
     for method in METHODS:
         tolerances = ME_TOLERANCES if method == "cvode" else CS_TOLERANCES
         if progress is not None:
             progress(f"speed against error: {method} at {len(tolerances)} tolerances "
-                     f"({tolerances[0]:g} .. {tolerances[-1]:g}), {len(pendulums)} amplitudes")
-        found += [_run_point(runner, method, tol, pendulums, grid) for tol in tolerances]
-    return SpeedStudy(tuple(found), measure_floor(runner, pendulums, grid), tuple(amplitudes_deg), periods)
+                     f"({tolerances[0]:g} .. {tolerances[-1]:g}), {len(problems)} amplitudes")
+        found += [_run_point(runner, method, tol, problems, grid) for tol in tolerances]
+    return SpeedStudy(tuple(found), measure_floor(runner, problems, grid), tuple(amplitudes_deg), periods)
 
 
 def curve(points: tuple[SpeedPoint, ...] | list[SpeedPoint], method: str) -> list[SpeedPoint]:

@@ -16,6 +16,7 @@ import sys
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from pendulum_fmu.errors import UsageError
 from pendulum_fmu.suite.cases import Kind
 from pendulum_fmu.suite.experiment import OUTPUTS, Run
 
@@ -102,15 +103,15 @@ def fill_template(template: str, run: Run, experiment_file: Path) -> str:
 
 
 def check_template(template: str) -> None:
-    """ValueError naming the first unknown placeholder, or a malformed brace, of ``template``."""
+    """UsageError (field ``command``) naming the first unknown placeholder, or a malformed brace, of ``template``."""
     try:
         fields = [name for _, name, _, _ in string.Formatter().parse(template) if name is not None]
     except ValueError as error:
-        raise ValueError(f"--command: {error} (write a literal brace as {{{{ or }}}})") from None
+        raise UsageError("command", f"{error} (write a literal brace as {{{{ or }}}})") from None
     for name in fields:
         if name not in PLACEHOLDERS:
-            raise ValueError(f"--command: unknown placeholder {{{name}}} (known: "
-                             f"{', '.join('{' + p + '}' for p in PLACEHOLDERS)})")
+            raise UsageError("command", f"unknown placeholder {{{name}}} (known: "
+                                        f"{', '.join('{' + p + '}' for p in PLACEHOLDERS)})")
 
 
 def fmpy_cli_command(run: Run) -> list[str]:
@@ -135,9 +136,9 @@ ENGINES: tuple[str, ...] = ("fmpy", "fmpy-cli", "libcosim", "ecos", "fmucontaine
 
 
 def engine(name: str) -> Adapter:
-    """The built-in adapter ``name``; ValueError listing them otherwise."""
+    """The built-in adapter ``name``; UsageError (field ``engine``) listing them otherwise."""
     if name not in ENGINES:
-        raise ValueError(f"--engine: no engine {name!r} (one of {', '.join(ENGINES)})")
+        raise UsageError("engine", f"no engine {name!r} (one of {', '.join(ENGINES)})")
     kinds: tuple[Kind, ...] = ("pendulum",) if name == "fmpy-cli" else ("pendulum", "split")
     return Adapter(name, kinds, master=CLAIMED_MASTERS.get(name))
 

@@ -11,6 +11,8 @@ from functools import lru_cache
 from pathlib import Path
 from typing import Literal
 
+from pendulum_fmu.errors import UsageError
+
 DATA = Path(__file__).with_name("cases.csv")
 """The one list of the Pendulum cases: the registry here and the FMUs' validation experiments."""
 SPLIT_STEPS: tuple[float, ...] = (0.1, 0.05, 0.02)
@@ -127,8 +129,8 @@ def select(patterns: str | None, kinds: tuple[Kind, ...] = ("pendulum", "split")
 
     Raises
     ------
-    ValueError
-        When a pattern matches no case.
+    UsageError
+        When a pattern matches no case (field ``cases``).
     """
     cases = [case for case in all_cases() if case.kind in kinds]
     if patterns is None:
@@ -137,6 +139,6 @@ def select(patterns: str | None, kinds: tuple[Kind, ...] = ("pendulum", "split")
     for pattern in (p.strip() for p in patterns.split(",") if p.strip()):
         matched = [case for case in cases if fnmatch.fnmatchcase(case.name, pattern)]
         if not matched:
-            raise ValueError(f"--cases: {pattern!r} matches no case (see 'pendulum-fmu suite list')")
+            raise UsageError("cases", f"{pattern!r} matches no case (see 'pendulum-fmu suite list')")
         chosen += [case for case in matched if case not in chosen]
     return chosen

@@ -74,7 +74,7 @@ def check_scheduler(address: str, timeout: float = 2.0) -> None:
             pass
     except (OSError, ValueError) as error:
         reason = getattr(error, "strerror", None) or str(error) or type(error).__name__
-        raise UsageError("--scheduler", f"cannot reach a Dask scheduler at {address}: {reason}") from None
+        raise UsageError("scheduler", f"cannot reach a Dask scheduler at {address}: {reason}") from None
 
 
 @contextmanager
@@ -111,14 +111,14 @@ def dask_client(scheduler: str | None = None, workers: int = 2) -> Iterator[Clie
         with interrupt.deferred_interrupt():
             client = Client(scheduler, timeout="10s")
     except (OSError, TimeoutError) as error:
-        raise UsageError("--scheduler", f"cannot reach a Dask scheduler at {scheduler}: {error}") from None
+        raise UsageError("scheduler", f"cannot reach a Dask scheduler at {scheduler}: {error}") from None
     interrupted = False
     try:
         with interrupt.deferred_interrupt():
             try:
                 client.wait_for_workers(1, timeout=30)
             except TimeoutError:
-                raise UsageError("--scheduler", f"the scheduler at {scheduler} has no worker (waited 30 s)") from None
+                raise UsageError("scheduler", f"the scheduler at {scheduler} has no worker (waited 30 s)") from None
         yield client
     except KeyboardInterrupt:
         interrupted = True

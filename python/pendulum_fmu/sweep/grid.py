@@ -7,7 +7,7 @@ import math
 from dataclasses import astuple, dataclass, fields
 from typing import Any
 
-from pendulum_fmu.spec import DEFAULT_CS_SOLVER, Method, Pendulum, TimeGrid
+from pendulum_fmu.spec import DEFAULT_CS_SOLVER, InitialValueProblem, Method, TimeGrid
 
 Key = tuple[float, float, float, float, str, float, float, int]
 """A run's identity: its input values, exactly (used to skip runs already written)."""
@@ -49,9 +49,9 @@ class SweepPoint:
         """The tuple of inputs, in field order."""
         return astuple(self)
 
-    def pendulum(self) -> Pendulum:
+    def problem(self) -> InitialValueProblem:
         """The problem to run."""
-        return Pendulum.from_degrees(self.amplitude_deg, self.omega0, self.length, self.gravity)
+        return InitialValueProblem.from_degrees(self.amplitude_deg, self.omega0, self.length, self.gravity)
 
     def method(self) -> Method:
         """The solver and tolerance."""

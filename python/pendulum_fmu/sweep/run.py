@@ -12,7 +12,7 @@ end the table (CSV or Parquet, in grid order) and three summary plots are writte
 from __future__ import annotations
 
 import hashlib
-import sys
+import logging
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -22,6 +22,9 @@ from pendulum_fmu.sweep.grid import COLUMN_KINDS, COLUMNS, SweepGrid, point_of
 
 if TYPE_CHECKING:
     import pyarrow as pa
+
+_log = logging.getLogger(__name__)
+"""Says a journal is reused or set aside (INFO; the command line shows it on stderr)."""
 
 JOURNAL = "runs.journal.csv"
 JOURNAL_FMU = "runs.journal.sha256"
@@ -80,7 +83,7 @@ def run_sweep(fmu: Path, sweep: SweepGrid, out: Path, table_format: str = "csv",
     workers : int
         Local worker processes.
     progress : bool
-        Show the progress bar.
+        Show the progress bar (on stderr) and log at INFO whether the journal is resumed or set aside.
     plots : bool
         Write the summary plots.
 
@@ -113,7 +116,7 @@ def run_sweep(fmu: Path, sweep: SweepGrid, out: Path, table_format: str = "csv",
     same_fmu = stamp.is_file() and stamp.read_text().strip() == digest
     done = read_journal(journal_path) if same_fmu else {}
     if journal_path.is_file() and not same_fmu and progress:
-        print(f"{journal_path} was written by another FMU: starting afresh", file=sys.stderr)
+        _log.info("%s was written by another FMU: starting afresh", journal_path)
     pending = [point for point in points if point.key not in done]
     skipped = len(points) - len(pending)
     seconds, threads = 0.0, 0
@@ -129,7 +132,7 @@ def run_sweep(fmu: Path, sweep: SweepGrid, out: Path, table_format: str = "csv",
             with dask_client(scheduler, workers) as client:
                 threads = worker_threads(client)
                 if skipped and progress:
-                    print(f"resuming: {skipped} of {len(points)} runs already in {journal_path}", file=sys.stderr)
+                    _log.info("resuming: %d of %d runs already in %s", skipped, len(points), journal_path)
                 seconds = execute(client, fmu, pending, record, progress)
         except KeyboardInterrupt:
             journal.close()

@@ -95,7 +95,7 @@ def warm(fmu_bytes: bytes, sample: SweepPoint | None = None) -> tuple[int, float
             return os.getpid(), 0.0
         start = time.perf_counter()
         try:
-            runner.run(sample.pendulum(), sample.method(), sample.grid())
+            runner.run(sample.problem(), sample.method(), sample.grid())
         except SimulationError:
             return os.getpid(), 0.0
         return os.getpid(), time.perf_counter() - start
@@ -106,13 +106,12 @@ def row_of(point: SweepPoint, trajectory: Trajectory) -> dict[str, Any]:
     from pendulum_fmu.fmu.period import measured_period
 
     result = trajectory.result
-    pendulum = trajectory.pendulum
     row: dict[str, Any] = {column: getattr(point, name) for column, name in INPUT_COLUMNS.items()}
     error = trajectory.theta_error
     row.update(
         interface=trajectory.method.interface,
         period_s=trajectory.period,
-        period_ratio=trajectory.period / pendulum.small_angle_period,
+        period_ratio=trajectory.period / trajectory.problem.small_angle_period,
         measured_period_s=measured_period(result["time"], result["theta"]),
         stop_time_s=float(result["time"][-1]),
         max_error_rad=trajectory.max_error,
@@ -143,7 +142,7 @@ def run_points(fmu_bytes: bytes, points: list[SweepPoint]) -> list[dict[str, Any
     with borrowed_runner(fmu_bytes) as runner:
         for point in points:
             try:
-                rows.append(row_of(point, runner.run(point.pendulum(), point.method(), point.grid())))
+                rows.append(row_of(point, runner.run(point.problem(), point.method(), point.grid())))
             except SimulationError as error:
                 rows.append(failed_row(point, error))
     return rows

@@ -48,15 +48,15 @@ def run(args: argparse.Namespace) -> int:
     loops = ["c", "python"] if args.loop == "both" else [args.loop]
     # Every timed sweep, on the fewest workers asked for: refused at once past a week or the memory.
     seconds = check_sweep(args.runs * args.repeat * len(args.workers) * len(loops), math.ceil(args.periods * 50) + 1,
-                          min(args.workers), runs_argument="--runs",
-                          fewer="fewer --runs, --repeat or --workers counts, or one --loop")
+                          min(args.workers), runs_field="runs",
+                          fewer="fewer `runs`, `repeat` or `workers` counts, or one `loop`")
     if seconds > SLOW_SECONDS:
         print(f"bench sweep: about {duration_text(seconds)} of sweeps ...", file=sys.stderr, flush=True)
     fmu = args.fmu
     points = bench_points(args.runs, args.periods)
     with FmuRunner(fmu) as runner:  # a run that fails here would be timed as a fast one: refuse now
         probe = points[0]
-        runner.run(probe.pendulum(), probe.method(), probe.grid())
+        runner.run(probe.problem(), probe.method(), probe.grid())
     physical, logical, usable = cores()
     print(f"sweep of {len(points)} runs (amplitudes 1-179 deg from rest, {args.periods:g} periods, dopri5 "
           f"at 1e-8), median of {args.repeat}; FMU {fmu}")
