@@ -40,7 +40,7 @@ def seed_table(fmi2: FmuRunner, fmi3: FmuRunner) -> list[str]:
     for amplitude in (75.0, 80.0, 85.0, 90.0):
         problem = InitialValueProblem.from_degrees(amplitude)
         for method in SEED_METHODS:
-            two, three = (runner.run(problem, method, grid)  # type: ignore[arg-type]  # until FmuRunner takes it
+            two, three = (runner.run(problem, method, grid)
                           for runner in (fmi2, fmi3))
             same = two.result.tobytes() == three.result.tobytes()
             rows.append(f"| {amplitude:.0f} | {method.interface} | {two.max_error:.2e} | {three.max_error:.2e} "
@@ -54,7 +54,7 @@ def regime_table(runner: FmuRunner) -> list[str]:
     grid = TimeGrid(3.0, "s", output_interval=0.05)
     for name, (theta0, omega0) in REGIMES.items():
         problem = InitialValueProblem(theta0, omega0)
-        result = runner.run(problem, Method(), grid).result  # type: ignore[arg-type]  # until FmuRunner takes it
+        result = runner.run(problem, Method(), grid).result
         theta, omega, _ = closed_form(theta0, omega0, exact_frequency(1.0, 9.81), list(result["time"]))
         rows.append(f"| {name} | {max_abs_diff(result['theta_exact'], theta):.1e} "
                     f"| {max_abs_diff(result['omega_exact'], omega):.1e} |")

@@ -71,7 +71,7 @@ def write_run(fmu: Path, rows: int, path: Path) -> Path:
     grid = TimeGrid(stop=(rows - 1) * OUTPUT_INTERVAL, unit="s", output_interval=OUTPUT_INTERVAL)
     with FmuRunner(fmu) as runner:
         problem = InitialValueProblem.from_degrees(AMPLITUDE_DEG)
-        result = runner.run(problem, Method(), grid).result  # type: ignore[arg-type]  # until FmuRunner takes it
+        result = runner.run(problem, Method(), grid).result
     if result.size != rows:
         raise RuntimeError(f"the run gave {result.size} rows, not {rows}")
     names = ("time", "theta", "omega", "theta_exact", "omega_exact")

@@ -139,8 +139,8 @@ def measure(fmu: Path, rounds: int = 10) -> list[MethodTimes]:
     scratch: list[Path] = []
     try:
         with FmuRunner(fmu) as runner, FmuRunner(fmu, loop="python") as python_runner:
-            period = runner.period(problem)  # type: ignore[arg-type]  # until FmuRunner takes InitialValueProblem
-            times = grid.times_array(reference_period(period, problem))  # type: ignore[arg-type]  # likewise
+            period = runner.period(problem)
+            times = grid.times_array(reference_period(period, problem))
             truth, _ = exact(problem.theta0, problem.omega0, problem.L, problem.g, times)
             methods, rtol = _package_methods(runner, python_runner, problem, grid, times, truth)
             methods += _fmpy_methods(runner, fmu, problem, times, truth, rtol, scratch)
@@ -188,7 +188,7 @@ def _package_methods(runner: FmuRunner, python_runner: FmuRunner, problem: Initi
                      times: np.ndarray, truth: np.ndarray) -> tuple[list[_Method], float]:
     """The package's rows, all at rkn's loosest tolerance that reaches the error, and that tolerance."""
     def full_run(on: FmuRunner, method: Method) -> np.ndarray:
-        return on.run(problem, method, grid).result["theta"]  # type: ignore[arg-type]  # until FmuRunner takes InitialValueProblem
+        return on.run(problem, method, grid).result["theta"]
 
     rtol, error = _loosest(lambda r: full_run(runner, Method("rkn", r)), truth)
     if rtol is None:
@@ -221,7 +221,7 @@ def _loop_row(runner: FmuRunner, problem: InitialValueProblem, method: Method, t
     rows = np.dtype([("time", np.float64)] + [(name, np.float64) for name in names])
 
     def initialized() -> Any:
-        return runner.initialized(problem, method)  # type: ignore[arg-type]  # until FmuRunner takes InitialValueProblem
+        return runner.initialized(problem, method)
 
     loop = driver.OutputLoop(initialized(), runner.fmi_version, [runner.vr[name] for name in names])
 
@@ -244,7 +244,7 @@ def _fmpy_methods(runner: FmuRunner, fmu: Path, problem: InitialValueProblem, ti
     rows: list[_Method] = []
     if runner.fmi_version == 2:
         # the runner's own instance, now driven by fmpy's wrappers
-        slave = runner.initialized(problem, Method("rkn", rtol))  # type: ignore[arg-type]  # likewise
+        slave = runner.initialized(problem, Method("rkn", rtol))
         vr = runner.vr
         refs = [vr["theta"]]
 

@@ -304,7 +304,7 @@ class FmuRunner:
         """The log of this runner's instances (what the FMU logged since the last initialization)."""
         return self._log
 
-    def initialized(self, pendulum: Pendulum, method: Method = DEFAULT_METHOD) -> Any:
+    def initialized(self, problem: InitialValueProblem, method: Method = DEFAULT_METHOD) -> Any:
         """The runner's Co-Simulation instance, reset and initialized for one problem at t = 0.
 
         For a caller that steps the instance itself (``pendulum-fmu bench speed`` times the
@@ -314,7 +314,7 @@ class FmuRunner:
 
         Parameters
         ----------
-        pendulum : Pendulum
+        problem : InitialValueProblem
             Parameters and initial state.
         method : Method
             A Co-Simulation solver and its tolerance.
@@ -335,7 +335,7 @@ class FmuRunner:
             raise ValueError(f"{method.label} is not a Co-Simulation solver: give one of {CS_SOLVERS}")
         if self.fmi_version == 2:
             route_fmi2_messages()  # another fmpy call may have taken fmpy's one logging proxy since
-        return self._set_up(True, pendulum, method)
+        return self._set_up(True, problem, method)
 
     # -- runs --------------------------------------------------------------------------------
     def period(self, problem: InitialValueProblem) -> float:
