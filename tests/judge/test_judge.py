@@ -291,6 +291,70 @@ def test_cli_exit_codes_json_and_plot(cs_run: np.ndarray, fmu_path: Path, tmp_pa
     assert done.returncode == 2 and "argument --start" in done.stderr
 
 
+def test_the_plot_draws_the_verdicts_series_without_the_file(cs_run: np.ndarray, tmp_path: Path) -> None:
+    """The verdict carries what the plot needs: the file may be gone when it is drawn. Its
+    series are the file's own numbers and the exact solution at its times (mpmath-checked
+    elsewhere), and the allowed error is the bound of the certificate, 100 tol max(1, |theta_e|)."""
+    path = tmp_path / "cs.csv"
+    write_csv(str(path), cs_run)
+    verdict = judge(path, start={"theta": THETA0}, read_experiment_file=False)
+    path.unlink()
+    series = verdict.series
+    assert series is not None and verdict.passed, verdict.line
+    assert np.array_equal(series.time, cs_run["time"]) and np.array_equal(series.values["theta"], cs_run["theta"])
+    assert np.array_equal(series.errors["theta"], cs_run["theta"] - series.exact_theta)
+    assert np.max(np.abs(series.exact_theta - cs_run["theta_exact"])) < 1e-13
+    assert np.allclose(series.allowed_error["theta"], 100 * 1e-8 * np.maximum(1.0, np.abs(series.exact_theta)),
+                       rtol=1e-15, atol=0.0)
+    assert set(series.exact_column_differences) == {"theta_exact", "omega_exact"}
+    write_plot(verdict, tmp_path / "cs.png")
+    assert (tmp_path / "cs.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_the_json_keeps_its_keys(cs_run: np.ndarray) -> None:
+    """The verdict's JSON: the experiment flat (the problem's theta0, omega0, L, g first), each
+    check's numbers under "figures"; the series are not in it."""
+    data = judge(cs_run, start={"theta": THETA0}, read_experiment_file=False).to_dict()
+    assert list(data) == ["passed", "verdict", "source", "columns", "instance", "experiment", "checks"]
+    assert list(data["experiment"]) == ["theta0", "omega0", "L", "g", "interface", "tolerance", "tolerance_stated",
+                                        "solver", "given", "start_time"]
+    assert data["experiment"]["theta0"] == THETA0 and data["experiment"]["given"] == ["theta"]
+    assert all(list(check) == ["name", "status", "line", "figures"] for check in data["checks"])
+    json.dumps(data)  # JSON-ready as it is: no array
+
+
+@pytest.mark.parametrize(("arguments", "field", "words"), [
+    ({"start": {"L": -1.0}}, "start", "L=-1.0: must be finite and > 0"),
+    ({"start": {"theta": math.inf}}, "start", "must be finite"),
+    ({"start": {"tolerance": "tight"}}, "start", "is not a number"),
+    ({"start": {"amplitude": 1.0}}, "start", "unknown name 'amplitude'"),
+    ({"interface": "XX"}, "interface", "must be CS or ME"),
+])
+def test_a_bad_argument_names_its_field(cs_run: np.ndarray, arguments: dict[str, object], field: str,
+                                        words: str) -> None:
+    """The library names the field (the command line maps it to its flag: the next test)."""
+    from pendulum_fmu.errors import UsageError
+
+    with pytest.raises(UsageError) as raised:
+        judge(cs_run, read_experiment_file=False, **arguments)  # type: ignore[arg-type]
+    assert raised.value.field == field and words in raised.value.message
+
+
+def test_the_command_parses_start_into_typed_values() -> None:
+    """``--start NAME=VALUE`` becomes the judge's typed values in cli/ (degrees to radians, the
+    solver a name); a bad pair says so with the text the user typed."""
+    from pendulum_fmu.cli.judge import start_values
+    from pendulum_fmu.errors import UsageError
+
+    assert start_values(["theta=80deg", " L = 2 ", "solver=rk4", "startTime=5"]) == {
+        "theta": math.radians(80.0), "L": 2.0, "solver": "rk4", "startTime": 5.0}
+    for pair, words in (("L=-1", "L='-1': must be finite and > 0"), ("g=abc", "g='abc' is not a number"),
+                        ("theta", "expected NAME=VALUE, got 'theta'"), ("foo=1", "unknown name 'foo'")):
+        with pytest.raises(UsageError) as raised:
+            start_values([pair])
+        assert raised.value.field == "start" and words in raised.value.message
+
+
 def test_plot_of_a_failing_run_draws_the_bound(fmu_path: Path, tmp_path: Path) -> None:
     run = fmpy_run(fmu_path, fmi_type="ModelExchange", solver="Euler", step_size=0.01)
     verdict = judge(run, interface="ME")

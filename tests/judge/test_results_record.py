@@ -182,7 +182,8 @@ def test_a_record_that_cannot_be_read_is_one_line(tmp_path: Path, fmu_path: Path
         main(["judge", str(out), "--fmu", str(fmu_path)])
     captured = capsys.readouterr()
     assert exit_code.value.code == 2
-    assert captured.err.count("\n") == 1 and "experiment record is unreadable" in captured.err, captured.err
+    assert captured.err.count("\n") == 1, captured.err
+    assert "argument RESULT: its experiment record is unreadable" in captured.err, captured.err  # the field result
     assert "Traceback" not in captured.err
     sidecar_of(out).write_text(json.dumps({"format": FORMAT, "file": "other.csv", "experiment": _record().to_json()}))
     with pytest.raises(SystemExit) as exit_code:
