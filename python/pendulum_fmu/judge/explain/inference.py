@@ -95,7 +95,7 @@ def fit_parameters(t: np.ndarray, columns: dict[str, np.ndarray], experiment: Ex
     return Fit(theta_f, omega_f, math.exp(log_l), g, float(np.max(np.abs(scaled))))
 
 
-# --- fixed-step methods: judge/fixed_step.py (a prefix rerun, then every row at once) -----------
+# --- fixed-step methods: explain/fixed_step.py (a prefix rerun, then every row at once) ---------
 
 identify_fixed_step = fixed_step.identify_fixed_step
 FixedStep = fixed_step.FixedStep
