@@ -328,6 +328,7 @@ def test_the_json_keeps_its_keys(cs_run: np.ndarray) -> None:
     ({"start": {"theta": math.inf}}, "start", "must be finite"),
     ({"start": {"tolerance": "tight"}}, "start", "is not a number"),
     ({"start": {"amplitude": 1.0}}, "start", "unknown name 'amplitude'"),
+    ({"start": ["theta=1.4"]}, "start", "a mapping of name to value"),
     ({"interface": "XX"}, "interface", "must be CS or ME"),
 ])
 def test_a_bad_argument_names_its_field(cs_run: np.ndarray, arguments: dict[str, object], field: str,

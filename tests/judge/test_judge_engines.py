@@ -33,7 +33,7 @@ pytestmark = pytest.mark.engines
 
 THETA0 = math.radians(80.0)
 STARTS = {"theta": THETA0, "L": 2.0}
-JUDGED_AS = ["theta=80deg", "L=2"]
+JUDGED_AS = {"theta": math.radians(80.0), "L": 2.0}
 
 
 def require(module: str) -> None:

@@ -118,6 +118,8 @@ def check_start(start: Mapping[str, float | str] | None) -> dict[str, float | st
     UsageError
         For an unknown name or a bad value, naming ``start``.
     """
+    if start is not None and not isinstance(start, Mapping):
+        raise UsageError("start", f"a mapping of name to value, e.g. {{'theta': 1.4}}, not {type(start).__name__}")
     values: dict[str, float | str] = {}
     for name, value in (start or {}).items():
         if name not in NAMES:
