@@ -152,7 +152,7 @@ def judged(run: Run, problem: Problem, tolerance: float, factor: float) -> tuple
     allowance = sensitivity.allowance(exact.t, exact.theta, exact.omega, experiment, factor)
     ref = checks.Reference(exact.t, exact.theta, exact.omega, allowance)
     check = checks.bound_check(result, ref, experiment, checks.state_errors(result, ref))
-    return float(check.figures["worst_ratio"]), float(check.figures["linear_until"])
+    return float(check.numbers["worst_ratio"]), float(check.numbers["linear_until"])
 
 
 @dataclass

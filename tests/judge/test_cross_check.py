@@ -23,11 +23,12 @@ from fmpy.util import read_ref_opt_file, write_csv
 
 from pendulum_fmu.fmu.library import exact
 from pendulum_fmu.judge import judge
-from pendulum_fmu.judge.band import LIMIT, band_check, outside_fraction, outside_fractions
 from pendulum_fmu.judge.checks import reference
-from pendulum_fmu.judge.experiment import cross_check_opt, fmu_experiment, make_experiment, read_experiments
+from pendulum_fmu.judge.cross_check_verdict import write_verdict_file
+from pendulum_fmu.judge.experiment import make_experiment
+from pendulum_fmu.judge.experiment_files import cross_check_opt, fmu_experiment, read_experiments
+from pendulum_fmu.judge.fmpy_validation import LIMIT, fmpy_validation_check, outside_fraction, outside_fractions
 from pendulum_fmu.judge.reading import read_result
-from pendulum_fmu.judge.standard_files import judge_with_experiment, write_verdict_file
 
 EXP = "extra/org.fmi-standard.fmi-ls-ref/Pendulum.exp"
 OUTPUTS = ["theta", "omega", "theta_exact", "omega_exact"]
@@ -86,7 +87,8 @@ def test_the_options_are_the_default_experiment_and_the_reference_its_exact_solu
     table = np.genfromtxt(model / "Pendulum_ref.csv", delimiter=",", names=True, deletechars="")
     assert (table["time"][0], table["time"][-1]) == (opts["StartTime"], opts["StopTime"])
     experiment, _ = make_experiment(fmu=fmu_path)
-    theta, omega = exact(experiment.theta0, experiment.omega0, experiment.L, experiment.g, table["time"])
+    p = experiment.problem
+    theta, omega = exact(p.theta0, p.omega0, p.L, p.g, table["time"])
     assert np.max(np.abs(table["theta"] - theta)) <= 1e-14 and np.max(np.abs(table["omega"] - omega)) <= 1e-13
 
 
@@ -114,12 +116,13 @@ def test_judge_takes_the_experiment_from_a_ref_opt(fmu_path: Path, tmp_path: Pat
     for folder in (results, fmus):
         folder.mkdir(parents=True)
     write_csv(str(results / "Pendulum_out.csv"), run)
-    without = judge(results / "Pendulum_out.csv", start=["tolerance=1e-6"], interface="ME", fmu=fmu_path)
+    without = judge(results / "Pendulum_out.csv", start={"tolerance": 1e-6}, interface="ME", fmu=fmu_path)
     assert not without.passed, without.line  # judged from t = 0
     (fmus / "Pendulum_ref.opt").write_text("StartTime, 5.0\nStopTime, 11.0\nStepSize, 0.02\nRelTol, 1e-6\n")
     assert cross_check_opt(results / "Pendulum_out.csv") == (fmus / "Pendulum_ref.opt").resolve()
-    verdict, settings = judge_with_experiment(results / "Pendulum_out.csv", fmu=fmu_path)
-    assert settings is not None and settings.interface == "ME" and settings.start_time == 5.0
+    verdict = judge(results / "Pendulum_out.csv", fmu=fmu_path)
+    stated = verdict.experiment_file
+    assert stated is not None and stated.interface == "ME" and stated.start_time == 5.0
     assert verdict.experiment.interface == "ME" and verdict.experiment.start_time == 5.0
     assert verdict.experiment.tolerance == 1e-6 and verdict.passed, verdict.line
     done = pendulum_fmu("judge", str(results / "Pendulum_out.csv"), "--fmu", str(fmu_path),
@@ -149,12 +152,14 @@ def _fmu_with_experiment(fmu: Path, target: Path, start_time: str) -> Path:
 def test_judge_takes_the_experiment_from_the_fmus_exp(fmu_any: Path, tmp_path: Path) -> None:
     run = _run_from(fmu_any, 5.0)
     write_csv(str(tmp_path / "run.csv"), run)
-    verdict, settings = judge_with_experiment(tmp_path / "run.csv", fmu=fmu_any)
-    assert settings is not None and settings.source.endswith("Pendulum.exp") and settings.start_time == 0.0
+    verdict = judge(tmp_path / "run.csv", fmu=fmu_any)
+    stated = verdict.experiment_file
+    assert stated is not None and stated.source.endswith("Pendulum.exp") and stated.start_time == 0.0
     assert not verdict.passed  # the FMU's own experiment starts at 0
     moved = _fmu_with_experiment(fmu_any, tmp_path / "Pendulum.fmu", "5")
-    verdict, settings = judge_with_experiment(tmp_path / "run.csv", fmu=moved)
-    assert settings is not None and settings.start_time == 5.0 and settings.tolerance == 1e-8
+    verdict = judge(tmp_path / "run.csv", fmu=moved)
+    stated = verdict.experiment_file
+    assert stated is not None and stated.start_time == 5.0 and stated.tolerance == 1e-8
     assert verdict.experiment.start_time == 5.0 and verdict.passed, verdict.line
 
 
@@ -163,18 +168,18 @@ def test_a_run_of_the_experiment_is_judged_on_its_step(fmu_any: Path, tmp_path: 
     447 rows, the last step shorter) is judged on the experiment's step of 17 digits; without
     the experiment the judge takes the times' own step, since 6 digits of it would drift from
     k h by 5.7e-5 s over 446 steps."""
-    settings = fmu_experiment(fmu_any)
-    assert settings is not None and settings.step is not None
+    stated = fmu_experiment(fmu_any)
+    assert stated is not None and stated.step is not None
     run = simulate_fmu(str(fmu_any), output=OUTPUTS)
-    assert settings.covers(float(run["time"][0]), float(run["time"][-1]), run.size)
-    assert not settings.covers(0.0, settings.stop_time, 1001) and not settings.covers(1.0, settings.stop_time, run.size)
+    assert stated.covers(float(run["time"][0]), float(run["time"][-1]), run.size)
+    assert not stated.covers(0.0, stated.stop_time, 1001) and not stated.covers(1.0, stated.stop_time, run.size)
     write_csv(str(tmp_path / "default.csv"), run)
-    verdict, _ = judge_with_experiment(tmp_path / "default.csv", fmu=fmu_any)
-    assert verdict.check("time grid").figures["step"] == settings.step
+    verdict = judge(tmp_path / "default.csv", fmu=fmu_any)
+    assert verdict.check("time grid").numbers["step"] == stated.step
     assert verdict.passed, verdict.line
-    alone = judge(tmp_path / "default.csv", fmu=fmu_any)  # on the step read from the times
+    alone = judge(tmp_path / "default.csv", fmu=fmu_any, read_experiment_file=False)  # the times' step
     assert alone.passed, alone.line
-    assert alone.check("time grid").figures["step"] == pytest.approx(settings.step, rel=1e-12)
+    assert alone.check("time grid").numbers["step"] == pytest.approx(stated.step, rel=1e-12)
 
 
 # --- the verdict file -------------------------------------------------------------------------------
@@ -234,8 +239,8 @@ def test_band_agrees_with_fmpy(case: str) -> None:
                                   t_start=t[0], t_stop=t[-1]) is None
     read = read_result(io_table(result))
     experiment, _ = make_experiment({"theta": math.radians(75.0), "omega": 0.0, "L": 1.0, "g": 9.81})
-    check = band_check(read, reference(read, experiment))
-    assert check.status == "info" and check.figures["passes"] == fmpy_passes
+    check = fmpy_validation_check(read, reference(read, experiment))
+    assert check.status == "info" and check.numbers["passes"] == fmpy_passes
 
 
 def io_table(table: np.ndarray) -> dict[str, np.ndarray]:
@@ -255,22 +260,22 @@ def test_the_verdict_reports_the_band_on_an_honest_and_a_wrong_file(fmu_path: Pa
     with its sign flipped. Prints the table of docs/importers.md."""
     run = simulate_fmu(str(fmu_path), stop_time=10.0, output_interval=0.01, output=OUTPUTS)
     honest = judge(run)
-    assert honest.passed and honest.check("fmpy band").figures["passes"] is True
+    assert honest.passed and honest.check("fmpy band").numbers["passes"] is True
     assert honest.check("fmpy band").status == "info" and "would pass" in honest.check("fmpy band").line
     print("\n| file (fmpy CS, 75 deg, 10 s at 0.01 s) | judge | fmpy band | theta rows outside the band |")
     print("|---|---|---|---|")
-    print(f"| honest | PASS | passes | {honest.check('fmpy band').figures['outside']['theta']:.1%} |")
+    print(f"| honest | PASS | passes | {honest.check('fmpy band').numbers['outside']['theta']:.1%} |")
     for label, change in WRONG.items():
         wrong = run.copy()
         wrong["theta"] = change(run)
         verdict = judge(wrong)
-        band = verdict.check("fmpy band").figures
+        band = verdict.check("fmpy band").numbers
         print(f"| {label} | {'PASS' if verdict.passed else 'FAIL'} | {'passes' if band['passes'] else 'fails'} "
               f"| {band['outside']['theta']:.1%} |")
         assert not verdict.passed and band["passes"] is True, label  # the loose band lets it through
     flipped = run.copy()
     flipped["theta"] = -run["theta"]
-    band = judge(flipped).check("fmpy band").figures
+    band = judge(flipped).check("fmpy band").numbers
     assert band["passes"] is False and band["outside"]["theta"] > LIMIT
 
 
@@ -291,8 +296,8 @@ def test_reading_an_exp_in_either_layout() -> None:
     child = b'<Experiments name="x"><Experiment name="a" tolerance="1e-6"><TransientSimulation startTime="1" ' \
             b'stopTime="3" stepSize="0.5"/></Experiment></Experiments>'
     for text in (attributes, child):
-        settings = read_experiments(text, "x.exp")
-        assert (settings.start_time, settings.stop_time, settings.step, settings.tolerance) == (1.0, 3.0, 0.5, 1e-6)
+        stated = read_experiments(text, "x.exp")
+        assert (stated.start_time, stated.stop_time, stated.step, stated.tolerance) == (1.0, 3.0, 0.5, 1e-6)
     with pytest.raises(ValueError, match="stopTime"):
         read_experiments(b'<Experiments name="x"><Experiment name="a" startTime="3" stopTime="1"/></Experiments>', "x")
 

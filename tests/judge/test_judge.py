@@ -44,22 +44,22 @@ def judge_cli(*args: str) -> subprocess.CompletedProcess[str]:
 def test_fmpy_cs_passes_both_fmus(fmu_any: Path, tmp_path: Path) -> None:
     run = fmpy_run(fmu_any, start_values={"theta": THETA0})
     write_csv(tmp_path / "cs.csv", run)
-    verdict = judge(tmp_path / "cs.csv", start=["theta=80deg"])
+    verdict = judge(tmp_path / "cs.csv", start={"theta": THETA0})
     assert verdict.passed, verdict.line
     assert [c.name for c in verdict.checks if c.status == "pass"] == ["time grid", "exact columns", "isolated values",
                                                                        "bound"]
     # the largest error the judge reports is the file's own theta - theta_exact (the FMU's exact output)
-    assert verdict.check("theta error").figures["largest"] == pytest.approx(
+    assert verdict.check("theta error").numbers["largest"] == pytest.approx(
         float(np.max(np.abs(run["theta"] - run["theta_exact"]))), rel=1e-6, abs=1e-15)
-    assert verdict.check("exact columns").figures["largest"]["theta_exact"] <= 1e-15
+    assert verdict.check("exact columns").numbers["largest"]["theta_exact"] <= 1e-15
 
 
 @pytest.mark.parametrize("tolerance", [1e-6, 1e-8, 1e-10])
 def test_fmpy_cvode_passes_at_its_stated_tolerance(fmu_path: Path, tolerance: float) -> None:
     run = fmpy_run(fmu_path, fmi_type="ModelExchange", relative_tolerance=tolerance, start_values={"theta": THETA0})
-    verdict = judge(run, start=["theta=80deg", f"tolerance={tolerance}"], interface="ME")
+    verdict = judge(run, start={"theta": THETA0, "tolerance": tolerance}, interface="ME")
     assert verdict.passed, verdict.line
-    assert verdict.check("bound").figures["worst_ratio"] < 1.0
+    assert verdict.check("bound").numbers["worst_ratio"] < 1.0
     # a file within the bound needs no cause: CVODE is not rerun for it
     assert "diagnosis" not in [c.name for c in verdict.checks]
 
@@ -68,22 +68,26 @@ def test_fmpy_cvode_passes_at_its_stated_tolerance(fmu_path: Path, tolerance: fl
 
 def test_euler_model_exchange_fails_as_explicit_euler(fmu_any: Path) -> None:
     run = fmpy_run(fmu_any, fmi_type="ModelExchange", solver="Euler", step_size=0.01, start_values={"theta": THETA0})
-    verdict = judge(run, start=["theta=80deg"], interface="ME")
+    verdict = judge(run, start={"theta": THETA0}, interface="ME")
     assert not verdict.passed
     assert verdict.check("bound").status == "fail"
     diagnosis = verdict.check("diagnosis")
-    assert diagnosis.figures == {"cause": "fixed step", "method": "explicit Euler", "step": 0.01}
+    assert diagnosis.numbers == {"cause": "fixed step", "method": "explicit Euler", "step": 0.01}
     assert "explicit Euler at h = 0.01" in verdict.line
 
 
 def test_cvode_at_1e_4_fails_as_tolerance_not_passed(fmu_path: Path) -> None:
-    """What C fmusim does with --solver cvode: rtol 1e-4 whatever the experiment says (1e-8)."""
+    """What C fmusim does with --solver cvode: rtol 1e-4 whatever the experiment says (1e-8):
+    the model description's default, or the tolerance the FMU's FMI-LS-REF experiment states."""
     run = fmpy_run(fmu_path, fmi_type="ModelExchange", relative_tolerance=1e-4, start_values={"theta": THETA0})
-    verdict = judge(run, start=["theta=80deg"], interface="ME")
-    assert not verdict.passed
+    verdict = judge(run, start={"theta": THETA0}, interface="ME", fmu=fmu_path, read_experiment_file=False)
+    assert not verdict.passed and verdict.experiment_file is None
     diagnosis = verdict.check("diagnosis")
-    assert 10 ** -4.5 < diagnosis.figures["effective_tolerance"] < 10 ** -3.5
+    assert 10 ** -4.5 < diagnosis.numbers["effective_tolerance"] < 10 ** -3.5
     assert "not the experiment's 1e-08: the importer did not pass the experiment's tolerance" in verdict.line
+    stated = judge(run, start={"theta": THETA0}, interface="ME", fmu=fmu_path)
+    assert stated.experiment_file is not None and stated.experiment_file.source.endswith("Pendulum.exp")
+    assert "not the stated 1e-08: the importer did not pass the experiment's tolerance" in stated.line
 
 
 @pytest.mark.parametrize("column", ["theta", "theta_exact", "omega"])
@@ -91,46 +95,46 @@ def test_one_value_changed_by_1e_6_fails(cs_run: np.ndarray, tmp_path: Path, col
     edited = cs_run.copy()
     edited[column][437] += 1e-6
     write_csv(tmp_path / "edited.csv", edited)
-    verdict = judge(tmp_path / "edited.csv", start=["theta=80deg"])
+    verdict = judge(tmp_path / "edited.csv", start={"theta": THETA0})
     assert not verdict.passed
     if column.endswith("_exact"):
-        assert verdict.check("exact columns").figures["rows"] == [438]
+        assert verdict.check("exact columns").numbers["rows"] == [438]
     else:
         check = verdict.check("isolated values")
-        assert check.status == "fail" and check.figures["rows"] == [438]
-        assert check.figures["jump"] == pytest.approx(1e-6, rel=1e-3)
+        assert check.status == "fail" and check.numbers["rows"] == [438]
+        assert check.numbers["jump"] == pytest.approx(1e-6, rel=1e-3)
     assert "mangled" in verdict.line
     # the untouched file passes: the edit alone made the difference
-    assert judge(cs_run, start=["theta=80deg"]).passed
+    assert judge(cs_run, start={"theta": THETA0}).passed
 
 
 def test_changed_length_fails_and_the_judge_finds_it(fmu_path: Path) -> None:
     run = fmpy_run(fmu_path, start_values={"theta": THETA0, "L": 1.25})
-    verdict = judge(run, start=["theta=80deg"])
+    verdict = judge(run, start={"theta": THETA0})
     assert not verdict.passed
-    fit = verdict.check("exact columns").figures["fit"]
+    fit = verdict.check("exact columns").numbers["fit"]
     assert fit["L"] == pytest.approx(1.25, rel=1e-9)
     assert fit["theta0"] == pytest.approx(THETA0, rel=1e-12)
     assert "L = 1.25 (not 1)" in verdict.line
     # without the exact columns, theta and omega themselves give L away
-    bare = judge({"time": run["time"], "theta": run["theta"], "omega": run["omega"]}, start=["theta=80deg"])
+    bare = judge({"time": run["time"], "theta": run["theta"], "omega": run["omega"]}, start={"theta": THETA0})
     assert not bare.passed and "L = 1.25 (not 1)" in bare.line
     # judged with the L the run used, it passes
-    assert judge(run, start=["theta=80deg", "L=1.25"]).passed
+    assert judge(run, start={"theta": THETA0, "L": 1.25}).passed
 
 
 def test_drifting_times_fail(cs_run: np.ndarray) -> None:
     """Values computed at k h, written at times that drift from k h: the clock, not the values."""
     drifted = cs_run.copy()
     drifted["time"][1:] += 1e-7 * np.arange(1, drifted.size) ** 2 / drifted.size
-    verdict = judge(drifted, start=["theta=80deg"])
+    verdict = judge(drifted, start={"theta": THETA0})
     grid = verdict.check("time grid")
     assert grid.status == "fail" and "times drift from k h" in verdict.line
-    assert grid.figures["largest_deviation"] == pytest.approx(1e-4, rel=1e-2)
+    assert grid.numbers["largest_deviation"] == pytest.approx(1e-4, rel=1e-2)
     assert "the times are written wrong (the clock drifts)" in verdict.check("exact columns").line
     scaled = cs_run.copy()
     scaled["time"] *= 1 + 1e-7  # a clock that runs fast: a uniform grid, the values late in proportion to t
-    verdict = judge(scaled, start=["theta=80deg"])
+    verdict = judge(scaled, start={"theta": THETA0})
     assert verdict.check("time grid").status == "pass"
     assert "the clock runs 1.0000001 times fast" in verdict.line, verdict.line
 
@@ -140,7 +144,7 @@ def test_a_step_that_is_no_short_decimal_is_taken_from_the_times(fmu_path: Path)
     run = fmpy_run(fmu_path, stop_time=20.0, output_interval=0.04489412888955134)
     verdict = judge(run)
     assert verdict.passed, verdict.line
-    assert verdict.check("time grid").figures["step"] == pytest.approx(0.04489412888955134, rel=1e-12)
+    assert verdict.check("time grid").numbers["step"] == pytest.approx(0.04489412888955134, rel=1e-12)
 
 
 def test_summed_times_pass_with_their_drift_reported(cs_run: np.ndarray) -> None:
@@ -151,16 +155,16 @@ def test_summed_times_pass_with_their_drift_reported(cs_run: np.ndarray) -> None
     summed["time"] = np.concatenate(([0.0], np.cumsum(np.full(summed.size - 1, 0.01))))
     assert summed["time"][-1] == 9.999999999999831
     summed["theta_exact"], summed["omega_exact"] = exact(THETA0, 0.0, 1.0, 9.81, summed["time"])
-    verdict = judge(summed, start=["theta=80deg"])
+    verdict = judge(summed, start={"theta": THETA0})
     assert verdict.passed, verdict.line
-    assert 1e-14 < abs(verdict.check("time grid").figures["largest_deviation"]) < 1e-12
+    assert 1e-14 < abs(verdict.check("time grid").numbers["largest_deviation"]) < 1e-12
 
 
 def test_non_monotone_times_fail(cs_run: np.ndarray) -> None:
     swapped = cs_run.copy()
     swapped["time"][[10, 11]] = swapped["time"][[11, 10]]
-    check = judge(swapped, start=["theta=80deg"]).check("time grid")
-    assert check.status == "fail" and "not monotone" in check.line and check.figures["first_backstep_row"] == 12
+    check = judge(swapped, start={"theta": THETA0}).check("time grid")
+    assert check.status == "fail" and "not monotone" in check.line and check.numbers["first_backstep_row"] == 12
 
 
 def test_a_print_too_coarse_for_the_bound_fails_as_such(cs_run: np.ndarray, tmp_path: Path) -> None:
@@ -168,9 +172,9 @@ def test_a_print_too_coarse_for_the_bound_fails_as_such(cs_run: np.ndarray, tmp_
     lines = ["time,theta,omega"] + [f"{t:g},{a:g},{b:g}" for t, a, b in zip(cs_run["time"], cs_run["theta"],
                                                                           cs_run["omega"], strict=True)]
     (tmp_path / "g.csv").write_text("\n".join(lines) + "\n")
-    verdict = judge(tmp_path / "g.csv", start=["theta=80deg"])
+    verdict = judge(tmp_path / "g.csv", start={"theta": THETA0})
     assert not verdict.passed
-    assert verdict.check("diagnosis").figures["cause"] == "print precision"
+    assert verdict.check("diagnosis").numbers["cause"] == "print precision"
 
 
 # --- reading ---------------------------------------------------------------------------------
@@ -198,7 +202,7 @@ def test_the_usual_csv_dialects_read_alike(cs_run: np.ndarray, tmp_path: Path, n
     assert set(result.values) == set(OUTPUTS)
     for name in OUTPUTS:
         assert np.array_equal(result.values[name], cs_run[name])
-    assert judge(tmp_path / "r.csv", start=["theta=80deg"]).passed
+    assert judge(tmp_path / "r.csv", start={"theta": THETA0}).passed
 
 
 def test_parquet_and_dataframe(cs_run: np.ndarray, tmp_path: Path) -> None:
@@ -209,17 +213,17 @@ def test_parquet_and_dataframe(cs_run: np.ndarray, tmp_path: Path) -> None:
     frame = pd.DataFrame({name: cs_run[name] for name in ["time", *OUTPUTS]})
     pq.write_table(pa.Table.from_pandas(frame), tmp_path / "r.parquet")
     for data in (frame, tmp_path / "r.parquet"):
-        verdict = judge(data, start=["theta=80deg"])
+        verdict = judge(data, start={"theta": THETA0})
         assert verdict.passed, verdict.line
 
 
 def test_any_subset_of_columns(cs_run: np.ndarray) -> None:
-    only_exact = judge({"time": cs_run["time"], "theta_exact": cs_run["theta_exact"]}, start=["theta=80deg"])
+    only_exact = judge({"time": cs_run["time"], "theta_exact": cs_run["theta_exact"]}, start={"theta": THETA0})
     # the FMU's exact outputs alone say nothing of the importer's numbers: nothing to pass
     assert not only_exact.passed and only_exact.check("bound").status == "info"
     assert "no theta or omega column" in only_exact.line
-    only_omega = judge({"time": cs_run["time"], "omega": cs_run["omega"]}, start=["theta=80deg"])
-    assert only_omega.passed and only_omega.check("bound").figures["variable"] == "omega"
+    only_omega = judge({"time": cs_run["time"], "omega": cs_run["omega"]}, start={"theta": THETA0})
+    assert only_omega.passed and only_omega.check("bound").numbers["variable"] == "omega"
 
 
 @pytest.mark.parametrize(("text", "message"), [
@@ -252,11 +256,11 @@ def test_semicolons_with_decimal_commas(cs_run: np.ndarray, tmp_path: Path) -> N
 def test_nan_values_fail_and_nan_times_fail(cs_run: np.ndarray) -> None:
     broken = cs_run.copy()
     broken["theta"][3] = np.nan
-    verdict = judge(broken, start=["theta=80deg"])
+    verdict = judge(broken, start={"theta": THETA0})
     assert not verdict.passed and verdict.check("theta error").status == "fail"
     broken = cs_run.copy()
     broken["time"][0] = np.nan
-    assert judge(broken, start=["theta=80deg"]).check("time grid").status == "fail"
+    assert judge(broken, start={"theta": THETA0}).check("time grid").status == "fail"
 
 
 def test_binary_and_missing_files_exit_2(tmp_path: Path) -> None:
@@ -287,10 +291,75 @@ def test_cli_exit_codes_json_and_plot(cs_run: np.ndarray, fmu_path: Path, tmp_pa
     assert done.returncode == 2 and "argument --start" in done.stderr
 
 
+def test_the_plot_draws_the_verdicts_series_without_the_file(cs_run: np.ndarray, tmp_path: Path) -> None:
+    """The verdict carries what the plot needs: the file may be gone when it is drawn. Its
+    series are the file's own numbers and the exact solution at its times (mpmath-checked
+    elsewhere), and the allowed error is the bound of the certificate, 100 tol max(1, |theta_e|)."""
+    path = tmp_path / "cs.csv"
+    write_csv(str(path), cs_run)
+    verdict = judge(path, start={"theta": THETA0}, read_experiment_file=False)
+    path.unlink()
+    series = verdict.series
+    assert series is not None and verdict.passed, verdict.line
+    assert np.array_equal(series.time, cs_run["time"]) and np.array_equal(series.values["theta"], cs_run["theta"])
+    assert np.array_equal(series.errors["theta"], cs_run["theta"] - series.exact_theta)
+    assert np.max(np.abs(series.exact_theta - cs_run["theta_exact"])) < 1e-13
+    assert np.allclose(series.allowed_error["theta"], 100 * 1e-8 * np.maximum(1.0, np.abs(series.exact_theta)),
+                       rtol=1e-15, atol=0.0)
+    assert set(series.exact_column_differences) == {"theta_exact", "omega_exact"}
+    write_plot(verdict, tmp_path / "cs.png")
+    assert (tmp_path / "cs.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_the_json_keeps_its_keys(cs_run: np.ndarray) -> None:
+    """The verdict's JSON: the experiment flat (the problem's theta0, omega0, L, g first), each
+    check's numbers under "figures"; the series are not in it."""
+    data = judge(cs_run, start={"theta": THETA0}, read_experiment_file=False).to_dict()
+    assert list(data) == ["passed", "verdict", "source", "columns", "instance", "experiment", "checks"]
+    assert list(data["experiment"]) == ["theta0", "omega0", "L", "g", "interface", "tolerance", "tolerance_stated",
+                                        "solver", "given", "start_time"]
+    assert data["experiment"]["theta0"] == THETA0 and data["experiment"]["given"] == ["theta"]
+    assert all(list(check) == ["name", "status", "line", "figures"] for check in data["checks"])
+    json.dumps(data)  # JSON-ready as it is: no array
+
+
+@pytest.mark.parametrize(("arguments", "field", "words"), [
+    ({"start": {"L": -1.0}}, "start", "L=-1.0: must be finite and > 0"),
+    ({"start": {"theta": math.inf}}, "start", "must be finite"),
+    ({"start": {"tolerance": "tight"}}, "start", "is not a number"),
+    ({"start": {"amplitude": 1.0}}, "start", "unknown name 'amplitude'"),
+    ({"start": ["theta=1.4"]}, "start", "a mapping of name to value"),
+    ({"interface": "XX"}, "interface", "must be CS or ME"),
+])
+def test_a_bad_argument_names_its_field(cs_run: np.ndarray, arguments: dict[str, object], field: str,
+                                        words: str) -> None:
+    """The library names the field (the command line maps it to its flag: the next test)."""
+    from pendulum_fmu.errors import UsageError
+
+    with pytest.raises(UsageError) as raised:
+        judge(cs_run, read_experiment_file=False, **arguments)  # type: ignore[arg-type]
+    assert raised.value.field == field and words in raised.value.message
+
+
+def test_the_command_parses_start_into_typed_values() -> None:
+    """``--start NAME=VALUE`` becomes the judge's typed values in cli/ (degrees to radians, the
+    solver a name); a bad pair says so with the text the user typed."""
+    from pendulum_fmu.cli.judge import start_values
+    from pendulum_fmu.errors import UsageError
+
+    assert start_values(["theta=80deg", " L = 2 ", "solver=rk4", "startTime=5"]) == {
+        "theta": math.radians(80.0), "L": 2.0, "solver": "rk4", "startTime": 5.0}
+    for pair, words in (("L=-1", "L='-1': must be finite and > 0"), ("g=abc", "g='abc' is not a number"),
+                        ("theta", "expected NAME=VALUE, got 'theta'"), ("foo=1", "unknown name 'foo'")):
+        with pytest.raises(UsageError) as raised:
+            start_values([pair])
+        assert raised.value.field == "start" and words in raised.value.message
+
+
 def test_plot_of_a_failing_run_draws_the_bound(fmu_path: Path, tmp_path: Path) -> None:
     run = fmpy_run(fmu_path, fmi_type="ModelExchange", solver="Euler", step_size=0.01)
     verdict = judge(run, interface="ME")
-    write_plot(verdict, run, tmp_path / "euler.png")
+    write_plot(verdict, tmp_path / "euler.png")
     assert (tmp_path / "euler.png").stat().st_size > 20000
 
 
@@ -340,7 +409,7 @@ def _row_twice(c: dict[str, np.ndarray]) -> dict[str, np.ndarray]:
 ])
 def test_a_wrong_file_fails_with_its_own_reason(cs_run: np.ndarray, edit: object, reason: str, bare: bool) -> None:
     names = ("time", "theta", "omega") if bare else ("time", *OUTPUTS)
-    verdict = judge(edit(_columns(cs_run, names)), start=["theta=80deg"])  # type: ignore[operator]
+    verdict = judge(edit(_columns(cs_run, names)), start={"theta": THETA0})  # type: ignore[operator]
     assert not verdict.passed
     assert reason in verdict.line, verdict.line
 
@@ -351,13 +420,13 @@ def test_a_parameter_not_given_is_named_as_a_person_set_it(fmu_path: Path, start
     """Only g/L enters the motion: the judge names the one of g and L that reads as set by hand."""
     run = fmpy_run(fmu_path, start_values={"theta": THETA0, **start})
     for names in (("time", *OUTPUTS), ("time", "theta", "omega")):
-        verdict = judge(_columns(run, names), start=["theta=80deg"])
+        verdict = judge(_columns(run, names), start={"theta": THETA0})
         assert not verdict.passed and named in verdict.line, verdict.line
 
 
 def test_the_fmus_own_solver_at_another_tolerance_fails_as_tolerance_not_passed(fmu_path: Path) -> None:
     run = fmpy_run(fmu_path, relative_tolerance=1e-4, start_values={"theta": THETA0, "solver": 1})
-    verdict = judge(run, start=["theta=80deg", "tolerance=1e-8", "solver=1"])
+    verdict = judge(run, start={"theta": THETA0, "tolerance": 1e-8, "solver": "1"})
     assert not verdict.passed
     assert "fits the FMU's dopri5 at tolerance ~1e-4, not the stated 1e-08" in verdict.line
     assert "did not pass the experiment's tolerance" in verdict.line
@@ -368,14 +437,14 @@ def test_a_mangled_value_in_model_exchange_is_named_as_such(fmu_path: Path) -> N
     run = fmpy_run(fmu_path, fmi_type="ModelExchange", relative_tolerance=1e-8, start_values={"theta": THETA0})
     edited = _columns(run)
     edited["theta"][400] += 1e-5
-    verdict = judge(edited, start=["theta=80deg", "tolerance=1e-8"], interface="ME")
+    verdict = judge(edited, start={"theta": THETA0, "tolerance": 1e-8}, interface="ME")
     assert not verdict.passed and "mangled value" in verdict.line and "CVODE" not in verdict.line, verdict.line
 
 
 def test_a_nan_in_an_exact_column_is_named(cs_run: np.ndarray) -> None:
     broken = _columns(cs_run)
     broken["theta_exact"][7] = np.nan
-    verdict = judge(broken, start=["theta=80deg"])
+    verdict = judge(broken, start={"theta": THETA0})
     assert not verdict.passed and "theta_exact is nan at t = 0.07 s (row 8" in verdict.line, verdict.line
 
 
@@ -387,5 +456,5 @@ def test_an_error_crossing_zero_beside_a_value_is_no_isolated_value(cs_run: np.n
     theta, omega = exact(THETA0, 0.0, 1.0, 9.81, t)
     error = 1e-7 * np.sin(2.0 * t + 0.3)  # an honest-looking error with many sign changes
     error[0] = 0.0
-    verdict = judge({"time": t, "theta": theta + error, "omega": omega}, start=["theta=80deg", "tolerance=1e-6"])
+    verdict = judge({"time": t, "theta": theta + error, "omega": omega}, start={"theta": THETA0, "tolerance": 1e-6})
     assert verdict.check("isolated values").status == "pass", verdict.check("isolated values").line

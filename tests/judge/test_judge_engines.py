@@ -33,7 +33,7 @@ pytestmark = pytest.mark.engines
 
 THETA0 = math.radians(80.0)
 STARTS = {"theta": THETA0, "L": 2.0}
-JUDGED_AS = ["theta=80deg", "L=2"]
+JUDGED_AS = {"theta": math.radians(80.0), "L": 2.0}
 
 
 def require(module: str) -> None:
@@ -50,9 +50,9 @@ def test_libcosim_fmi2_time_series_pass(fmu_path: Path, tmp_path: Path) -> None:
     assert run.returncode == 0, run.stderr[-2000:]
     verdict = judge(run.files["samples"], start=JUDGED_AS)
     assert verdict.passed, verdict.line
-    grid = verdict.check("time grid").figures
+    grid = verdict.check("time grid").numbers
     assert grid["start"] == 0.01 and grid["end"] == 10.0 and grid["rows"] == 1000
-    assert verdict.check("theta error").figures["largest"] < 1e-11
+    assert verdict.check("theta error").numbers["largest"] < 1e-11
 
 
 def test_libcosim_file_observer_is_judged_by_its_digits(fmu_path: Path, tmp_path: Path) -> None:
@@ -64,7 +64,7 @@ def test_libcosim_file_observer_is_judged_by_its_digits(fmu_path: Path, tmp_path
     verdict = judge(run.files["observer"], start=JUDGED_AS)
     if verdict.passed:  # a libcosim that prints enough digits
         return
-    assert verdict.check("diagnosis").figures["cause"] == "print precision", verdict.line
+    assert verdict.check("diagnosis").numbers["cause"] == "print precision", verdict.line
     assert "significant digits" in verdict.check("read").line
 
 
@@ -119,10 +119,10 @@ def test_an_fmu_error_under_ecos_never_passes(fmu_path: Path, tmp_path: Path) ->
     run = run_ecos(fmu_path, tmp_path, {"L": -1.0, "theta": THETA0})
     if run.returncode != 0 or "observer" not in run.files:
         return  # Ecos stopped the run itself
-    verdict = judge(run.files["observer"], start=["theta=80deg"])
+    verdict = judge(run.files["observer"], start={"theta": math.radians(80)})
     assert not verdict.passed
     assert verdict.check("bound").status == "fail"
-    assert verdict.check("diagnosis").figures["cause"] == "frozen"
+    assert verdict.check("diagnosis").numbers["cause"] == "frozen"
     assert "the FMU never advanced" in verdict.line
 
 
@@ -192,11 +192,11 @@ def test_container_of_two_pendulums_in_fmpy(fmu_path: Path, tmp_path: Path) -> N
     write_csv(tmp_path / "two_result.csv", result)
     with pytest.raises(ReadError, match="several instances"):
         judge(tmp_path / "two_result.csv")
-    first = judge(tmp_path / "two_result.csv", instance="p1", start=["theta=80deg"])
-    second = judge(tmp_path / "two_result.csv", instance="p2", start=["L=2"])
+    first = judge(tmp_path / "two_result.csv", instance="p1", start={"theta": math.radians(80)})
+    second = judge(tmp_path / "two_result.csv", instance="p2", start={"L": 2})
     assert first.passed, first.line
     assert second.passed, second.line
     assert first.columns["theta"] == "p1.theta" and second.columns["theta_exact"] == "p2.theta_exact"
-    mixed_up = judge(tmp_path / "two_result.csv", instance="p2", start=["theta=80deg"])
+    mixed_up = judge(tmp_path / "two_result.csv", instance="p2", start={"theta": math.radians(80)})
     assert not mixed_up.passed
-    assert np.isclose(mixed_up.check("exact columns").figures["fit"]["L"], 2.0, rtol=1e-9)
+    assert np.isclose(mixed_up.check("exact columns").numbers["fit"]["L"], 2.0, rtol=1e-9)

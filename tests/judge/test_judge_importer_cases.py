@@ -49,7 +49,7 @@ def test_fmi4j_times_one_ulp_from_the_clock_pass(h: float, degrees: float) -> No
     k = np.arange(1, run["time"].size, dtype=float)
     differ = np.mean((k - 1) * h + h != k * h)
     assert 0.2 < differ < 0.5   # about a third of the rows are one ulp off
-    verdict = judge(run, start=[f"theta={degrees}deg"])
+    verdict = judge(run, start={"theta": math.radians(degrees)})
     assert verdict.passed, verdict.line
     assert verdict.check("exact columns").status == "pass"
 
@@ -69,7 +69,7 @@ def cvode_run(fmu_path: Path) -> dict[str, np.ndarray]:
 
 
 def test_an_unedited_cvode_run_passes(cvode_run: dict[str, np.ndarray]) -> None:
-    verdict = judge(cvode_run, start=["tolerance=1e-8"], interface="ME")
+    verdict = judge(cvode_run, start={"tolerance": 1e-8}, interface="ME")
     assert verdict.passed, verdict.line
 
 
@@ -80,9 +80,9 @@ def test_one_value_moved_by_1e_6_at_5_s_fails(cvode_run: dict[str, np.ndarray]) 
     edited["theta"][500] += 1e-6
     error = edited["theta"] - edited["theta_exact"]
     assert error[500] > 0 > max(error[499], error[501])
-    verdict = judge(edited, start=["tolerance=1e-8"], interface="ME")
+    verdict = judge(edited, start={"tolerance": 1e-8}, interface="ME")
     check = verdict.check("isolated values")
-    assert check.status == "fail" and check.figures["at_time"] == pytest.approx(5.0), check.line
+    assert check.status == "fail" and check.numbers["at_time"] == pytest.approx(5.0), check.line
     assert verdict.line.startswith("FAIL (isolated values)")
 
 
@@ -104,7 +104,7 @@ def test_a_wild_value_anywhere_fails(cvode_run: dict[str, np.ndarray]) -> None:
         tried += 1
         near = max(abs(before), abs(after))
         edited[name][row] += -math.copysign(rng.uniform(4.0, 20.0) * near, before) - error[row]
-        verdict = judge(edited, start=["tolerance=1e-8"], interface="ME")
+        verdict = judge(edited, start={"tolerance": 1e-8}, interface="ME")
         assert verdict.check("isolated values").status == "fail", (name, row, verdict.line)
 
 
@@ -116,13 +116,13 @@ def test_a_model_exchange_file_judged_as_co_simulation_is_named(fmu_path: Path, 
                      stop_time=100.0 if solver == "CVode" else 10.0, output_interval=0.01, step_size=0.01,
                      output=OUTPUTS)
     data = {name: np.array(r[name]) for name in r.dtype.names}
-    verdict = judge(data, start=[f"tolerance={tolerance}"], fmu=fmu_path)
+    verdict = judge(data, start={"tolerance": tolerance}, fmu=fmu_path)
     assert not verdict.passed
     assert f"this is a Model Exchange run of {named}" in verdict.line, verdict.line
     assert "judge it with --interface ME" in verdict.line
-    assert verdict.check("diagnosis").figures["cause"] == "model exchange"
+    assert verdict.check("diagnosis").numbers["cause"] == "model exchange"
     if solver == "CVode":
-        assert judge(data, start=[f"tolerance={tolerance}"], interface="ME", fmu=fmu_path).passed
+        assert judge(data, start={"tolerance": tolerance}, interface="ME", fmu=fmu_path).passed
 
 
 def test_a_gzipped_csv_reads_as_the_csv(tmp_path: Path, cvode_run: dict[str, np.ndarray]) -> None:
@@ -134,7 +134,7 @@ def test_a_gzipped_csv_reads_as_the_csv(tmp_path: Path, cvode_run: dict[str, np.
     zipped.write_bytes(gzip.compress(plain.read_bytes()))
     a, b = read_result(plain), read_result(zipped)
     assert np.array_equal(a.time, b.time) and all(np.array_equal(a.values[k], b.values[k]) for k in a.values)
-    assert judge(zipped, start=["tolerance=1e-8"], interface="ME").passed
+    assert judge(zipped, start={"tolerance": 1e-8}, interface="ME").passed
     broken = tmp_path / "broken.csv.gz"
     broken.write_bytes(gzip.compress(plain.read_bytes())[:-40])
     with pytest.raises(Exception, match="cannot be uncompressed"):

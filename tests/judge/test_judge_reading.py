@@ -17,7 +17,7 @@ import pytest
 
 from pendulum_fmu.judge import ReadError, judge
 from pendulum_fmu.judge.experiment import make_experiment
-from pendulum_fmu.judge.fixed_step import identify_fixed_step
+from pendulum_fmu.judge.explain.fixed_step import identify_fixed_step
 from pendulum_fmu.judge.print_format import Format
 from pendulum_fmu.judge.reading import read_csv_bytes, read_result
 
@@ -255,9 +255,9 @@ def test_fmucheck_euler_with_an_extra_final_row(tmp_path: Path, last: str) -> No
     verdict = judge(_write_fmucheck(tmp_path / "fmucheck.csv", rows), interface="ME")
     grid = verdict.check("time grid")
     assert grid.status == "pass", grid.line
-    assert grid.figures["step"] == 0.01
+    assert grid.numbers["step"] == 0.01
     assert not verdict.passed
-    assert verdict.check("diagnosis").figures == {"cause": "fixed step", "method": "explicit Euler", "step": 0.01}
+    assert verdict.check("diagnosis").numbers == {"cause": "fixed step", "method": "explicit Euler", "step": 0.01}
     assert "fixed step" in verdict.line and "explicit Euler" in verdict.line
 
 
@@ -271,7 +271,7 @@ def test_a_fixed_step_method_is_recognised_on_100000_rows(symplectic: bool, part
     verdict = judge(data, interface="ME")
     seconds = time.perf_counter() - began
     print(f"judged 100,000 {name} rows in {seconds:.2f} s")
-    assert verdict.check("diagnosis").figures == {"cause": "fixed step", "method": name, "step": 0.01 / parts}
+    assert verdict.check("diagnosis").numbers == {"cause": "fixed step", "method": name, "step": 0.01 / parts}
     assert "fixed step" in verdict.line and name in verdict.line
     experiment, _ = make_experiment(None, "ME", None)
     found = identify_fixed_step(read_result(data), experiment, 0.01, 1.0)
@@ -331,7 +331,7 @@ def test_two_million_rows_judged(tmp_path: Path, fmu_path: Path) -> None:
     seconds = time.perf_counter() - began
     print(f"judged 1,000 rows in {small_seconds:.3f} s, 2,000,000 rows (CS) in {seconds:.2f} s")
     assert verdict.passed, verdict.line
-    assert verdict.check("read").figures["rows"] == 2_000_000
+    assert verdict.check("read").numbers["rows"] == 2_000_000
 
 
 @pytest.mark.slow

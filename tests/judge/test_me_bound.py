@@ -42,7 +42,7 @@ def test_propagation_formula_equals_finite_differences_of_the_exact_solution(orb
     d, m = sensitivity.energy_gaps(theta0, omega0, math.sqrt(c))
     period, kappa = sensitivity.period_and_kappa(d, m, math.sqrt(c))
     grid = np.linspace(0.0, period, sensitivity.GRID + 1)
-    _, _, p_theta, p_omega = sensitivity.periodic_part(_experiment(*ORBITS[orbit]), period, kappa, d, m, grid)
+    _, _, p_theta, p_omega = sensitivity.periodic_part(_experiment(*ORBITS[orbit]).problem, period, kappa, d, m, grid)
     rng = np.random.default_rng(7)
     for s, t in ((0.3 * period, 0.9 * period), (0.1 * period, 3.4 * period), (1.7 * period, 5.2 * period)):
         xs, xt = _state(*ORBITS[orbit], s), _state(*ORBITS[orbit], t)
@@ -124,9 +124,9 @@ def test_honest_run_passes_the_me_bound(name: str, method: str) -> None:
     verdict = judge(_run(method, problem, tolerance), start=problem.start(tolerance), interface="ME")
     assert verdict.passed, verdict.line
     bound = verdict.check("bound")
-    assert bound.status == "pass" and bound.figures["worst_ratio"] < 1.0
-    if math.isinf(bound.figures["linear_until"]):
-        assert bound.figures["growth"] > 1.0 and f"growth {bound.figures['growth']:.2g} at t" in bound.line
+    assert bound.status == "pass" and bound.numbers["worst_ratio"] < 1.0
+    if math.isinf(bound.numbers["linear_until"]):
+        assert bound.numbers["growth"] > 1.0 and f"growth {bound.numbers['growth']:.2g} at t" in bound.line
     else:  # the allowed energy error reaches the separatrix: said so
         assert "the allowed energy error reaches the separatrix: no value refused" in bound.line
 
@@ -142,7 +142,7 @@ def test_a_tolerance_100_times_looser_fails_the_me_bound(name: str, method: str)
     verdict = judge(_run(method, problem, 100 * tolerance), start=problem.start(tolerance), interface="ME")
     assert not verdict.passed
     bound = verdict.check("bound")
-    assert bound.status == "fail" and bound.figures["worst_ratio"] > 1.0, bound.line
+    assert bound.status == "fail" and bound.numbers["worst_ratio"] > 1.0, bound.line
 
 
 def test_the_line_says_why_the_error_is_allowed() -> None:
@@ -151,7 +151,7 @@ def test_the_line_says_why_the_error_is_allowed() -> None:
     verdict = judge(_run("DOP853", problem, tolerance), start=problem.start(tolerance), interface="ME")
     line = verdict.check("bound").line
     assert "the period's sensitivity to the energy (phase drift)" in line and "kappa = -3.97e+03" in line
-    growth_time = verdict.check("bound").figures["growth_time"] + problem.start_time
+    growth_time = verdict.check("bound").numbers["growth_time"] + problem.start_time
     assert f"at t = {growth_time:.6g} s" in line
 
 

@@ -23,7 +23,7 @@ import pyarrow.parquet as pq
 import pytest
 
 from pendulum_fmu.cli.main import main
-from pendulum_fmu.judge.standard_files import judge_with_experiment
+from pendulum_fmu.judge import judge
 from pendulum_fmu.output.experiment_record import (
     FORMAT,
     PARQUET_KEY,
@@ -158,7 +158,7 @@ def test_a_parquet_file_from_before_records_is_read_by_its_flat_keys(tmp_path: P
     found = read_record(out)
     assert found is not None and "amplitude_rad" in found.source
     assert (found.record.theta0, found.record.interface, found.record.solver) == (math.radians(85.0), "ME", "cvode")
-    verdict, _ = judge_with_experiment(out, fmu=fmu_path)
+    verdict = judge(out, fmu=fmu_path)
     assert verdict.passed and verdict.experiment.interface == "ME", verdict.line
 
 
@@ -182,7 +182,8 @@ def test_a_record_that_cannot_be_read_is_one_line(tmp_path: Path, fmu_path: Path
         main(["judge", str(out), "--fmu", str(fmu_path)])
     captured = capsys.readouterr()
     assert exit_code.value.code == 2
-    assert captured.err.count("\n") == 1 and "experiment record is unreadable" in captured.err, captured.err
+    assert captured.err.count("\n") == 1, captured.err
+    assert "argument RESULT: its experiment record is unreadable" in captured.err, captured.err  # the field result
     assert "Traceback" not in captured.err
     sidecar_of(out).write_text(json.dumps({"format": FORMAT, "file": "other.csv", "experiment": _record().to_json()}))
     with pytest.raises(SystemExit) as exit_code:
@@ -195,8 +196,9 @@ def test_start_overrides_the_record(tmp_path: Path, fmu_path: Path, capsys: pyte
     out = tmp_path / "run.csv"
     assert main(["simulate", "-a", "120", "-p", "2", "-o", str(out), "--fmu", str(fmu_path)]) == 0
     capsys.readouterr()
-    verdict, settings = judge_with_experiment(out, start=["theta=121deg"], fmu=fmu_path)
-    assert settings is not None and settings.source == str(sidecar_of(out))
+    verdict = judge(out, start={"theta": math.radians(121)}, fmu=fmu_path)
+    stated = verdict.experiment_file
+    assert stated is not None and stated.source == str(sidecar_of(out))
     assert not verdict.passed and "theta = " in verdict.line
     line = verdict.check("experiment").line
     assert "given: theta; from run.csv.experiment.json: " in line and "omega" in line and "tolerance" in line
@@ -212,7 +214,7 @@ def test_a_tolerance_below_the_floor_is_recorded_as_used(tmp_path: Path, fmu_pat
     assert "tolerance 1e-16 is below 1e-14" in printed and "the run uses tolerance 1e-14" in printed
     found = read_record(out)
     assert found is not None and (found.record.tolerance, found.record.tolerance_asked) == (1e-14, 1e-16)
-    verdict, _ = judge_with_experiment(out, fmu=fmu_path)
+    verdict = judge(out, fmu=fmu_path)
     assert verdict.passed and "tol = 1e-14" in verdict.check("bound").line, verdict.line
 
 

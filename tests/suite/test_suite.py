@@ -23,7 +23,7 @@ from scipy.special import ellipj, ellipk
 
 from junit_schema import check as check_junit
 from junit_schema import properties
-from pendulum_fmu.judge.experiment import read_ref_opt
+from pendulum_fmu.judge.experiment_files import read_ref_opt
 from pendulum_fmu.suite.cases import SPLIT_STEPS, all_cases, read_data, select, split_cases
 
 REPO = Path(__file__).resolve().parents[2]

@@ -81,16 +81,16 @@ def write_run(fmu: Path, rows: int, path: Path) -> Path:
 
 
 CHILD = """\
-import json, resource, sys, time
+import json, math, resource, sys, time
 from pendulum_fmu.judge import judge
 from pendulum_fmu.judge.reading import read_result
 warm, path, interface, fmu = sys.argv[1:5]
-judge(warm, start=["theta=75deg"], interface=interface, fmu=fmu)
+judge(warm, start={"theta": math.radians(75.0)}, interface=interface, fmu=fmu, read_experiment_file=False)
 began = time.perf_counter()
 read_result(path)
 read_s = time.perf_counter() - began
 began = time.perf_counter()
-verdict = judge(path, start=["theta=75deg"], interface=interface, fmu=fmu)
+verdict = judge(path, start={"theta": math.radians(75.0)}, interface=interface, fmu=fmu, read_experiment_file=False)
 judge_s = time.perf_counter() - began
 print(json.dumps({"read_s": read_s, "judge_s": judge_s, "passed": verdict.passed, "line": verdict.line,
                   "peak_rss_mb": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024}))

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import math
 import sys
 from pathlib import Path
 
@@ -91,29 +92,63 @@ def run(args: argparse.Namespace) -> int:
         print(f"pendulum-fmu judge: {len(args.result)} results given: judge one at a time (several only with "
               "--system split)", file=sys.stderr)
         return 2
-    args.result = args.result[0]
-    from pendulum_fmu.judge import ReadError
+    from pendulum_fmu.judge import ReadError, judge
+    from pendulum_fmu.judge.cross_check_verdict import outcome, write_verdict_file
     from pendulum_fmu.judge.report import lines, write_json, write_plot
-    from pendulum_fmu.judge.standard_files import judge_with_experiment, outcome, write_verdict_file
 
+    start = start_values(args.start)
     try:
-        verdict, settings = judge_with_experiment(args.result, start=args.start, interface=args.interface,
-                                                  instance=args.instance, step=args.step, fmu=args.fmu)
+        verdict = judge(args.result[0], start=start, interface=args.interface, instance=args.instance,
+                        step=args.step, fmu=args.fmu)
     except ReadError as error:
         print(f"pendulum-fmu judge: unreadable: {error}", file=sys.stderr)
         if args.cross_check_verdict:
             write_verdict_file(args.cross_check_verdict, outcome(None))
         return 2
-    if settings is not None:
-        print(f"{'experiment file':<16s}{'INFO':<6s}{settings.describe()}")
+    if verdict.experiment_file is not None:
+        print(f"{'experiment file':<16s}{'INFO':<6s}{verdict.experiment_file.describe()}")
     print("\n".join(lines(verdict)))
     if args.cross_check_verdict:
         write_verdict_file(args.cross_check_verdict, outcome(verdict))
     if args.json:
         write_json(verdict, args.json)
     if args.plot:
-        write_plot(verdict, args.result, args.plot)
+        write_plot(verdict, args.plot)
     return verdict.exit_code
+
+
+def start_values(pairs: list[str]) -> dict[str, float | str]:
+    """``--start NAME=VALUE`` as the judge's typed start values: ``theta=80deg`` in radians.
+
+    Raises
+    ------
+    UsageError
+        A pair without ``=``, an unknown name, a value that is not a number or is out of range
+        (naming ``start``; the judge checks the same names and ranges).
+    """
+    from pendulum_fmu.errors import UsageError
+    from pendulum_fmu.judge.experiment import NAMES, start_value_fault
+
+    values: dict[str, float | str] = {}
+    for pair in pairs:
+        name, sep, raw = (part.strip() for part in pair.partition("="))
+        if not sep:
+            raise UsageError("start", f"expected NAME=VALUE, got {pair!r}")
+        if name not in NAMES:
+            raise UsageError("start", f"unknown name {name!r} (known: {', '.join(NAMES)})")
+        if name == "solver":
+            values[name] = raw
+            continue
+        text, scale = (raw[:-3], math.pi / 180.0) if name == "theta" and raw.endswith("deg") else (raw, 1.0)
+        try:
+            number = float(text) * scale
+        except ValueError:
+            raise UsageError("start", f"{name}={raw!r} is not a number") from None
+        fault = start_value_fault(name, number)
+        if fault is not None:
+            raise UsageError("start", f"{name}={raw!r}: {fault}")
+        values[name] = number
+    return values
 
 
 def _split_sources(items: list[str]) -> list[Path]:

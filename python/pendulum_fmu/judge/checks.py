@@ -75,7 +75,8 @@ def reference(result: Result, experiment: Experiment) -> Reference:
     from pendulum_fmu.fmu.library import exact
 
     t = result.time - experiment.start_time
-    theta, omega = exact(experiment.theta0, experiment.omega0, experiment.L, experiment.g, t)
+    p = experiment.problem
+    theta, omega = exact(p.theta0, p.omega0, p.L, p.g, t)
     if experiment.interface != "ME":
         return Reference(t, theta, omega)
     return Reference(t, theta, omega, sensitivity.allowance(t, theta, omega, experiment, ME_FACTOR))
@@ -207,7 +208,7 @@ def time_grid(result: Result, step: float | None = None) -> tuple[Check, float |
 
 def slopes(ref: Reference, experiment: Experiment) -> dict[str, np.ndarray]:
     """d/dt of the exact theta and omega (for the effect of a rounded time)."""
-    return {"theta": ref.omega, "omega": -(experiment.g / experiment.L) * np.sin(ref.theta)}
+    return {"theta": ref.omega, "omega": -(experiment.problem.g / experiment.problem.L) * np.sin(ref.theta)}
 
 
 def print_rounding(result: Result, ref: Reference, experiment: Experiment, column: str) -> np.ndarray:
@@ -424,7 +425,7 @@ def bound(name: str, ref: Reference, experiment: Experiment) -> np.ndarray:
     if name == "theta":
         scale = np.maximum(1.0, np.abs(ref.theta))
     else:
-        scale = np.maximum(experiment.w0, np.abs(ref.omega))
+        scale = np.maximum(experiment.problem.w0, np.abs(ref.omega))
     return CS_FACTOR * experiment.tolerance * scale
 
 
@@ -437,7 +438,7 @@ def bound_check(result: Result, ref: Reference, experiment: Experiment, errors: 
         allowance = me_allowance(ref, experiment)
         what = f"the ME bound {ME_FACTOR:g} tol x growth"
         why = f" ({allowance.describe(experiment.start_time)})"
-        extra = allowance.figures()
+        extra = allowance.numbers()
     if not errors:
         return Check("bound", "info", f"no theta or omega column: {what} not applied", {})
     worst_ratio, worst = -1.0, ("", 0)
@@ -469,7 +470,7 @@ def _allowed_there(result: Result, ref: Reference, experiment: Experiment, name:
     parts = []
     if experiment.interface == "CS":
         value = float(abs(getattr(ref, name)[k]))
-        unit, natural = ("rad", 1.0) if name == "theta" else ("rad/s", experiment.w0)
+        unit, natural = ("rad", 1.0) if name == "theta" else ("rad/s", experiment.problem.w0)
         if value > natural:
             parts.append(f"the bound grows with |{name}_e| = {value:.4g} {unit} there: 100 tol |{name}_e| = "
                          f"{allowed:.1e}")

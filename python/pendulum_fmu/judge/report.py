@@ -59,18 +59,21 @@ def _zero_ticks(ax: Any, time: np.ndarray, error: np.ndarray, color: str) -> Non
                 transform=ax.get_xaxis_transform(), label="exactly 0 (ticks on the bottom edge)")
 
 
-def write_plot(verdict: Verdict, data: Any, path: Path) -> None:
+def write_plot(verdict: Verdict, path: Path) -> None:
     """|theta - exact| and |omega - exact| over time on a log scale, with the bound drawn
     (and the exact columns' differences when they are off).
 
     Parameters
     ----------
     verdict : Verdict
-        The judged result's verdict (its experiment fixes the reference and the bound).
-    data : Any
-        The same input the verdict was made from (re-read for the series).
+        The judged result's verdict: its series are drawn (nothing is read or computed again).
     path : Path
         The PNG to write.
+
+    Raises
+    ------
+    ValueError
+        A verdict without its series (one not made by :func:`pendulum_fmu.judge.judge`).
     """
     import matplotlib
 
@@ -78,24 +81,24 @@ def write_plot(verdict: Verdict, data: Any, path: Path) -> None:
     import matplotlib.pyplot as plt
 
     from pendulum_fmu.judge import checks
-    from pendulum_fmu.judge.reading import read_result
 
-    result = read_result(data, verdict.instance)
-    ref = checks.reference(result, verdict.experiment)
-    errors = checks.state_errors(result, ref)
+    series = verdict.series
+    if series is None:
+        raise ValueError("the verdict carries no series to plot")
+    errors = series.errors
     fig, axes = plt.subplots(len(errors) or 1, 1, figsize=(9, 3.2 * max(1, len(errors))), sharex=True, squeeze=False)
     for ax, (name, error) in zip(axes[:, 0], errors.items(), strict=False):
-        ax.semilogy(result.time, _log_values(np.abs(error)), lw=1, label=f"|{name} - {name}_exact|")
-        _zero_ticks(ax, result.time, np.abs(error), "tab:blue")
+        ax.semilogy(series.time, _log_values(np.abs(error)), lw=1, label=f"|{name} - {name}_exact|")
+        _zero_ticks(ax, series.time, np.abs(error), "tab:blue")
         me = verdict.experiment.interface == "ME"
         factor = f"{checks.ME_FACTOR:g} tol" if me else f"{checks.CS_FACTOR:g} tol"
         scale = "max(1, |theta_e|)" if name == "theta" else "max(w0, |omega_e|)"
-        ax.semilogy(result.time, checks.bound(name, ref, verdict.experiment), "k--", lw=1.2,
+        ax.semilogy(series.time, series.allowed_error[name], "k--", lw=1.2,
                     label=f"bound {factor} {scale}" + (" x growth" if me else ""))
         exact_name = f"{name}_exact"
-        mismatch = checks.exact_mismatch(result, ref, verdict.experiment).get(exact_name)
-        if mismatch is not None and np.any(mismatch[0] > mismatch[1]):
-            ax.semilogy(result.time, _log_values(mismatch[0]), color="tab:red", lw=1,
+        difference = series.exact_column_differences.get(exact_name)
+        if difference is not None and np.any(difference[0] > difference[1]):
+            ax.semilogy(series.time, _log_values(difference[0]), color="tab:red", lw=1,
                         label=f"|{exact_name} column - pendulum_fmu.exact|")
         ax.set_ylabel(f"{name} error ({'rad' if name == 'theta' else 'rad/s'})")
         ax.grid(True, which="major", alpha=0.3)
@@ -104,10 +107,9 @@ def write_plot(verdict: Verdict, data: Any, path: Path) -> None:
         axes[0, 0].text(0.5, 0.5, "no theta or omega column", ha="center", transform=axes[0, 0].transAxes)
     axes[-1, 0].set_xlabel("time (s)")
     verdict_word = "PASS" if verdict.passed else "FAIL"
-    e = verdict.experiment
+    e, problem = verdict.experiment, verdict.experiment.problem
     fig.suptitle(f"{Path(verdict.source).name}: {verdict_word}  ({e.interface}, tol {e.tolerance:g}, "
-                 f"theta0 {math.degrees(e.theta0):.4g} deg, L {e.L:g} m, g {e.g:g} m/s$^2$)", fontsize=10)
+                 f"theta0 {problem.theta0_deg:.4g} deg, L {problem.L:g} m, g {problem.g:g} m/s$^2$)", fontsize=10)
     fig.tight_layout()
     _replace_atomically(path, lambda p: fig.savefig(p, dpi=110, format="png"))
     plt.close(fig)
-

@@ -44,6 +44,7 @@ import numpy as np
 from scipy.special import ellipe, ellipkm1
 
 from pendulum_fmu.judge.verdict import Experiment
+from pendulum_fmu.spec import InitialValueProblem
 
 GRID = 8192
 """Points over one period for p and the cumulative integrals (linear interpolation between)."""
@@ -120,7 +121,7 @@ class Allowance:
                      "no value refused")
         return text
 
-    def figures(self) -> dict[str, float | str]:
+    def numbers(self) -> dict[str, float | str]:
         """The scalar figures, JSON-ready."""
         return {"regime": self.regime, "period": self.period, "kappa": self.kappa, "growth": self.largest_growth,
                 "growth_time": self.at_time, "cause": self.cause, "linear_until": self.linear_until}
@@ -164,7 +165,7 @@ def flow_and_normal(theta: np.ndarray, omega: np.ndarray, c: float) -> tuple[np.
     return omega, -c_sin, c_sin
 
 
-def periodic_part(experiment: Experiment, period: float, kappa: float, d: float, m: float,
+def periodic_part(problem: InitialValueProblem, period: float, kappa: float, d: float, m: float,
                   tau: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """theta, omega and p = q - kappa tau f at ``tau`` within [0, T].
 
@@ -174,7 +175,7 @@ def periodic_part(experiment: Experiment, period: float, kappa: float, d: float,
     """
     from pendulum_fmu.fmu.library import exact
 
-    e = experiment
+    e = problem
     c = e.g / e.L
     w0 = math.sqrt(c)
     gap = abs(d) if d < 0 else min(d, m)
@@ -275,10 +276,10 @@ def allowance(t: np.ndarray, theta: np.ndarray, omega: np.ndarray, experiment: E
     -------
     Allowance
     """
-    e = experiment
+    e = experiment.problem
     c = e.g / e.L
     w0 = math.sqrt(c)
-    unit = factor * e.tolerance
+    unit = factor * experiment.tolerance
     rate = unit * w0 / (2.0 * math.pi)
     scale_theta = np.maximum(1.0, np.abs(theta))
     scale_omega = np.maximum(w0, np.abs(omega))

@@ -67,10 +67,10 @@ def judge_pendulum(case: Case, csv: Path, fmu: Path | None) -> Judged:
     """
     from pendulum_fmu.judge import judge
 
-    start = [f"{name}={value!r}" for name, value in case.start_values.items()]
-    start += [f"tolerance={case.tolerance!r}", f"startTime={case.start!r}"]
-    verdict = judge(csv, start=start, interface="ME" if case.interface == "me" else "CS", step=case.interval, fmu=fmu)
-    figures = {check.name: check.figures for check in verdict.checks}
+    start = {**case.start_values, "tolerance": case.tolerance, "startTime": case.start}
+    verdict = judge(csv, start=start, interface="ME" if case.interface == "me" else "CS", step=case.interval, fmu=fmu,
+                    read_experiment_file=False)
+    figures = {check.name: check.numbers for check in verdict.checks}
     error = figures.get("theta error", {}).get("largest")
     ratio = figures.get("bound", {}).get("worst_ratio")
     properties = {"omega_error": figures.get("omega error", {}).get("largest"), "tolerance": case.tolerance}

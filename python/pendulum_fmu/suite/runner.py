@@ -11,7 +11,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Literal
 
-from pendulum_fmu.judge.standard_files import Outcome
+from pendulum_fmu.judge.cross_check_verdict import Outcome
 from pendulum_fmu.suite.adapters import Adapter
 from pendulum_fmu.suite.cases import Case
 from pendulum_fmu.suite.experiment import Run
@@ -165,7 +165,7 @@ def run_suite(adapter: Adapter, cases: list[Case], out: Path, timeout: float = D
     results are judged one by one, in order, in this process. ``fmus``: ``Pendulum.fmu`` by FMI
     major version, instead of the one the package finds.
     """
-    from pendulum_fmu.judge.standard_files import write_verdict_file
+    from pendulum_fmu.judge.cross_check_verdict import write_verdict_file
 
     found = {key: _fmu_for(case, fmus or {}) for case in cases
              for key in [(case.kind, case.fmi_major)]}  # found (or built) once, before any run starts

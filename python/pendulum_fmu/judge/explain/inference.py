@@ -12,10 +12,11 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Any, cast
 
 import numpy as np
 
-from pendulum_fmu.judge import fixed_step
+from pendulum_fmu.judge.explain import fixed_step
 from pendulum_fmu.judge.reading import Result
 from pendulum_fmu.judge.verdict import Experiment
 
@@ -40,9 +41,9 @@ class Fit:
         1e-9 relative, or 10 times the columns' print ``resolution`` (relative)."""
         out = []
         relative = max(1e-9, 10 * resolution)
-        for name, fitted, stated in (("theta", self.theta0, experiment.theta0),
-                                     ("omega", self.omega0, experiment.omega0),
-                                     ("L", self.L, experiment.L)):
+        for name, fitted, stated in (("theta", self.theta0, experiment.problem.theta0),
+                                     ("omega", self.omega0, experiment.problem.omega0),
+                                     ("L", self.L, experiment.problem.L)):
             if abs(fitted - stated) > relative * max(1.0, abs(stated)):
                 out.append(f"{name} = {fitted:.10g} (not {stated:.10g})")
         return out
@@ -64,16 +65,16 @@ def fit_parameters(t: np.ndarray, columns: dict[str, np.ndarray], experiment: Ex
     omegas = [v for k, v in columns.items() if k.startswith("omega")]
     if not thetas and not omegas or t.size < 10:  # three unknowns: too few rows fit anything
         return None
-    theta0 = float(thetas[0][0]) if thetas and t[0] == 0 else experiment.theta0
-    omega0 = float(omegas[0][0]) if omegas and t[0] == 0 else experiment.omega0
-    g = experiment.g
+    theta0 = float(thetas[0][0]) if thetas and t[0] == 0 else experiment.problem.theta0
+    omega0 = float(omegas[0][0]) if omegas and t[0] == 0 else experiment.problem.omega0
+    g = experiment.problem.g
 
     def residuals(theta_start: float, omega_start: float, length: np.ndarray | float, every: int = 1) -> np.ndarray:
         theta, omega = exact(theta_start, omega_start, np.atleast_1d(length)[:, None], g, t[::every])
-        parts = [theta - v[::every] for v in thetas] + [(omega - v[::every]) / experiment.w0 for v in omegas]
+        parts = [theta - v[::every] for v in thetas] + [(omega - v[::every]) / experiment.problem.w0 for v in omegas]
         return np.concatenate(parts, axis=-1)
 
-    lengths = experiment.L * np.geomspace(1e-2, 1e2, 481)
+    lengths = experiment.problem.L * np.geomspace(1e-2, 1e2, 481)
     every = max(1, t.size // SCAN_ROWS)
     with np.errstate(all="ignore"):
         scan = np.nanmax(np.abs(residuals(theta0, omega0, lengths, every)), axis=-1)
@@ -86,15 +87,15 @@ def fit_parameters(t: np.ndarray, columns: dict[str, np.ndarray], experiment: Ex
             r = residuals(float(x[0]), float(x[1]), math.exp(float(x[2])))[0]
         return np.where(np.isfinite(r), r, 1e3)
 
-    solved = least_squares(vector, start, x_scale=np.array([1.0, experiment.w0, 1.0]), xtol=1e-15, ftol=1e-15,
+    solved = least_squares(vector, start, x_scale=np.array([1.0, experiment.problem.w0, 1.0]), xtol=1e-15, ftol=1e-15,
                            gtol=1e-15, max_nfev=200)
     theta_f, omega_f, log_l = (float(v) for v in solved.x)
     r = vector(solved.x)
-    scaled = np.concatenate([r[: len(thetas) * t.size], r[len(thetas) * t.size:] * experiment.w0])
+    scaled = np.concatenate([r[: len(thetas) * t.size], r[len(thetas) * t.size:] * experiment.problem.w0])
     return Fit(theta_f, omega_f, math.exp(log_l), g, float(np.max(np.abs(scaled))))
 
 
-# --- fixed-step methods: judge/fixed_step.py (a prefix rerun, then every row at once) -----------
+# --- fixed-step methods: explain/fixed_step.py (a prefix rerun, then every row at once) ---------
 
 identify_fixed_step = fixed_step.identify_fixed_step
 FixedStep = fixed_step.FixedStep
@@ -116,9 +117,8 @@ def cvode_errors(fmu: Path, result: Result, experiment: Experiment, tolerances: 
     for tol in tolerances:
         run = simulate_fmu(str(fmu), fmi_type="ModelExchange", solver="CVode", relative_tolerance=tol,
                            start_time=start, stop_time=stop, output_interval=interval, output=["theta"],
-                           start_values={"theta": experiment.theta0, "omega": experiment.omega0,
-                                         "L": experiment.L, "g": experiment.g})
-        theta, _ = exact(experiment.theta0, experiment.omega0, experiment.L, experiment.g, run["time"] - start)
+                           start_values=experiment.problem.start_values())
+        theta, _ = exact(*_arguments(experiment), run["time"] - start)
         out.append(float(np.max(np.abs(run["theta"] - theta))))
     return out
 
@@ -135,8 +135,7 @@ def cvode_agreement(fmu: Path, result: Result, experiment: Experiment) -> float 
     interval = (stop - float(result.time[0])) / max(1, result.rows - 1)
     run = simulate_fmu(str(fmu), fmi_type="ModelExchange", solver="CVode", relative_tolerance=experiment.tolerance,
                        start_time=start, stop_time=stop, output_interval=interval, output=["theta"],
-                       start_values={"theta": experiment.theta0, "omega": experiment.omega0,
-                                     "L": experiment.L, "g": experiment.g})
+                       start_values=experiment.problem.start_values())
     if run.size != result.rows or not np.allclose(run["time"], result.time, rtol=1e-9, atol=1e-9 * interval):
         return None
     return float(np.max(np.abs(run["theta"] - result.values["theta"])))
@@ -159,11 +158,13 @@ def fmu_errors(fmu: Path, result: Result, experiment: Experiment, tolerances: li
     """Largest |theta - exact| of the FMU's own Co-Simulation solver at each tolerance, on the
     file's output step and span (from the start)."""
     from pendulum_fmu.fmu.runner import FmuRunner
-    from pendulum_fmu.spec import Method, Pendulum, TimeGrid
+    from pendulum_fmu.spec import Method, TimeGrid
 
     span = float(result.time[-1]) - experiment.start_time
     interval = (float(result.time[-1]) - float(result.time[0])) / max(1, result.rows - 1)
-    problem = Pendulum(experiment.theta0, experiment.omega0, experiment.L, experiment.g)
+    # the runner reads start_values() and small_angle_period, which the problem has; the cast
+    # goes once the runner's signature names InitialValueProblem
+    problem = cast(Any, experiment.problem)
     grid = TimeGrid(stop=span, unit="s", output_interval=interval)
     solver = solver_name(experiment.solver)
     with FmuRunner(fmu) as runner:
@@ -179,3 +180,9 @@ def effective_tolerance(error: float, tolerances: list[float], errors: list[floa
     if error <= 0 or not (pairs[0][0] <= error <= pairs[-1][0]) or len(pairs) < 2:
         return None
     return float(10 ** np.interp(math.log10(error), logs_e, logs_t))
+
+
+def _arguments(experiment: Experiment) -> tuple[float, float, float, float]:
+    """theta0, omega0, L, g: the problem as ``pendulum_fmu.exact`` takes it."""
+    p = experiment.problem
+    return p.theta0, p.omega0, p.L, p.g

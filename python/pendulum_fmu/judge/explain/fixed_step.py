@@ -145,10 +145,10 @@ def step_mismatch(result: Result, method: str, parts: int, c: float, steps: np.n
 
 def _rerun(method: str, parts: int, experiment: Experiment, steps: np.ndarray, rows: int) -> np.ndarray:
     """theta and omega (rows x 2) of ``method`` run step by step from the start values."""
-    c = experiment.g / experiment.L
+    c = experiment.problem.g / experiment.problem.L
     out = np.empty((rows, 2))
-    theta: Vector = experiment.theta0
-    omega: Vector = experiment.omega0
+    theta: Vector = experiment.problem.theta0
+    omega: Vector = experiment.problem.omega0
     out[0] = theta, omega
     for k in range(1, rows):
         theta, omega = advance(method, theta, omega, float(steps[k - 1]), parts, c)
@@ -179,11 +179,12 @@ def identify_fixed_step(result: Result, experiment: Experiment, h: float, error:
         return None
     if result.time[0] != experiment.start_time:
         return None
-    c = experiment.g / experiment.L
+    c = experiment.problem.g / experiment.problem.L
     steps = row_steps(result.time, h)
     both = len(names) == 2
     prefix = min(result.rows, PREFIX_ROWS + 1)
-    exact_theta, exact_omega = exact(experiment.theta0, experiment.omega0, experiment.L, experiment.g,
+    p = experiment.problem
+    exact_theta, exact_omega = exact(p.theta0, p.omega0, p.L, p.g,
                                      result.time[:prefix] - experiment.start_time)
     truth = {"theta": exact_theta, "omega": exact_omega}
     with np.errstate(invalid="ignore"):

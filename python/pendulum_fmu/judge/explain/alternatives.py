@@ -17,7 +17,7 @@ from typing import Any
 
 import numpy as np
 
-from pendulum_fmu.judge.inference import Fit, fit_parameters
+from pendulum_fmu.judge.explain.inference import Fit, fit_parameters
 from pendulum_fmu.judge.verdict import Experiment
 
 Columns = dict[str, np.ndarray]
@@ -40,13 +40,13 @@ class Explanation:
         ``degrees``, ``startTime``, ``shift``, ``clock`` or ``parameters``.
     line : str
         The reason, for the verdict line.
-    figures : dict
+    numbers : dict
         The fitted values, JSON-ready.
     """
 
     cause: str
     line: str
-    figures: dict[str, Any] = field(default_factory=dict)
+    numbers: dict[str, Any] = field(default_factory=dict)
 
 
 def solution(experiment: Experiment, tau: np.ndarray, names: list[str], theta0: float | None = None,
@@ -56,9 +56,9 @@ def solution(experiment: Experiment, tau: np.ndarray, names: list[str], theta0: 
     from pendulum_fmu.fmu.library import exact
 
     with np.errstate(all="ignore"):
-        theta, omega = exact(experiment.theta0 if theta0 is None else theta0,
-                             experiment.omega0 if omega0 is None else omega0,
-                             experiment.L if length is None else length, experiment.g, tau)
+        theta, omega = exact(experiment.problem.theta0 if theta0 is None else theta0,
+                             experiment.problem.omega0 if omega0 is None else omega0,
+                             experiment.problem.L if length is None else length, experiment.problem.g, tau)
     return {name: theta if name.startswith("theta") else omega for name in names}
 
 
@@ -71,7 +71,7 @@ def _newton(columns: Columns, experiment: Experiment, times: Callable[[float], n
     """The p for which columns = exact(times(p)) in least squares (Gauss-Newton: p += sum(r d) /
     sum(d d), d = x'(times(p)) times'(p); omega weighted by 1/w0)."""
     names = list(columns)
-    c = experiment.g / experiment.L
+    c = experiment.problem.g / experiment.problem.L
     p = start
     for _ in range(NEWTON_STEPS):
         tau = times(p)
@@ -81,7 +81,7 @@ def _newton(columns: Columns, experiment: Experiment, times: Callable[[float], n
         top = bottom = 0.0
         for name in names:
             key = "theta" if name.startswith("theta") else "omega"
-            weight = 1.0 if key == "theta" else 1.0 / experiment.w0 ** 2
+            weight = 1.0 if key == "theta" else 1.0 / experiment.problem.w0 ** 2
             d = rate[key] * dtau
             r = columns[name] - at[key]
             ok = np.isfinite(d) & np.isfinite(r)
@@ -175,10 +175,10 @@ def name_parameters(fit: Fit, experiment: Experiment, relative: float) -> list[s
     length_entry = next((c for c in changed if c.startswith("L = ")), None)
     if length_entry is None:
         return changed
-    gravity = experiment.g * experiment.L / fit.L
+    gravity = experiment.problem.g * experiment.problem.L / fit.L
     known = any(abs(gravity - k) <= max(relative, 1e-9) * k for k in KNOWN_GRAVITIES)
     if known or digits(gravity, max(relative, 1e-12)) < digits(fit.L, max(relative, 1e-12)):
-        named = f"g = {gravity:.10g} (not {experiment.g:.10g})"
+        named = f"g = {gravity:.10g} (not {experiment.problem.g:.10g})"
         return [named if c is length_entry else c for c in changed]
     return changed
 

@@ -1,4 +1,5 @@
-"""What fmpy's cross-check validation says of a result: its band of 10 % of each signal's range.
+"""What fmpy's cross-check validation says of a result: a band of 10 % of each signal's range
+around the reference, the check called ``fmpy band``.
 
 fmpy's ``fmpy.cross_check.validate_result`` (the rule of the FMI cross-check, 9.2.5) resamples
 the reference to ``SAMPLES`` equally spaced times from the first to the last reference time,
@@ -87,7 +88,7 @@ def outside_fraction(t: np.ndarray, y: np.ndarray, t_ref: np.ndarray, y_ref: np.
     return outside_fractions(t, t_ref, {"y": (y, y_ref)})["y"]
 
 
-def band_check(result: Result, ref: Reference) -> Check:
+def fmpy_validation_check(result: Result, ref: Reference) -> Check:
     """fmpy's cross-check band, with the exact solution at the file's times as the reference.
 
     Every variable of the file is compared (theta and omega with the exact theta and omega,

@@ -1,7 +1,7 @@
 """Why theta and omega are beyond the bound: what reproduces them.
 
 In order: a frozen FMU, a print too coarse for the bound, a fixed-step method (Model Exchange),
-an alternative question the values answer (:mod:`pendulum_fmu.judge.alternatives`), for a
+an alternative question the values answer (:mod:`pendulum_fmu.judge.explain.alternatives`), for a
 file judged as Co-Simulation a Model Exchange run that reproduces it (a fixed-step method,
 CVODE at the tolerance), a tolerance other than the experiment's (the FMU's own solver or
 CVODE rerun at decades of tolerance).
@@ -14,7 +14,8 @@ from pathlib import Path
 import numpy as np
 
 from pendulum_fmu.fmu.library import exact
-from pendulum_fmu.judge import alternatives, checks, inference
+from pendulum_fmu.judge import checks
+from pendulum_fmu.judge.explain import alternatives, inference
 from pendulum_fmu.judge.reading import Result
 from pendulum_fmu.judge.verdict import Check, Experiment
 
@@ -53,7 +54,7 @@ def diagnose(result: Result, ref: checks.Reference, experiment: Experiment, erro
     worst = max(float(np.max(np.abs(e))) for e in errors.values())
     theta_growth = checks.describe_growth(checks.growth(ref.t, next(iter(errors.values()))))
     if explained is not None and explained.cause == "parameters":
-        f = explained.figures
+        f = explained.numbers
         refit = checks.Reference(ref.t, *exact(f["theta0"], f["omega0"], f["L"], f["g"], ref.t), ref.accumulation)
         against = max(float(np.max(np.abs(e))) for e in checks.state_errors(result, refit).values())
         return Check("diagnosis", "info", f"a different problem, solved to {against:.1e} against its own exact "
@@ -86,7 +87,7 @@ def diagnose(result: Result, ref: checks.Reference, experiment: Experiment, erro
     if found_alternative is not None:
         explanation, _ = found_alternative
         return Check("diagnosis", "info", f"theta and omega: {explanation.line}",
-                     {"cause": explanation.cause, **explanation.figures})
+                     {"cause": explanation.cause, **explanation.numbers})
     if experiment.interface == "CS":
         as_me = _model_exchange_run(result, experiment, errors, h, fmu, worst)
         if as_me is not None:
@@ -137,7 +138,7 @@ def fixed_step_within_bound(result: Result, experiment: Experiment, errors: dict
     if h is None or not errors:
         return []
     worst = max(float(np.max(np.abs(e))) for e in errors.values())
-    if not worst > checks.ME_FACTOR * experiment.tolerance * max(1.0, abs(experiment.theta0)):
+    if not worst > checks.ME_FACTOR * experiment.tolerance * max(1.0, abs(experiment.problem.theta0)):
         return []
     found = inference.identify_fixed_step(result, experiment, h, worst)
     if found is None:
