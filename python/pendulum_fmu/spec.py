@@ -98,68 +98,6 @@ class InitialValueProblem:
 
 
 @dataclass(frozen=True)
-class Pendulum:
-    """An initial value problem of theta'' + (g/L) sin(theta) = 0.
-
-    Attributes
-    ----------
-    amplitude_rad : float
-        Initial angle theta(0) from the downward vertical, rad.
-    omega0 : float
-        Initial angular velocity theta'(0), rad/s.
-    length : float
-        L, m (> 0).
-    gravity : float
-        g, m/s^2 (> 0).
-    """
-
-    amplitude_rad: float
-    omega0: float = 0.0
-    length: float = 1.0
-    gravity: float = 9.81
-
-    def __post_init__(self) -> None:
-        checks = (("amplitude", self.amplitude_rad, math.isfinite(self.amplitude_rad), "a finite angle"),
-                  ("omega0", self.omega0, math.isfinite(self.omega0), "a finite number (rad/s)"),
-                  ("length", self.length, math.isfinite(self.length) and self.length > 0, "a finite number > 0 (m)"),
-                  ("gravity", self.gravity, math.isfinite(self.gravity) and self.gravity > 0,
-                   "a finite number > 0 (m/s^2)"))
-        for name, value, ok, allowed in checks:
-            if not ok:
-                raise UsageError(name, f"must be {allowed}, got {value!r}")
-
-    @classmethod
-    def from_degrees(cls, amplitude_deg: float, omega0: float = 0.0, length: float = 1.0,
-                     gravity: float = 9.81) -> Pendulum:
-        """Build from an amplitude in degrees (the other arguments as in the class)."""
-        return cls(math.radians(amplitude_deg), omega0, length, gravity)
-
-    @property
-    def amplitude_deg(self) -> float:
-        """theta(0) in degrees."""
-        return math.degrees(self.amplitude_rad)
-
-    @property
-    def w0(self) -> float:
-        """Small-angle angular frequency sqrt(g / L), rad/s."""
-        return math.sqrt(self.gravity / self.length)
-
-    @property
-    def small_angle_period(self) -> float:
-        """T0 = 2 pi / w0, s."""
-        return 2.0 * math.pi / self.w0
-
-    def start_values(self) -> dict[str, float]:
-        """The FMU's start values for this problem, by variable name."""
-        return {"L": self.length, "g": self.gravity, "theta": self.amplitude_rad, "omega": self.omega0}
-
-    def __str__(self) -> str:
-        """``the pendulum at theta0 = 75 deg, omega0 = 0 rad/s, L = 1 m, g = 9.81 m/s^2`` (for messages)."""
-        return (f"the pendulum at theta0 = {self.amplitude_deg:.9g} deg, omega0 = {self.omega0:.9g} rad/s, "
-                f"L = {self.length:.9g} m, g = {self.gravity:.9g} m/s^2")
-
-
-@dataclass(frozen=True)
 class Method:
     """How to integrate: the solver and its relative tolerance.
 

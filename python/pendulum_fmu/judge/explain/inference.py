@@ -12,7 +12,6 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any, cast
 
 import numpy as np
 
@@ -162,13 +161,10 @@ def fmu_errors(fmu: Path, result: Result, experiment: Experiment, tolerances: li
 
     span = float(result.time[-1]) - experiment.start_time
     interval = (float(result.time[-1]) - float(result.time[0])) / max(1, result.rows - 1)
-    # the runner reads start_values() and small_angle_period, which the problem has; the cast
-    # goes once the runner's signature names InitialValueProblem
-    problem = cast(Any, experiment.problem)
     grid = TimeGrid(stop=span, unit="s", output_interval=interval)
     solver = solver_name(experiment.solver)
     with FmuRunner(fmu) as runner:
-        return [runner.run(problem, Method(solver, tol), grid).max_error for tol in tolerances]
+        return [runner.run(experiment.problem, Method(solver, tol), grid).max_error for tol in tolerances]
 
 
 def effective_tolerance(error: float, tolerances: list[float], errors: list[float]) -> float | None:
