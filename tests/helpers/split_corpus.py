@@ -306,9 +306,10 @@ class Outcome:
 
 def judge(case: Case) -> Outcome:
     """The judge's verdict on one case."""
+    from pendulum_fmu.cli.judge import split_problem
     from pendulum_fmu.split.judge import judge_split
 
-    verdict = judge_split(case.path, start=case.start, step=case.step)
+    verdict = judge_split(case.path, problem=split_problem(list(case.start)), step=case.step)
     kinds = tuple(f.kind for f in verdict.findings)
     if case.kind == "honest":
         if not verdict.conformance.passed:

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import json
 import math
+from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
@@ -19,9 +20,11 @@ import pytest
 
 from pendulum_fmu import exact
 from pendulum_fmu.cli.main import main
+from pendulum_fmu.spec import InitialValueProblem
 from pendulum_fmu.split.grid import read_grid
 from pendulum_fmu.split.judge import judge_runs, judge_split, reported_seconds
 from pendulum_fmu.split.masters import MASTERS, Master
+from pendulum_fmu.split.pair import DEFAULT_PROBLEM
 from split_closed_form import exact_columns, simulate, write_csv
 from split_corpus import Setup, run, write
 
@@ -41,7 +44,7 @@ def test_names_each_master(master: Master, H: float, tmp_path: Path) -> None:
     error is that master's on the same rows (the rank says so)."""
     run_ = simulate(master.scheme, master.coupling, H, 1.5, THETA0, OMEGA0, L)
     path = write_csv(run_, tmp_path / "run.csv", names=("Time", "pendulum/theta", "pendulum/omega"), delimiter=";")
-    verdict = judge_split(path, start=["L=2", f"theta={THETA0!r}", f"omega={OMEGA0!r}"])
+    verdict = judge_split(path, problem=InitialValueProblem(THETA0, OMEGA0, 2.0))
     assert verdict.master == master.name, verdict.lines
     assert verdict.H == H
     assert verdict.conformance.passed, verdict.lines
@@ -76,8 +79,8 @@ def test_a_short_print_is_judged_to_its_resolution(tmp_path: Path) -> None:
     assert verdict.master == "gauss-seidel-interpolation" and verdict.conformance.passed, verdict.lines
 
 
-def _kinds(path: Path, *start: str) -> list[str]:
-    return [f.kind for f in judge_split(path, start=start).findings]
+def _kinds(path: Path) -> list[str]:
+    return [f.kind for f in judge_split(path).findings]
 
 
 @pytest.mark.parametrize(("defect", "kind", "evidence"), [
@@ -123,7 +126,7 @@ def test_wrong_systems_are_named(tmp_path: Path, planted: dict[str, float], kind
     for name, value in planted.items():
         setattr(setup, name, value)
     path = write(tmp_path / "w.csv", *run(setup), 0, "repr")
-    verdict = judge_split(path, start=[f"omega={setup.omega0!r}"])
+    verdict = judge_split(path, problem=replace(DEFAULT_PROBLEM, omega0=setup.omega0))
     assert [f.kind for f in verdict.findings] == [kind], verdict.lines
     assert evidence in verdict.findings[0].line
 
@@ -152,7 +155,8 @@ def test_a_value_that_is_not_a_number_is_a_finding(tmp_path: Path) -> None:
     assert [f.kind for f in verdict.findings] == ["not-finite"] and "t = 0.5 s" in verdict.findings[0].line
     assert math.isfinite(verdict.error)
     at_rest = run(Setup("gs-zoh", 0.01, 1.0, theta0=0.0))  # Gravity's alpha is 0 throughout: not a dropped input
-    assert judge_split(write(tmp_path / "rest.csv", *at_rest, 0, "repr"), start=["theta=0"]).conformance.passed
+    rest = replace(DEFAULT_PROBLEM, theta0=0.0)
+    assert judge_split(write(tmp_path / "rest.csv", *at_rest, 0, "repr"), problem=rest).conformance.passed
 
 
 def test_another_start_is_a_finding_never_a_silent_new_start(tmp_path: Path) -> None:
@@ -163,7 +167,7 @@ def test_another_start_is_a_finding_never_a_silent_new_start(tmp_path: Path) -> 
     reference = exact(SSP_THETA0, 0.0, 1.0, 9.81, np.array(times))[0]
     assert verdict.error == pytest.approx(float(np.max(np.abs(np.array(theta) - reference))), rel=1e-12)
     assert verdict.master == "gauss-seidel-zoh"  # rerun from the file's own start, said so
-    stated = judge_split(path, start=["theta=80deg"])
+    stated = judge_split(path, problem=replace(DEFAULT_PROBLEM, theta0=math.radians(80.0)))
     assert stated.conformance.passed and stated.master == "gauss-seidel-zoh", stated.lines
 
 
@@ -222,7 +226,8 @@ def test_command_line(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> Non
     path = write_csv(simulate("gauss-seidel", "zoh", 0.01, 0.5), tmp_path / "gs.csv")
     assert main(["judge", str(path), "--system", "split", "--master", "euler"]) == 2
     assert main(["judge", str(tmp_path / "missing.csv"), "--system", "split"]) == 2
-    assert main(["judge", str(path), "--system", "split", "--start", "mass=3"]) == 2
+    with pytest.raises(SystemExit, match="2"):  # a usage error: argparse's one line and exit
+        main(["judge", str(path), "--system", "split", "--start", "mass=3"])
     assert main(["judge", str(path), "--system", "split", "--interface", "ME"]) == 2
     assert main(["judge", str(path), str(path)]) == 2
     assert main(["judge", str(path), "--system", "split", "--order", "1"]) == 1

@@ -5,9 +5,11 @@ from __future__ import annotations
 import argparse
 import math
 import sys
+from dataclasses import replace
 from pathlib import Path
 
 from pendulum_fmu.cli.arguments import fmu_file, output_file, output_folder, positive
+from pendulum_fmu.spec import InitialValueProblem
 
 NAME = "judge"
 HELP = "judge any importer's result file against the exact solution (exit 0 pass, 1 fail, 2 unreadable)"
@@ -151,6 +153,31 @@ def start_values(pairs: list[str]) -> dict[str, float | str]:
     return values
 
 
+def split_problem(pairs: list[str]) -> InitialValueProblem | None:
+    """``--start NAME=VALUE`` of the split system (theta, omega, L, g) over the SSP's problem.
+
+    Returns
+    -------
+    InitialValueProblem or None
+        None when no pair is given (the judge then takes the SSP's problem as unstated).
+
+    Raises
+    ------
+    UsageError
+        A pair :func:`start_values` refuses, or a name the split system has no use for.
+    """
+    from pendulum_fmu.errors import UsageError
+    from pendulum_fmu.split.pair import DEFAULT_PROBLEM
+
+    fields = {"theta": "theta0", "omega": "omega0", "L": "L", "g": "g"}
+    for pair in pairs:
+        name, sep, _ = (part.strip() for part in pair.partition("="))
+        if sep and name not in fields:
+            raise UsageError("start", f"unknown name {name!r}: the split system takes theta, omega, L and g")
+    values = start_values(pairs)
+    return replace(DEFAULT_PROBLEM, **{fields[name]: float(value) for name, value in values.items()}) if pairs else None
+
+
 def _split_sources(items: list[str]) -> list[Path]:
     """The files named, a folder standing for its CSV files (sorted); ValueError when none."""
     sources: list[Path] = []
@@ -177,15 +204,16 @@ def _run_split(args: argparse.Namespace) -> int:
             print(f"pendulum-fmu judge: --{name.replace('_', '-')} is for --system pendulum; the split system has "
                   "its SSP", file=sys.stderr)
             return 2
+    problem = split_problem(args.start)
     try:
         sources = _split_sources(args.result)
         if len(sources) == 1 and args.order is None:
-            verdict = judge_split(sources[0], start=args.start, master=args.master, instance=args.instance,
+            verdict = judge_split(sources[0], problem=problem, master=args.master, instance=args.instance,
                                   step=args.step, max_error=args.max_error)
             print("\n".join(verdict.lines))
             verdicts, data, code = [verdict], verdict_dict(verdict), verdict.exit_code
         else:
-            runs = judge_runs(sources, start=args.start, master=args.master, instance=args.instance,
+            runs = judge_runs(sources, problem=problem, master=args.master, instance=args.instance,
                               step=args.step, max_error=args.max_error, order=args.order)
             print("\n".join(runs.lines))
             verdicts, data, code = runs.verdicts, runs_dict(runs), runs.exit_code

@@ -159,28 +159,6 @@ def _row(label: str, status: str, text: str) -> str:
     return f"{label:<16s}{status:<6s}{text}"
 
 
-def _number(text: str) -> float:
-    text = text.strip()
-    if text.endswith("deg"):
-        return math.radians(float(text[:-3]))
-    return float(text)
-
-
-def parse_start(items: Sequence[str]) -> dict[str, float]:
-    """``NAME=VALUE`` items (theta in rad or ``80deg``, omega, L, g) as a dict; ValueError otherwise."""
-    known = {"theta": "theta0", "omega": "omega0", "L": "L", "g": "g"}
-    values: dict[str, float] = {}
-    for item in items:
-        name, _, value = item.partition("=")
-        if name.strip() not in known or not value:
-            raise ValueError(f"--start {item!r}: give theta, omega, L or g as NAME=VALUE")
-        try:
-            values[known[name.strip()]] = _number(value)
-        except ValueError:
-            raise ValueError(f"--start {item!r}: {value!r} is not a number") from None
-    return values
-
-
 _WALL = re.compile(r"^\s*#.*\bwall[ _-]?time\b\s*[:=]?\s*(?P<s>[0-9.eE+-]+)", re.IGNORECASE)
 
 
@@ -209,17 +187,19 @@ def _exchange_text(schedule: Any, law: Any) -> str:
     return f"{schedule.describe()}; {how}" if schedule is not None else how
 
 
-def judge_split(data: Any, start: Sequence[str] = (), master: str | None = None, instance: str | None = None,
-                step: float | None = None, max_error: float | None = None) -> SplitVerdict:
+def judge_split(data: Any, problem: InitialValueProblem | None = None, master: str | None = None,
+                instance: str | None = None, step: float | None = None,
+                max_error: float | None = None) -> SplitVerdict:
     """Judge a coupled result of the split pendulum (see the module's docstring).
 
     Parameters
     ----------
     data : str, Path or table
         The result (what :func:`pendulum_fmu.split.reading.read_coupled` reads).
-    start : sequence of str
-        ``NAME=VALUE`` of the run (theta, omega, L, g); by default the SSP's. A row at t = 0
-        other than the start is a finding.
+    problem : InitialValueProblem, optional
+        The run's parameters and start values, as stated by the caller; None: the SSP's
+        (:data:`~pendulum_fmu.split.pair.DEFAULT_PROBLEM`). A row at t = 0 other than a stated
+        start is a finding.
     master : str, optional
         The reference master the run implements (:attr:`Master.name`): a criterion.
     instance : str, optional
@@ -238,7 +218,7 @@ def judge_split(data: Any, start: Sequence[str] = (), master: str | None = None,
     pendulum_fmu.judge.ReadError
         When the file cannot be read or has under 3 rows.
     ValueError
-        For an unknown ``master`` or a bad ``start`` item.
+        For an unknown ``master``.
     """
     from pendulum_fmu.fmu.library import exact
     from pendulum_fmu.judge.reading import ReadError
@@ -246,7 +226,6 @@ def judge_split(data: Any, start: Sequence[str] = (), master: str | None = None,
 
     if master:
         master_named(master)
-    stated = parse_start(start)
     result = read_coupled(data, instance)
     if result.time.size < 3 or not np.all(np.isfinite(result.time)):
         raise ReadError(f"{result.source}: {result.time.size} rows: a coupled run needs at least 3 at finite times")
@@ -257,7 +236,8 @@ def judge_split(data: Any, start: Sequence[str] = (), master: str | None = None,
     resolution = {name: column[grid.keep] for name, column in result.resolution.items()}
     if grid.time.size < 3:
         raise ReadError(f"{result.source}: {grid.time.size} distinct times: a coupled run needs at least 3")
-    problem = replace(DEFAULT_PROBLEM, **stated)
+    stated = problem is not None
+    problem = problem or DEFAULT_PROBLEM
     findings = list(grid.findings)
     times = grid.exact_times
     H = grid.H if grid.H is not None else float((times[-1] - times[0]) / (times.size - 1))
@@ -283,7 +263,7 @@ def judge_split(data: Any, start: Sequence[str] = (), master: str | None = None,
         findings.append(label_finding(shift, H, "theta_exact" in values))
         times = times + shift * H
         index = index + shift if index is not None else None
-    begin = start_finding(times, values, resolution, problem, bool(stated))
+    begin = start_finding(times, values, resolution, problem, stated)
     if begin is not None:
         findings.append(begin)
     k = problem.g / problem.L
@@ -439,12 +419,12 @@ class SplitRuns:
         return lines
 
 
-def judge_runs(sources: Sequence[Any], start: Sequence[str] = (), master: str | None = None,
+def judge_runs(sources: Sequence[Any], problem: InitialValueProblem | None = None, master: str | None = None,
                instance: str | None = None, step: float | None = None, max_error: float | None = None,
                order: float | None = None) -> SplitRuns:
     """Judge several runs of one master at different H (see :func:`judge_split`); ``order``: the
     least observed order allowed (less :data:`ORDER_SLACK`)."""
-    verdicts = [judge_split(s, start, master, instance, step, max_error) for s in sources]
+    verdicts = [judge_split(s, problem, master, instance, step, max_error) for s in sources]
     verdicts.sort(key=lambda v: -(v.identification.H or v.H))
     found = observed_order([v.identification.H or v.H for v in verdicts], [v.error for v in verdicts])
     criteria = []
