@@ -139,8 +139,7 @@ int elliptic_param_init(EllipticParam *p, double m, double m1_hi, double m1_lo)
 int elliptic_param_init_root(EllipticParam *p, double m, double m1_hi, double m1_lo, const DoubleDouble *root,
                              DoubleDouble *inv_K)
 {
-    if (p == NULL || !(m >= 0.0 && m <= 1.0) || !(m1_hi >= 0.0 && m1_hi <= 1.0)
-        || !isfinite(m1_lo) || !(fabs(m + m1_hi - 1.0) <= 1e-12)) {
+    if (p == NULL || !elliptic_param_acceptable(m, m1_hi, m1_lo)) {
         return -1;
     }
     /* written in place once the inputs are accepted (no copy); the caller cleared its bytes */

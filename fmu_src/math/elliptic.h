@@ -74,6 +74,15 @@ typedef struct {
     double landen_1mk[ELLIPTIC_MAX_LEVELS]; /* 1 - k_n = 2 k'_{n-1} / (1 + k'_{n-1}) */
 } EllipticParam;
 
+/* 1 when elliptic_param_init and elliptic_param_init_root accept the parameter: m and m1 in
+ * [0, 1], m1_lo finite and m + m1 equal to 1 within 1e-12 (a caller can check before it
+ * writes anything). */
+static inline int elliptic_param_acceptable(double m, double m1_hi, double m1_lo)
+{
+    return m >= 0.0 && m <= 1.0 && m1_hi >= 0.0 && m1_hi <= 1.0 && isfinite(m1_lo)
+           && fabs(m + m1_hi - 1.0) <= 1e-12;
+}
+
 /* Prepares the parameter set for m in [0, 1] and m1 = 1 - m given separately, m1 in
  * double-double (m1_lo may be 0); K is computed in double-double from it.
  * Returns 0, or -1 (p untouched) if m or m1 is outside [0, 1] or NaN, or m + m1 is not

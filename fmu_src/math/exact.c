@@ -94,7 +94,8 @@ static void init_separatrix(PendulumExact *e, DoubleDouble s, DoubleDouble c, do
     e->scale_lo = w0.lo;
     e->omega_half = w0.hi;
     e->period = INFINITY;
-    (void)elliptic_param_init(&e->ell, 1.0, 0.0, 0.0);   /* K = +inf; cannot fail */
+    DoubleDouble unused;
+    (void)elliptic_param_init_root(&e->ell, 1.0, 0.0, 0.0, NULL, &unused);   /* K = +inf; accepted */
     if (omega0 == 0.0) {
         /* At rest on the unstable equilibrium (c == 0): stays there. */
         e->direction = 0.0;
@@ -374,11 +375,22 @@ static void locate_separatrix(double theta0, double omega0, DoubleDouble w0, dou
     }
 }
 
+/* The parameter of a libration or rotation, formed before anything is written (so that a
+ * state that cannot be set up leaves the caller's bytes untouched). */
+typedef struct {
+    double m;               /* the parameter the Jacobi functions are taken at (mu for a rotation) */
+    DoubleDouble m1;        /* its complement */
+    double k;               /* libration: sqrt(m) of the motion */
+    DoubleDouble q;         /* libration: |omega0| / (2 w0) */
+    int root_known;         /* libration from rest: k' = c itself */
+    DoubleDouble s;         /* rotation: sin(th/2) in double-double */
+    DoubleDouble one_plus_rho2;   /* rotation: 1 + (s/|q|)^2 */
+} RegimeParameter;
+
 /* Step 3a. Libration (m1 > 0): w_n >= 1/2 here, q = |omega0| / (2 w0) <= c <= 1.
- * Returns 0, 1 when m1 underflowed (the caller treats it as the separatrix), -1 on failure.
- * *rate_n is the rate of u scaled by 2^-exponent. */
-static int init_libration(PendulumExact *e, double omega0, DoubleDouble w0, const InitialState *st,
-                          DoubleDouble *rate_n, DoubleDouble *inv_K)
+ * Returns 0, 1 when m1 underflowed (the caller treats it as the separatrix), -1 when the
+ * parameter is out of range (elliptic_param_acceptable). */
+static int libration_parameter(double omega0, const InitialState *st, RegimeParameter *par)
 {
     const DoubleDouble s = st->s, c = st->c;
     const int from_rest = omega0 == 0.0;
@@ -395,17 +407,30 @@ static int init_libration(PendulumExact *e, double omega0, DoubleDouble w0, cons
     if (!(m1.hi > 0.0)) {
         return 1;
     }
-    e->regime = PENDULUM_LIBRATION;
     /* sqrt(m) = sqrt(s^2 + q^2) without underflow; from rest |s| itself (hypot(s, 0) = |s|) */
     const double k = from_rest ? fabs(s.hi) : hypot(s.hi, q.hi);
-    const double m = smaller(k * k, 1.0);
+    par->k = k;
+    par->m = smaller(k * k, 1.0);
+    par->m1 = m1;
+    par->q = q;
     /* from rest (and not next to the separatrix) k' = sqrt(m1) = c itself */
-    const int root_known = from_rest && !st->fine;
-    if (elliptic_param_init_root(&e->ell, m, m1.hi, m1.lo, root_known ? &c : NULL, inv_K) != 0) {
-        return -1;
-    }
-    e->m = m;
-    e->m1 = m1.hi;
+    par->root_known = from_rest && !st->fine;
+    return elliptic_param_acceptable(par->m, m1.hi, m1.lo) ? 0 : -1;
+}
+
+/* Writes the libration of par into e (its bytes cleared); *rate_n is the rate of u scaled by
+ * 2^-exponent. */
+static void init_libration(PendulumExact *e, double omega0, DoubleDouble w0, const InitialState *st,
+                           const RegimeParameter *par, DoubleDouble *rate_n, DoubleDouble *inv_K)
+{
+    const DoubleDouble s = st->s, c = st->c, q = par->q;
+    const double k = par->k;
+    const int from_rest = omega0 == 0.0;
+    e->regime = PENDULUM_LIBRATION;
+    (void)elliptic_param_init_root(&e->ell, par->m, par->m1.hi, par->m1.lo, par->root_known ? &c : NULL,
+                                   inv_K);   /* accepted by libration_parameter */
+    e->m = par->m;
+    e->m1 = par->m1.hi;
     e->k = k;
     e->kc = e->ell.kc;
     e->K_hi = e->ell.K_hi;
@@ -427,21 +452,18 @@ static int init_libration(PendulumExact *e, double omega0, DoubleDouble w0, cons
         const double base = omega0 >= 0.0 ? f : (2.0 * e->K_hi - f) + 2.0 * e->K_lo;
         e->u0 = s.hi < 0.0 ? -base : base;
     }
-    return 0;
 }
 
 /* Step 3b. Rotation (m1 < 0, omega0 != 0). Ratios to |omega0|/2: rho = s/|q|, gamma = c/|q| < 1
- * (hs_n > c w_n, and c >= ~1e-33, so hs_n is not tiny). */
-static int init_rotation(PendulumExact *e, double omega0, const InitialState *st, DoubleDouble *rate_n,
-                         DoubleDouble *inv_K)
+ * (hs_n > c w_n, and c >= ~1e-33, so hs_n is not tiny). Returns 0, or -1 when the parameter
+ * is out of range (elliptic_param_acceptable). */
+static int rotation_parameter(const InitialState *st, RegimeParameter *par)
 {
     const DoubleDouble half = {0.5 * st->th.hi, 0.5 * st->th.lo};   /* exact */
     DoubleDouble s, c_again;
     dd_sincos(half, &s, &c_again);   /* sin(th/2) in double-double */
-    const DoubleDouble c = st->c, w_n = st->w_n;
+    const DoubleDouble w_n = st->w_n;
     const double hs_n = st->hs_n;
-    e->regime = PENDULUM_ROTATION;
-    e->direction = omega0 > 0.0 ? 1.0 : -1.0;
     const DoubleDouble hs = dd_of(hs_n);
     DoubleDouble rho = dd_div(dd_mul(s, w_n), hs);
     DoubleDouble one_plus_rho2 = dd_add(dd_of(1.0), dd_mul(rho, rho));
@@ -460,15 +482,27 @@ static int init_rotation(PendulumExact *e, double omega0, const InitialState *st
     }
     /* mu = 1/m = 1/(q^2 (1 + rho^2)). */
     const double w_hs = w_n.hi / hs_n;
-    const double mu = smaller(w_hs * w_hs / one_plus_rho2.hi, 1.0);   /* finite: hs_n > 0 */
-    if (elliptic_param_init_root(&e->ell, mu, mu1.hi, mu1.lo, NULL, inv_K) != 0) {
-        return -1;
-    }
+    par->m = smaller(w_hs * w_hs / one_plus_rho2.hi, 1.0);   /* finite: hs_n > 0 */
+    par->m1 = mu1;
+    par->s = s;
+    par->one_plus_rho2 = one_plus_rho2;
+    return elliptic_param_acceptable(par->m, mu1.hi, mu1.lo) ? 0 : -1;
+}
+
+/* Writes the rotation of par into e (its bytes cleared). */
+static void init_rotation(PendulumExact *e, double omega0, const InitialState *st, const RegimeParameter *par,
+                          DoubleDouble *rate_n, DoubleDouble *inv_K)
+{
+    const DoubleDouble c = st->c, s = par->s, one_plus_rho2 = par->one_plus_rho2;
+    const double mu = par->m;
+    e->regime = PENDULUM_ROTATION;
+    e->direction = omega0 > 0.0 ? 1.0 : -1.0;
+    (void)elliptic_param_init_root(&e->ell, mu, par->m1.hi, par->m1.lo, NULL, inv_K);   /* accepted */
     /* sqrt(m) w0 = |q| w0 sqrt(1 + rho^2) = (|omega0|/2) sqrt(1 + rho^2). */
-    *rate_n = dd_mul(hs, dd_sqrt(one_plus_rho2));
+    *rate_n = dd_mul(dd_of(st->hs_n), dd_sqrt(one_plus_rho2));
     const DoubleDouble rate = dd_ldexp(*rate_n, st->exponent);
     e->m = 1.0 / mu;
-    e->m1 = -mu1.hi / mu;
+    e->m1 = -par->m1.hi / mu;
     e->k = e->ell.k;
     e->kc = e->ell.kc;
     e->K_hi = e->ell.K_hi;
@@ -478,7 +512,6 @@ static int init_rotation(PendulumExact *e, double omega0, const InitialState *st
     e->omega_half = rate.hi;
     /* v0 = F(th/2 | mu) for the mirrored motion (direction * th), DLMF 19.25.5. */
     e->u0 = e->direction * s.hi * elliptic_RF(c.hi * c.hi, 1.0 / one_plus_rho2.hi, 1.0);
-    return 0;
 }
 
 /* Step 4. Rate and initial phase in quarter periods: rho = scale / K, x0 = u0 / K (products with
@@ -508,46 +541,51 @@ static void set_quarter_rates(PendulumExact *e, DoubleDouble rate_n, int exponen
 }
 
 /* The solution for w0 in double-double (w0.hi > 0 finite); see pendulum_exact_init. The
- * steps: reduce the angle (1), find the side of the separatrix (2), the constants of the
- * regime (3a, 3b or init_separatrix), the rates in quarter periods (4). */
-static int exact_init_dd(PendulumExact *ex, double theta0, double omega0, DoubleDouble w0, double t0,
+ * steps: reduce the angle (1), find the side of the separatrix (2), the parameter of the
+ * regime (3a, 3b), then, once nothing can fail, the state written in place: its bytes cleared
+ * (padding included: FMU states compare and checksum it, pendulum_exact_same, instance/state.c),
+ * the constants of the regime (3a, 3b or init_separatrix) and the rates in quarter periods (4). */
+static int exact_init_dd(PendulumExact *e, double theta0, double omega0, DoubleDouble w0, double t0,
                          double g, double L)
 {
-    PendulumExact e;
-    memset(&e, 0, sizeof e);
-    e.w0 = w0.hi;
-    e.w0_lo = w0.lo;
-    e.g = g;
-    e.L = L;
-    e.t0 = t0;
-    e.theta0 = theta0;
-    e.omega0 = omega0;
-    e.direction = 1.0;
-
     InitialState st;
     reduce_initial_angle(theta0, &st);
-    e.theta_turns = st.turns;
-    e.theta_reduced = st.th.hi;
     locate_separatrix(theta0, omega0, w0, g, L, &st);
     const double side = st.fine ? st.m1_fine.hi : st.gap.hi;   /* the sign of m1 */
 
-    DoubleDouble rate_n = dd_of(0.0), inv_K = dd_of(0.0);
-    int status = 1;                        /* 1: the separatrix */
+    RegimeParameter par = {0};
+    int status = 1;                        /* 1: the separatrix (also when m1 underflowed) */
     if (side > 0.0) {
-        status = init_libration(&e, omega0, w0, &st, &rate_n, &inv_K);
+        status = libration_parameter(omega0, &st, &par);
     } else if (side < 0.0) {
-        status = init_rotation(&e, omega0, &st, &rate_n, &inv_K);
+        status = rotation_parameter(&st, &par);
     }
     if (status < 0) {
         return -1;
     }
+
+    memset(e, 0, sizeof *e);
+    e->w0 = w0.hi;
+    e->w0_lo = w0.lo;
+    e->g = g;
+    e->L = L;
+    e->t0 = t0;
+    e->theta0 = theta0;
+    e->omega0 = omega0;
+    e->direction = 1.0;
+    e->theta_turns = st.turns;
+    e->theta_reduced = st.th.hi;
     if (status == 1) {
-        init_separatrix(&e, st.s, st.c, omega0, w0);   /* also when m1 underflowed */
-    } else {
-        set_quarter_rates(&e, rate_n, st.exponent, omega0 == 0.0, inv_K);
+        init_separatrix(e, st.s, st.c, omega0, w0);
+        return 0;
     }
-    memcpy(ex, &e, sizeof e); /* bytewise, padding included: FMU states compare and checksum it
-                                 (pendulum_exact_same, instance/state.c) */
+    DoubleDouble rate_n, inv_K;
+    if (side > 0.0) {
+        init_libration(e, omega0, w0, &st, &par, &rate_n, &inv_K);
+    } else {
+        init_rotation(e, omega0, &st, &par, &rate_n, &inv_K);
+    }
+    set_quarter_rates(e, rate_n, st.exponent, omega0 == 0.0, inv_K);
     return 0;
 }
 
