@@ -79,6 +79,59 @@ static DoubleDouble K_dd_of_root(DoubleDouble kc, DoubleDouble *inv_K)
     return dd_of(NAN);
 }
 
+/* *mean (f_hi + f_lo) for |f_lo| of the order of ulp(f_hi), with what the double-double
+ * product rounds off carried in *error (the compensated product: the three leading partial
+ * products are two-products, the low part their exact sum but for two TwoSum errors, which go
+ * to *error with the products below 2^-106): the mean of the Landen levels then keeps about
+ * 2^-106 relative over its N factors, where N plain products would lose N times that. */
+static void mean_times(DoubleDouble *mean, double *error, double f_hi, double f_lo)
+{
+    const DoubleDouble p = dd_two_prod(mean->hi, f_hi), a = dd_two_prod(mean->hi, f_lo);
+    const DoubleDouble b = dd_two_prod(mean->lo, f_hi);
+    const DoubleDouble s1 = dd_two_sum(p.lo, a.hi), s2 = dd_two_sum(s1.hi, b.hi);
+    *error = *error * f_hi + (((s1.lo + s2.lo) + (a.lo + b.lo)) + mean->lo * f_lo);
+    *mean = dd_fast_two_sum(p.hi, s2.hi);
+}
+
+/* K and 1/K in double-double from the bottom of the Landen chain: mean = prod_{n < N}
+ * (1 + kappa_n)/2, the AGM's a_N for a_0 = 1 (A&S 17.6), and the exact complementary
+ * modulus kappa_N = kc_N + tail of the last level, m_N = 1 - kappa_N^2 <= BOTTOM_M (the mean
+ * given as mean + mean_error, mean_times). With
+ * AGM(1, k') = a_N AGM(1, kappa_N) and K = (pi/2) / AGM (DLMF 19.8.5), d = 1 - kappa_N
+ * (exact: 1 - kc_N by Sterbenz, then TwoSum),
+ *   K   = ((pi/2) / mean) (1 + S),  1 + S = 2F1(1/2, 1/2; 1; 2d - d^2),
+ *   1/K = ((2/pi) mean) (1 - T),    1 - T = AGM(1, 1 - d),
+ *   S = d/2 + 5 d^2/16 + 7 d^3/32 + 169 d^4/1024,  T = d/2 + d^2/16 + d^3/32 + 21 d^4/1024,
+ * the Maclaurin series in d of 2F1 (A&S 17.3.11 with m = 2d - d^2) and of its reciprocal
+ * (mpmath.taylor; d < 2^-25, so the next terms are below 2^-125). (pi/2)/mean and
+ * (2/pi) mean are formed while the last level is still being computed; S and T are below
+ * 2^-26, so K and 1/K are each the leading part plus a small product (the terms of d^2 by
+ * two-products, the rest in double, each within 2^-107 of K). */
+static DoubleDouble landen_K(DoubleDouble mean, double mean_error, double kc_N, double tail, DoubleDouble *inv_K)
+{
+    DoubleDouble A = dd_div(dd_fast_two_sum(HALF_PI_HI, HALF_PI_LO), mean);
+    DoubleDouble B = dd_mul(mean, dd_fast_two_sum(2.0 * INV_PI_HI, 2.0 * INV_PI_LO));
+    /* the mean's rounding error: (pi/2)/(mean + e) = A - A^2 (2/pi) e, (2/pi)(mean + e) = B + (2/pi) e */
+    A.lo -= A.hi * (A.hi * (mean_error * (2.0 * INV_PI_HI)));
+    B.lo += mean_error * (2.0 * INV_PI_HI);
+    const DoubleDouble d = dd_two_sum(1.0 - kc_N, -tail);
+    DoubleDouble d2 = dd_two_prod(d.hi, d.hi);
+    d2.lo += 2.0 * d.hi * d.lo;
+    const double cube = d.hi * d2.hi;
+    const DoubleDouble s2 = dd_two_prod(0.3125, d2.hi);                  /* 5/16 d^2 */
+    DoubleDouble S = dd_fast_two_sum(0.5 * d.hi, s2.hi);
+    S.lo += (s2.lo + 0.3125 * d2.lo + 0.5 * d.lo) + cube * (7.0 / 32.0 + d.hi * (169.0 / 1024.0));
+    DoubleDouble T = dd_fast_two_sum(0.5 * d.hi, 0.0625 * d2.hi);        /* 1/16 d^2: exact */
+    T.lo += (0.0625 * d2.lo + 0.5 * d.lo) + cube * (1.0 / 32.0 + d.hi * (21.0 / 1024.0));
+    const DoubleDouble AS = dd_two_prod(A.hi, S.hi), BT = dd_two_prod(B.hi, T.hi);
+    DoubleDouble K = dd_fast_two_sum(A.hi, AS.hi);
+    K.lo += A.lo + (AS.lo + (A.hi * S.lo + A.lo * S.hi));
+    DoubleDouble inverse = dd_fast_two_sum(B.hi, -BT.hi);
+    inverse.lo += B.lo - (BT.lo + (B.hi * T.lo + B.lo * T.hi));
+    *inv_K = dd_fast_two_sum(inverse.hi, inverse.lo);
+    return dd_fast_two_sum(K.hi, K.lo);
+}
+
 double elliptic_RF(double x, double y, double z)
 {
     if (!(x >= 0.0 && y >= 0.0 && z >= 0.0)) {
@@ -169,38 +222,60 @@ int elliptic_param_init_root(EllipticParam *p, double m, double m1_hi, double m1
         *inv_K = dd_of(0.0);
         return 0;
     }
-    DoubleDouble K = K_dd_of_root(kc, inv_K);
-    q->K_hi = K.hi;
-    q->K_lo = K.lo;
-    q->inv_K = 1.0 / K.hi;   /* as before: the correctly rounded 1/K.hi */
-    q->K_head = dd_head26(K.hi);   /* top 26 bits of K_hi; K_tail = the rest, exact */
-    q->K_tail = K.hi - q->K_head;
-
     /* Descending Landen sequence (A&S 16.12.1, DLMF 22.7.1; the AGM of A&S 16.4 normalised,
      * k_n = c_n / a_n, k'_n = b_n / a_n):
      *   k_{n+1} = (1 - k'_n) / (1 + k'_n) = m_n / (1 + k'_n)^2,
      *   1 - k_{n+1} = 2 k'_n / (1 + k'_n),   k'_{n+1} = 2 sqrt(k'_n) / (1 + k'_n),
-     * each in the form that does not cancel, all from the double k'. Not read off the
-     * double-double means of K: those moduli are the correctly rounded ones of the exact chain,
-     * but each level is then not the Landen transform of the rounded level above it, and the
+     * each in the form that does not cancel, all from the double k' (the halves (1 + k'_n)/2
+     * are exact, so k'_n / ((1 + k'_n)/2) is the rounded 2 k'_n / (1 + k'_n) itself). Not
+     * rounded from a more accurate chain: its moduli would be the correctly rounded ones, but
+     * each level is then not the Landen transform of the rounded level above it, and the
      * evaluation, which passes through the levels in turn, loses more (measured: theta's mean
-     * error at 170 deg from rest 3.2e-16 rad against 2.2e-16 with this chain). */
-    double kc_n = q->kc, m_n = m;
+     * error at 170 deg from rest 3.2e-16 rad against 2.2e-16 with this chain).
+     *
+     * The same levels give K in double-double (landen_K below): the exact complementary
+     * modulus of level n is kappa_n = kc_n + tail_n, the tail carried to first order beside
+     * the double chain, and K = K(m_N) / prod_{n < N} (1 + kappa_n)/2. */
+    double kc_n = q->kc, m_n = m, tail = kc.lo;
+    DoubleDouble mean = dd_of(1.0);   /* prod_{i < n} (1 + kappa_i)/2: the AGM's a_n for a_0 = 1 */
+    double mean_error = 0.0;          /* ... less mean: what its double-double has rounded off */
     int n = 0;
     while ((m_n > BOTTOM_M || n == 0) && n < ELLIPTIC_MAX_LEVELS) {   /* at least one level */
-        double one_plus_kc = 1.0 + kc_n;
-        double k_next = kc_n < 0.5 ? (1.0 - kc_n) / one_plus_kc
-                                   : m_n / (one_plus_kc * one_plus_kc);
+        const double one_plus_kc = 1.0 + kc_n, half = 0.5 * one_plus_kc;   /* half: exact */
+        const double root_kc = sqrt(kc_n);
+        const double k_next = kc_n < 0.5 ? (1.0 - kc_n) / one_plus_kc
+                                         : m_n / (one_plus_kc * one_plus_kc);
+        const double kc_next = root_kc / half;   /* 2 sqrt(k'_n) / (1 + k'_n) */
         q->landen_k[n] = k_next;
         q->landen_1pk[n] = 1.0 + k_next;
-        q->landen_1mk[n] = 2.0 * kc_n / one_plus_kc;
-        kc_n = 2.0 * sqrt(kc_n) / one_plus_kc;
+        q->landen_1mk[n] = kc_n / half;
+        /* kappa_{n+1} = 2 sqrt(kappa_n) / (1 + kappa_n) to first order in the tails and in the
+         * rounding errors of this level, each exact: e_h = (1 + kc_n) - one_plus_kc (Fast2Sum),
+         * e_s = kc_n - root_kc^2 and e_q = 2 root_kc - kc_next one_plus_kc (the residuals of a
+         * correctly rounded root and quotient are doubles; two-products, Sterbenz):
+         *   tail_{n+1} = (root_kc e_q + (e_s + tail_n) - root_kc kc_next (e_h + tail_n)) / (root_kc one_plus_kc),
+         * what is left out of the order of tail^2 / kc_n, ~2^-106 relative. */
+        const double e_h = kc_n - (one_plus_kc - 1.0);
+        const DoubleDouble root_sq = dd_two_prod(root_kc, root_kc);
+        const double e_s = (kc_n - root_sq.hi) - root_sq.lo;
+        const DoubleDouble product = dd_two_prod(kc_next, one_plus_kc);
+        const double e_q = (2.0 * root_kc - product.hi) - product.lo;
+        const double tail_h = e_h + tail;   /* 1 + kappa_n = one_plus_kc + tail_h */
+        mean_times(&mean, &mean_error, half, 0.5 * tail_h);
+        tail = ((root_kc * e_q + (e_s + tail)) - root_kc * kc_next * tail_h) / (root_kc * one_plus_kc);
+        kc_n = kc_next;
         m_n = k_next * k_next;
         ++n;
     }
     q->levels = n;
     q->sqrt_k1 = q->k / (1.0 + q->kc);   /* sqrt(k_1) = sqrt((1 - k')/(1 + k')) = k / (1 + k') */
     q->bottom_m = m_n;
+    const DoubleDouble K = m_n <= BOTTOM_M ? landen_K(mean, mean_error, kc_n, tail, inv_K) : K_dd_of_root(kc, inv_K);
+    q->K_hi = K.hi;
+    q->K_lo = K.lo;
+    q->inv_K = 1.0 / K.hi;   /* as before: the correctly rounded 1/K.hi */
+    q->K_head = dd_head26(K.hi);   /* top 26 bits of K_hi; K_tail = the rest, exact */
+    q->K_tail = K.hi - q->K_head;
     /* prod(1 + k_n) = K(m) / K(m_N) (descending Landen K(k) = (1 + k_1) K(k_1), DLMF
      * 19.8(ii), A&S 17.5), and
      * K(m_N) = pi/2 (1 + m_N/4 + 9 m_N^2/64 + ...)  (A&S 17.3.11): one division by K in
