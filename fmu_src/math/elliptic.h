@@ -97,6 +97,23 @@ int elliptic_param_init(EllipticParam *p, double m, double m1_hi, double m1_lo);
 int elliptic_param_init_root(EllipticParam *p, double m, double m1_hi, double m1_lo, const DoubleDouble *root,
                              DoubleDouble *inv_K);
 
+/* The set-up of elliptic_param_init_root in two steps, for a caller that knows k' as a double
+ * before its low part (the pendulum from rest: the leading double of cos(theta0/2) comes
+ * first): elliptic_param_begin runs the Landen chain of the double k' (every field the
+ * evaluation reads but K, 1/K and the bottom scale), elliptic_param_finish forms K and 1/K in
+ * double-double from the chain and k' = kc + kc_lo. Together, on a parameter set whose bytes
+ * are zero, they write what elliptic_param_init_root writes for 0 <= m <= 1, 0 < m1 <= 1
+ * (checked by the caller: elliptic_param_acceptable) and k' = sqrt(m1) > 0. */
+typedef struct {
+    double kc[ELLIPTIC_MAX_LEVELS + 1];     /* k'_n of the double chain, n = 0..levels */
+    double root[ELLIPTIC_MAX_LEVELS];       /* sqrt(k'_n), rounded */
+    double one_plus[ELLIPTIC_MAX_LEVELS];   /* 1 + k'_n, rounded */
+} EllipticChain;
+
+void elliptic_param_begin(EllipticParam *p, double m, double kc, EllipticChain *chain);
+void elliptic_param_finish(EllipticParam *p, const EllipticChain *chain, double m1, double kc_lo,
+                           DoubleDouble *inv_K);
+
 /* Above this |z| the bottom level calls libm's sin and cos, below it trig_sincos_small
  * (trig.h: their Maclaurin series to z^17 and z^16, no range reduction). */
 #define ELLIPTIC_SERIES_Z_MAX 0.8
