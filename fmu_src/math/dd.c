@@ -225,12 +225,13 @@ static void sin_versine_small(DoubleDouble r, DoubleDouble *w, DoubleDouble *v)
     const double z = r2.hi;
     const double p_rest = z * z * (-0x1.a01a01a01a01ap-13 + z * (0x1.71de3a556c734p-19 - z * 0x1.ae64567f544e4p-26));
     const double q_rest = z * z * (0x1.a01a01a01a01ap-16 - z * 0x1.27e4fb7789f5cp-22);
-    const DoubleDouble p_lead = dd_add_smaller((DoubleDouble){-INV_3F_HI, -INV_3F_LO},
-                                               dd_mul(r2, (DoubleDouble){INV_5F_HI, INV_5F_LO}));
-    const DoubleDouble q_lead = dd_add_smaller((DoubleDouble){INV_4F_HI, INV_4F_LO},
-                                               dd_mul(r2, (DoubleDouble){-INV_6F_HI, -INV_6F_LO}));
-    const DoubleDouble P = dd_add_smaller(p_lead, dd_of(p_rest));
-    const DoubleDouble Q = dd_add_smaller(q_lead, dd_of(q_rest));
+    /* P = -1/6 + r2/120 + p_rest, Q = 1/24 - r2/720 + q_rest: the products below 2^-18 of the
+     * constants, so one Fast2Sum of the heads and the rest added to the tail */
+    const DoubleDouble p2 = dd_mul(r2, (DoubleDouble){INV_5F_HI, INV_5F_LO});
+    const DoubleDouble q2 = dd_mul(r2, (DoubleDouble){-INV_6F_HI, -INV_6F_LO});
+    DoubleDouble P = dd_fast_two_sum(-INV_3F_HI, p2.hi), Q = dd_fast_two_sum(INV_4F_HI, q2.hi);
+    P.lo += (-INV_3F_LO + p2.lo) + p_rest;
+    Q.lo += (INV_4F_LO + q2.lo) + q_rest;
     *w = dd_add_smaller(r, dd_mul(dd_mul(r, r2), P));
     *v = dd_add_smaller((DoubleDouble){0.5 * r2.hi, 0.5 * r2.lo}, dd_neg(dd_mul(dd_mul(r2, r2), Q)));
 }
@@ -242,15 +243,9 @@ static void sin_versine_small(DoubleDouble r, DoubleDouble *w, DoubleDouble *v)
  * C, S = cos a, sin a (TABLE_64), w = sin r, v = 1 - cos r (sin_versine_small). The corrections
  * are at most 2^-7 of cos and half of sin (a >= 2|r| unless a = 0), so both keep ~2^-104 relative
  * accuracy, sin also for tiny y (a = 0: sin y = w). */
-typedef struct {
-    double sign;         /* y = sign |y| */
-    DoubleDouble r;      /* |y| - a */
-    DoubleDouble C, S;   /* cos a, sin a */
-} TablePoint;
-
-static TablePoint table_point(DoubleDouble y)
+static DdTablePoint table_point(DoubleDouble y)
 {
-    TablePoint t;
+    DdTablePoint t;
     t.sign = y.hi < 0.0 ? -1.0 : 1.0;
     const DoubleDouble u = {t.sign * y.hi, t.sign * y.lo};   /* |y| */
     const int i = (int)(u.hi * 64.0 + 0.5);                   /* 0..50 */
@@ -261,18 +256,24 @@ static TablePoint table_point(DoubleDouble y)
     return t;
 }
 
-static void sincos_table(DoubleDouble y, int want, DoubleDouble *sin_y, DoubleDouble *cos_y)
+static void sincos_at(const DdTablePoint *t, int want, DoubleDouble *sin_y, DoubleDouble *cos_y)
 {
-    const TablePoint t = table_point(y);
     DoubleDouble w, v;
-    sin_versine_small(t.r, &w, &v);
+    sin_versine_small(t->r, &w, &v);
     if (want & WANT_COS) {
-        *cos_y = dd_add_smaller(t.C, dd_neg(dd_add(dd_mul(t.C, v), dd_mul(t.S, w))));
+        /* |C v| <= r^2/2 <= |S w|/4 unless S = 0 */
+        *cos_y = dd_add_smaller(t->C, dd_neg(dd_add_smaller(dd_mul(t->S, w), dd_mul(t->C, v))));
     }
     if (want & WANT_SIN) {
-        const DoubleDouble s = dd_add_smaller(t.S, dd_add_smaller(dd_mul(t.C, w), dd_neg(dd_mul(t.S, v))));
-        *sin_y = (DoubleDouble){t.sign * s.hi, t.sign * s.lo};
+        const DoubleDouble s = dd_add_smaller(t->S, dd_add_smaller(dd_mul(t->C, w), dd_neg(dd_mul(t->S, v))));
+        *sin_y = (DoubleDouble){t->sign * s.hi, t->sign * s.lo};
     }
+}
+
+static void sincos_table(DoubleDouble y, int want, DoubleDouble *sin_y, DoubleDouble *cos_y)
+{
+    const DdTablePoint t = table_point(y);
+    sincos_at(&t, want, sin_y, cos_y);
 }
 
 /* The leading double of cos |y| (odd = 0) or sin |y| (odd = 1) of sincos_table, formed early and
@@ -283,7 +284,7 @@ static void sincos_table(DoubleDouble y, int want, DoubleDouble *sin_y, DoubleDo
  * the bound 2^-66 |lead| on what was left out or rounded, rounds back to *lead either way.
  * It is then the leading double of the double-double result (the same rounding to nearest),
  * which the caller need not wait for. */
-static int table_leading(const TablePoint *t, int odd, double *lead)
+static int table_leading(const DdTablePoint *t, int odd, double *lead)
 {
     const DoubleDouble r = t->r, C = t->C, S = t->S;
     const DoubleDouble R2 = dd_two_prod(r.hi, r.hi);
@@ -378,12 +379,12 @@ void dd_cos_sin_begin(DoubleDouble x, DdCosSin *t)
     const double z = dd_mul(y, y).hi;
     const double other = odd ? 1.0 + z * horner_double(COS_COEF, z) : y.hi + y.hi * z * horner_double(SIN_COEF, z);
     t->sin_x = (quadrant == 0 || quadrant == 1) ? other : -other;
-    const TablePoint point = table_point(y);
+    t->point = table_point(y);
     double lead;
-    t->cos_lead_certain = table_leading(&point, odd, &lead);
+    t->cos_lead_certain = table_leading(&t->point, odd, &lead);
     /* cos x = flip (cos y or sin y); table_leading works on |y| and sin is odd */
     const double flip = (quadrant == 1 || quadrant == 2) ? -1.0 : 1.0;
-    t->cos_lead = flip * (odd ? point.sign * lead : lead);
+    t->cos_lead = flip * (odd ? t->point.sign * lead : lead);
 }
 
 DoubleDouble dd_cos_sin_end(const DdCosSin *t)
@@ -394,7 +395,7 @@ DoubleDouble dd_cos_sin_end(const DdCosSin *t)
     const int odd = t->quadrant & 1;
     const double flip = (t->quadrant == 1 || t->quadrant == 2) ? -1.0 : 1.0;
     DoubleDouble sin_y, cos_y;
-    sincos_table(t->y, odd ? WANT_SIN : WANT_COS, &sin_y, &cos_y);
+    sincos_at(&t->point, odd ? WANT_SIN : WANT_COS, &sin_y, &cos_y);
     const DoubleDouble value = odd ? sin_y : cos_y;
     DoubleDouble cos_x;
     if (DD_LIKELY(t->cos_lead_certain)) {

@@ -241,7 +241,14 @@ void dd_cos_sin(DoubleDouble x, DoubleDouble *cos_x, double *sin_x);
  * one argument in 10^4); dd_cos_sin_end gives cos x in double-double, whose leading double is
  * then cos_lead. */
 typedef struct {
+    double sign;           /* y = sign |y| */
+    DoubleDouble r;        /* |y| - a, a = i/64 the table point nearest |y| */
+    DoubleDouble C, S;     /* cos a, sin a */
+} DdTablePoint;
+
+typedef struct {
     DoubleDouble y;        /* x - n pi/2, |y| <= pi/4 */
+    DdTablePoint point;    /* |y|'s place in the table */
     int quadrant;          /* n mod 4 */
     double sin_x;          /* sin x, the double of dd_cos_sin */
     double cos_lead;       /* the leading double of cos x when cos_lead_certain */

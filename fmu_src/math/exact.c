@@ -321,7 +321,7 @@ typedef struct {
  * parts); beyond, the reduction with 1/(2 pi) to 1248 bits (Payne-Hanek, above) for every
  * finite double. For |theta0| <= 3.2 nothing is subtracted and th/2 is exact. The sine and
  * cosine in two steps (dd_cos_sin_begin, _end): between them a release from rest starts its
- * Landen chain on the leading double of cos(th/2) (exact_init_dd). */
+ * Landen chain on the leading double of cos(th/2) (init_from_rest). */
 static void reduce_initial_angle(double theta0, InitialState *st, DdCosSin *trig)
 {
     double turns = 0.0;
@@ -424,23 +424,17 @@ static int libration_parameter(double omega0, const InitialState *st, RegimePara
     return elliptic_param_acceptable(par->m, m1.hi, m1.lo) ? 0 : -1;
 }
 
-/* Writes the libration of par into e (its bytes cleared, or its Landen chain begun on c.hi:
- * chain != NULL); *rate_n is the rate of u scaled by 2^-exponent. */
+/* Writes the libration of par into e (its bytes cleared); *rate_n is the rate of u scaled by
+ * 2^-exponent. */
 static void init_libration(PendulumExact *e, double omega0, DoubleDouble w0, const InitialState *st,
-                           const RegimeParameter *par, const EllipticChain *chain, DoubleDouble *rate_n,
-                           DoubleDouble *inv_K)
+                           const RegimeParameter *par, DoubleDouble *rate_n, DoubleDouble *inv_K)
 {
     const DoubleDouble s = st->s, c = st->c, q = par->q;
     const double k = par->k;
     const int from_rest = omega0 == 0.0;
     e->regime = PENDULUM_LIBRATION;
-    if (chain != NULL) {
-        /* begun on c.hi (exact_init_dd): what elliptic_param_init_root does with k' = c */
-        elliptic_param_finish(&e->ell, chain, par->m1.hi, c.lo, inv_K);
-    } else {
-        (void)elliptic_param_init_root(&e->ell, par->m, par->m1.hi, par->m1.lo, par->root_known ? &c : NULL,
-                                       inv_K);   /* accepted by libration_parameter */
-    }
+    (void)elliptic_param_init_root(&e->ell, par->m, par->m1.hi, par->m1.lo, par->root_known ? &c : NULL,
+                                   inv_K);   /* accepted by libration_parameter */
     e->m = par->m;
     e->m1 = par->m1.hi;
     e->k = k;
@@ -569,23 +563,75 @@ static void clear_state(PendulumExact *e)
  * steps: reduce the angle (1), find the side of the separatrix (2), the parameter of the
  * regime (3a, 3b), then, once nothing can fail, the state written in place: its bytes cleared
  * (clear_state), the constants of the regime (3a, 3b or init_separatrix) and the rates in quarter periods (4). */
+/* The common fields of every regime (the state cleared before). */
+static void set_inputs(PendulumExact *e, double theta0, double omega0, DoubleDouble w0, double t0, double g,
+                       double L, const InitialState *st)
+{
+    e->w0 = w0.hi;
+    e->w0_lo = w0.lo;
+    e->g = g;
+    e->L = L;
+    e->t0 = t0;
+    e->theta0 = theta0;
+    e->omega0 = omega0;
+    e->direction = 1.0;
+    e->theta_turns = st->turns;
+    e->theta_reduced = st->th.hi;
+}
+
+/* A release from rest (omega0 = +-0) with c = cos(th/2) != 0 whose leading double is known
+ * (trig->cos_lead_certain): a libration whose k' is |c| (c < 0: th is moved by a turn,
+ * finish_initial_angle), and nothing can fail (m = s^2 and m1 = c^2 are in range, c^2 does
+ * not underflow for |c| > 2^-500). The state is what the general path below writes (steps 2,
+ * 3a and 4 for q = 0: m1 = c^2, u0 = +-K, x0 = +-1), but its Landen chain is started on c's
+ * leading double before c's low part is formed (the chain of roots and quotients is the
+ * set-up's longest), and the steps that only matter for a moving start are left out. */
+static void init_from_rest(PendulumExact *e, double theta0, double omega0, DoubleDouble w0, double t0, double g,
+                           double L, InitialState *st, const DdCosSin *trig)
+{
+    clear_state(e);
+    const double k = fabs(trig->sin_x), m = smaller(k * k, 1.0);
+    EllipticChain chain;
+    elliptic_param_begin(&e->ell, m, fabs(trig->cos_lead), &chain);
+    finish_initial_angle(st, trig);
+    const DoubleDouble c = st->c, m1 = dd_mul(c, c);
+    DoubleDouble inv_K;
+    elliptic_param_finish(&e->ell, &chain, m1.hi, c.lo, &inv_K);
+    set_inputs(e, theta0, omega0, w0, t0, g, L, st);
+    e->regime = PENDULUM_LIBRATION;
+    e->m = m;
+    e->m1 = m1.hi;
+    e->k = k;
+    e->kc = e->ell.kc;
+    e->K_hi = e->ell.K_hi;
+    e->K_lo = e->ell.K_lo;
+    e->scale = w0.hi;
+    e->scale_lo = w0.lo;
+    e->omega_half = k * w0.hi;
+    e->sqrt_k1 = k / (1.0 + e->ell.kc);   /* sqrt(k_1) = k / (1 + k'), no underflow of k^2 */
+    /* released at a turning point: u0 = +-K (at rest at the bottom, k = 0: theta = 0) */
+    e->u0 = k == 0.0 ? 0.0 : (st->s.hi < 0.0 ? -e->K_hi : e->K_hi);
+    /* step 4 for rate_n = w0 2^-exponent: the powers of two drop out of every product and
+     * quotient (w0 and the results are normal doubles), so rho = w0 / K, period = 4K / w0 */
+    const DoubleDouble rho = dd_mul(w0, inv_K);
+    e->rho_hi = rho.hi;
+    e->rho_lo = rho.lo;
+    e->rho_head = dd_head26(rho.hi);
+    e->rho_tail = rho.hi - e->rho_head;
+    e->x0_hi = e->u0 < 0.0 ? -1.0 : (e->u0 > 0.0 ? 1.0 : 0.0);   /* a turning point, x0_lo = 0 */
+    const DoubleDouble four_K = {4.0 * e->K_hi, 4.0 * e->K_lo};
+    e->period = dd_div(four_K, w0).hi;
+}
+
 static int exact_init_dd(PendulumExact *e, double theta0, double omega0, DoubleDouble w0, double t0,
                          double g, double L)
 {
     InitialState st;
     DdCosSin trig;
     reduce_initial_angle(theta0, &st, &trig);
-    /* Released from rest with c = cos(th/2) != 0, the motion is a libration whose k' is |c|
-     * (c < 0: th is moved by a turn, finish_initial_angle), and nothing below can fail (m = s^2
-     * and m1 = c^2 are in range, c^2 does not underflow): the state is cleared and its Landen
-     * chain started on c's leading double now, while the low part is formed (the chain of
-     * roots and quotients is the set-up's longest), as init_libration would from the whole c. */
-    EllipticChain chain;
-    const int early = omega0 == 0.0 && trig.cos_lead_certain && trig.cos_lead != 0.0;
-    if (early) {
-        clear_state(e);
-        const double k = fabs(trig.sin_x);
-        elliptic_param_begin(&e->ell, smaller(k * k, 1.0), fabs(trig.cos_lead), &chain);
+    if (omega0 == 0.0 && trig.cos_lead_certain && fabs(trig.cos_lead) > 0x1p-500) {
+        init_from_rest(e, theta0, omega0, w0, t0, g, L, &st, &trig);
+        return 0;
     }
     finish_initial_angle(&st, &trig);
     locate_separatrix(theta0, omega0, w0, g, L, &st);
@@ -598,33 +644,19 @@ static int exact_init_dd(PendulumExact *e, double theta0, double omega0, DoubleD
     } else if (side < 0.0) {
         status = rotation_parameter(&st, &par);
     }
-    if (status != 0 && early) {
-        clear_state(e);   /* not reached from rest (above) */
-    }
     if (status < 0) {
         return -1;
     }
 
-    if (!early) {
-        clear_state(e);
-    }
-    e->w0 = w0.hi;
-    e->w0_lo = w0.lo;
-    e->g = g;
-    e->L = L;
-    e->t0 = t0;
-    e->theta0 = theta0;
-    e->omega0 = omega0;
-    e->direction = 1.0;
-    e->theta_turns = st.turns;
-    e->theta_reduced = st.th.hi;
+    clear_state(e);
+    set_inputs(e, theta0, omega0, w0, t0, g, L, &st);
     if (status == 1) {
         init_separatrix(e, st.s, st.c, omega0, w0);
         return 0;
     }
     DoubleDouble rate_n, inv_K;
     if (side > 0.0) {
-        init_libration(e, omega0, w0, &st, &par, early ? &chain : NULL, &rate_n, &inv_K);
+        init_libration(e, omega0, w0, &st, &par, &rate_n, &inv_K);
     } else {
         init_rotation(e, omega0, &st, &par, &rate_n, &inv_K);
     }
@@ -828,14 +860,14 @@ static inline void libration_angle_omega(const PendulumExact *ex, EllipticHomoge
     *omega = 2.0 * (sign * ex->omega_half * (cn_num / den));
 }
 
-void pendulum_exact_eval(const PendulumExact *ex, double t, double *theta, double *omega)
-{
-#ifdef EXACT_HANDS_ON_TO_FMA
-    if (EXACT_FMA_HERE()) {
-        pendulum_exact_eval_fma(ex, t, theta, omega);
-        return;
-    }
+/* pendulum_exact_eval for every motion and time (the common libration below, eval_libration,
+ * leaves the rest to it): out of line, so that the common case is a function without calls
+ * (no registers saved and restored around it). */
+#if defined(__GNUC__)
+__attribute__((noinline))
 #endif
+static void eval_any(const PendulumExact *ex, double t, double *theta, double *omega)
+{
     double angle, om, f = 0.0;
     DoubleDouble n = dd_of(0.0);
     DoubleDouble winding = dd_of(0.0);   /* half turns of a rotation since t0: direction N */
@@ -893,6 +925,60 @@ void pendulum_exact_eval(const PendulumExact *ex, double t, double *theta, doubl
         *theta = ex->theta0 + add_half_turns(winding, angle - ex->theta_reduced);
     }
     *omega = om;
+}
+
+/* A libration at a phase within 2^50 quarter periods whose bottom argument is within the
+ * series (always so but for overflowed inputs) and |theta_turns| < 2^50: the operations of
+ * eval_any for that case (phase_at, elliptic_sncndn_homogeneous_pair, libration_angle_omega,
+ * add_half_turns), the same bits, inline and without a call. Returns 0, nothing written,
+ * off that case. */
+static inline int eval_libration(const PendulumExact *ex, double t, double *theta, double *omega)
+{
+    if (ex->regime != PENDULUM_LIBRATION || t == ex->t0 || !(fabs(ex->theta_turns) < 0x1p50)) {
+        return 0;
+    }
+    const DoubleDouble tau = dd_two_sum(t, -ex->t0);
+    const double x_hi = ex->rho_hi * tau.hi;
+    if (!(fabs(x_hi) < 0x1p50)) {
+        return 0;
+    }
+    double quarters;
+    const double v = phase_near(ex, tau.hi, tau.lo, x_hi, &quarters) * ex->K_hi;
+    const EllipticParam *p = &ex->ell;
+    const double z = fabs(v) * p->bottom_scale;
+    if (!(z <= ELLIPTIC_SERIES_Z_MAX)) {
+        return 0;
+    }
+    double sz, cz;
+    trig_sincos_small(z, &sz, &cz);
+    EllipticHomogeneous h1 = elliptic_landen_bottom(p, z, sz, cz);
+    for (int i = p->levels - 1; i >= 1; --i) {
+        h1 = elliptic_landen_step(p, i, h1);
+    }
+    EllipticHomogeneous h0 = elliptic_landen_step(p, 0, h1);
+    if (v < 0.0) {
+        h1.S = -h1.S;
+        h0.S = -h0.S;
+    }
+    const int quarter = (int)((long long)quarters & 3);   /* |quarters| < 2^51 */
+    double angle, om;
+    libration_angle_omega(ex, h0, h1, (double)(quarter & 1), 1.0 - (double)(quarter & 2), &angle, &om);
+    *theta = add_half_turns(dd_of(2.0 * ex->theta_turns), angle);
+    *omega = om;
+    return 1;
+}
+
+void pendulum_exact_eval(const PendulumExact *ex, double t, double *theta, double *omega)
+{
+#ifdef EXACT_HANDS_ON_TO_FMA
+    if (EXACT_FMA_HERE()) {
+        pendulum_exact_eval_fma(ex, t, theta, omega);
+        return;
+    }
+#endif
+    if (!eval_libration(ex, t, theta, omega)) {
+        eval_any(ex, t, theta, omega);
+    }
 }
 
 /* ---------------------------------------------------------------------------------------
