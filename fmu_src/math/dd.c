@@ -238,7 +238,8 @@ static void sin_versine_small(DoubleDouble r, DoubleDouble *w, DoubleDouble *v)
 
 /* sin y (want & WANT_SIN) and cos y (want & WANT_COS) in double-double for |y| <= pi/4 + 2^-50
  * (y normalised): |y| = a + r with a = i/64 the nearest table point, |r| <= 1/128 (r exact:
- * |y.hi| - a by Sterbenz, then TwoSum with y.lo), and by the addition theorems
+ * |y.hi| - a by Sterbenz, |y.hi| >= a/2 for i >= 1, then TwoSum with y.lo), and by the
+ * addition theorems
  *   cos(a + r) = C - (C v + S w),  sin(a + r) = S + (C w - S v),
  * C, S = cos a, sin a (TABLE_64), w = sin r, v = 1 - cos r (sin_versine_small). The corrections
  * are at most 2^-7 of cos and half of sin (a >= 2|r| unless a = 0), so both keep ~2^-104 relative
@@ -248,7 +249,11 @@ static DdTablePoint table_point(DoubleDouble y)
     DdTablePoint t;
     t.sign = y.hi < 0.0 ? -1.0 : 1.0;
     const DoubleDouble u = {t.sign * y.hi, t.sign * y.lo};   /* |y| */
-    const int i = (int)(u.hi * 64.0 + 0.5);                   /* 0..50 */
+    /* i = nearest(64 |y|), ties up, from the exact 64 |y|: (int)(64 |y| + 0.5) would round
+     * 1/128 - 2^-60 up to i = 1, where |y| - 1/64 is not exact */
+    const double scaled = u.hi * 64.0;
+    const int whole = (int)scaled;
+    const int i = whole + (scaled - (double)whole >= 0.5);   /* 0..50 */
     const double *row = TABLE_64[i];
     t.C = (DoubleDouble){row[0], row[1]};
     t.S = (DoubleDouble){row[2], row[3]};

@@ -693,6 +693,12 @@ int pendulum_exact_init_gl(PendulumExact *ex, double theta0, double omega0, doub
      * the one of those doubles, not of fl(sqrt(fl(g / L))) (whose two roundings can move a
      * state within ~1e-16 of the separatrix to the other side). Scaled by powers of two so that
      * neither the quotient nor Dekker's split overflows or underflows. */
+    if (g >= 0x1p-400 && g <= 0x1p400 && L >= 0x1p-400 && L <= 0x1p400) {
+        /* the same w0 without the scaling below: every step is exact under powers of two (the
+         * quotient's and the root's parts stay normal, g / L within 2^+-800), and the root's
+         * argument is the one below times a power of 4 */
+        return exact_init_dd(ex, theta0, omega0, dd_sqrt(dd_div(dd_of(g), dd_of(L))), t0, g, L);
+    }
     const int eg = dd_frexp_exponent(g), eL = dd_frexp_exponent(L);
     const double gm = dd_scalbn(g, -eg), Lm = dd_scalbn(L, -eL);   /* frexp's fractions */
     int shift = eg - eL;                               /* g / L = (gm / Lm) 2^shift */
