@@ -173,6 +173,10 @@ void elliptic_param_begin(EllipticParam *p, double m, double kc, EllipticChain *
     p->m = m;
     p->k = sqrt(m);
     p->kc = kc;
+    for (int i = 0; i < ELLIPTIC_MAX_LEVELS; ++i) {   /* landen_k and levels: zero on entry */
+        p->landen_1pk[i] = 1.0;
+        p->landen_1mk[i] = 1.0;
+    }
     /* Descending Landen sequence (A&S 16.12.1, DLMF 22.7.1; the AGM of A&S 16.4 normalised,
      * k_n = c_n / a_n, k'_n = b_n / a_n):
      *   k_{n+1} = (1 - k'_n) / (1 + k'_n) = m_n / (1 + k'_n)^2,
@@ -203,10 +207,6 @@ void elliptic_param_begin(EllipticParam *p, double m, double kc, EllipticChain *
         ++n;
     }
     chain->kc[n] = kc_n;
-    for (int i = n; i < ELLIPTIC_MAX_LEVELS; ++i) {   /* the levels below the bottom (landen_k: zero on entry) */
-        p->landen_1pk[i] = 1.0;
-        p->landen_1mk[i] = 1.0;
-    }
     p->levels = n;
     p->sqrt_k1 = p->k / (1.0 + kc);   /* sqrt(k_1) = sqrt((1 - k')/(1 + k')) = k / (1 + k') */
     p->bottom_m = m_n;
