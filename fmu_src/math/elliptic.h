@@ -9,7 +9,9 @@
  *
  * Method (why it is accurate for m1 -> 0):
  *  - K by the arithmetic-geometric mean from k' (A&S 17.6.1-2, DLMF 19.8.5) in double-double,
- *    formed with the parameter set (elliptic_param_init).
+ *    formed with the parameter set (elliptic_param_init): read off the same descending Landen
+ *    levels the evaluation uses (the AGM normalised), each level's exact k'_n carried as the
+ *    chain's double plus a first-order tail, K = K(m_N) / prod (1 + k'_n)/2 (elliptic.c).
  *  - sn, cn, dn by the descending Landen (Gauss) transformation A&S 16.12.2-4 in its
  *    algebraic form, i.e. the AGM sequence of moduli k_{n+1} = (1 - k_n')/(1 + k_n') of
  *    A&S 17.5 / 16.4, bottomed out with the small-parameter expansions A&S 16.13.1-3.
