@@ -2,18 +2,21 @@
 
 Usage (each build's library through ``PENDULUM_EXACT_LIB``, one process per build):
 
-    PENDULUM_EXACT_LIB=old.so python scripts/compare-exact-builds.py eval old.npz [N]
-    PENDULUM_EXACT_LIB=new.so python scripts/compare-exact-builds.py eval new.npz [N]
+    PENDULUM_EXACT_LIB=old.so python scripts/compare-exact-builds.py eval old.npz [N] [--late]
+    PENDULUM_EXACT_LIB=new.so python scripts/compare-exact-builds.py eval new.npz [N] [--late]
     python scripts/compare-exact-builds.py compare old.npz new.npz
 
 The states (seeded, the same for both builds): libration from rest and moving, amplitudes
 within 1e-12 of pi, speeds within 1 to 8 ulps and within 1e-16 .. 1e-3 (relative) of the
 separatrix on both sides, rotation, angles wound up by up to 1e12 turns, any L and g. Each
-state is evaluated at three times in its first three periods and one time 1e2 .. 1e6 periods on.
+state is evaluated at three times in its first three periods and one time 1e2 .. 1e6 periods on;
+with ``--late`` at four times 1e8 .. 1e12 periods on instead, where the phase rests on the last
+bits of the rate (double-double, ~2^-104) and an output of either build is no longer certain to
+be rounded to nearest (``compare`` then prints the late rows alone).
 ``compare`` prints, per regime and for the early and late times: the largest and the 50th, 99th
-percentile errors of theta (rad, relative to |theta| where it exceeds 1) and of omega (relative to the state's largest |omega|) for both
-builds, the number of outputs that differ between them, by how many ulps, and how many of those
-moved closer to mpmath.
+percentile errors of theta (rad, relative to |theta| where it exceeds 1) and of omega (relative
+to the state's largest |omega|) for both builds, the number of outputs that differ between
+them, by how many ulps, and how many of those moved closer to mpmath.
 """
 from __future__ import annotations
 
@@ -65,23 +68,28 @@ def states(n: int) -> dict[str, np.ndarray]:
     return {"theta0": a[:, 0], "omega0": a[:, 1], "L": a[:, 2], "g": a[:, 3], "regime": a[:, 4].astype(int)}
 
 
-def times_for(theta0: float, omega0: float, L: float, g: float, rng: np.random.Generator) -> list[float]:
-    """Three times within about three periods and one 1e2 .. 1e6 periods on."""
+def times_for(theta0: float, omega0: float, L: float, g: float, rng: np.random.Generator,
+              late: bool = False) -> list[float]:
+    """Three times within about three periods and one 1e2 .. 1e6 periods on (late: four times
+    1e8 .. 1e12 periods on)."""
     w0 = float(np.sqrt(g / L))
     unit = 2 * np.pi / max(w0, abs(omega0))
+    if late:
+        return [float(unit * 10.0 ** rng.uniform(8, 12)) for _ in range(4)]
     early = sorted(float(x) for x in rng.uniform(0, 3 * unit * 4, 3))
     return early + [float(unit * 10.0 ** rng.uniform(2, 6))]
 
 
-def evaluate(out: str, n: int) -> None:
+def evaluate(out: str, n: int, late: bool = False) -> None:
     from pendulum_fmu.fmu.library import exact
     s = states(n)
     rng = np.random.default_rng(7)
-    t = np.array([times_for(*(float(s[k][i]) for k in ("theta0", "omega0", "L", "g")), rng)
-                  for i in range(len(s["theta0"]))])
+    t = np.array([times_for(float(s["theta0"][i]), float(s["omega0"][i]), float(s["L"][i]), float(s["g"][i]),
+                            rng, late) for i in range(len(s["theta0"]))])
     rep = {k: np.repeat(s[k], 4) for k in ("theta0", "omega0", "L", "g")}
     theta, omega = exact(rep["theta0"], rep["omega0"], rep["L"], rep["g"], t.ravel(), workers=1)
-    np.savez(out, theta=theta, omega=omega, t=t.ravel(), regime=np.repeat(s["regime"], 4), **rep)
+    np.savez(out, theta=theta, omega=omega, t=t.ravel(), regime=np.repeat(s["regime"], 4), late=np.array(late),
+             theta0=rep["theta0"], omega0=rep["omega0"], L=rep["L"], g=rep["g"])
 
 
 def ulps(a: np.ndarray, b: np.ndarray) -> np.ndarray:
@@ -106,13 +114,16 @@ def compare(old_path: str, new_path: str) -> None:
                 err[name][0, i + j] = float(abs(mp.mpf(float(data["theta"][i + j])) - th_ref[j])
                                             / max(1, abs(th_ref[j])))
                 err[name][1, i + j] = float(abs(mp.mpf(float(data["omega"][i + j])) - om_ref[j])) / scale
-    late = (np.arange(n) % 4) == 3
-    print("| regime | times | output | old max | old p50 | old p99 | new max | new p50 | new p99 | changed | max ulps | closer / farther |")
+    late = (np.arange(n) % 4) == 3 if not bool(old.get("late", False)) else np.ones(n, bool)
+    print("| regime | times | output | old max | old p50 | old p99 | new max | new p50 | new p99 | changed "
+          "| max ulps | closer / farther |")
     print("|---|---|---|---|---|---|---|---|---|---|---|---|")
     for index, regime in enumerate(REGIMES):
         for when, mask_t in (("early", ~late), ("late", late)):
             mask = (old["regime"] == index) & mask_t
             for row, output in ((0, "theta"), (1, "omega")):
+                if not mask.any():
+                    continue
                 e_old, e_new = err["old"][row, mask], err["new"][row, mask]
                 a, b = old[output][mask], new[output][mask]
                 changed = a != b
@@ -130,6 +141,8 @@ def compare(old_path: str, new_path: str) -> None:
           f"as close {int(np.sum(e_new[changed] == e_old[changed]))}; sum of errors over them: old "
           f"{e_old[changed].sum():.3e}, new {e_new[changed].sum():.3e}")
     for when, mask_t in (("early", ~late), ("all", np.ones(n, bool))):
+        if not mask_t.any():
+            continue
         for row, output in ((0, "theta"), (1, "omega")):
             print(f"overall {when} {output}: old max {err['old'][row, mask_t].max():.3e}, "
                   f"new max {err['new'][row, mask_t].max():.3e}")
@@ -140,6 +153,7 @@ def compare(old_path: str, new_path: str) -> None:
 
 if __name__ == "__main__":
     if sys.argv[1] == "eval":
-        evaluate(sys.argv[2], int(sys.argv[3]) if len(sys.argv) > 3 else 200)
+        numbers = [a for a in sys.argv[3:] if a != "--late"]
+        evaluate(sys.argv[2], int(numbers[0]) if numbers else 200, "--late" in sys.argv[3:])
     else:
         compare(sys.argv[2], sys.argv[3])

@@ -226,8 +226,39 @@ static inline double dd_nearest_integer(double x)
  * of sin y and cos y (A&S 4.3.65-66) summed in double-double, then the quadrant (dd.c). */
 void dd_sincos(DoubleDouble x, DoubleDouble *sin_x, DoubleDouble *cos_x);
 
-/* The same with only cos x in double-double and sin x as a double (within an ulp or so):
- * about half the work, for callers that need the digits of one of the two only. */
+/* cos x in double-double and sin x as a double (within an ulp or so) for |x| <= 2 pi, for the
+ * exact port's set-up: x = n pi/2 + y as above, and the one of cos y, sin y that gives cos x
+ * by a table of cos and sin at multiples of 1/64 and the series of sin and 1 - cos of the
+ * remainder |r| <= 1/128 (~2^-104 relative; a fifth of dd_sincos's work), the other as the
+ * Maclaurin series in double that dd_sincos has always used for its double result (so sin x
+ * has the same bits as before). */
 void dd_cos_sin(DoubleDouble x, DoubleDouble *cos_x, double *sin_x);
+
+/* dd_cos_sin in two steps, for a caller that can start on the leading double of cos x before
+ * its low part is known (the exact port's set-up from rest): dd_cos_sin_begin reduces x, forms
+ * sin x (the double of dd_cos_sin) and the leading double of cos x by a shorter sum, with
+ * cos_lead_certain = 1 when that double is certainly cos x rounded to nearest (all but about
+ * one argument in 10^4); dd_cos_sin_end gives cos x in double-double, whose leading double is
+ * then cos_lead. */
+typedef struct {
+    double sign;           /* y = sign |y| */
+    DoubleDouble r;        /* |y| - a, a = i/64 the table point nearest |y| */
+    DoubleDouble C, S;     /* cos a, sin a */
+} DdTablePoint;
+
+typedef struct {
+    DoubleDouble y;        /* x - n pi/2, |y| <= pi/4 */
+    DdTablePoint point;    /* |y|'s place in the table */
+    int quadrant;          /* n mod 4 */
+    double sin_x;          /* sin x, the double of dd_cos_sin */
+    double cos_lead;       /* the leading double of cos x when cos_lead_certain */
+    int cos_lead_certain;
+} DdCosSin;
+
+void dd_cos_sin_begin(DoubleDouble x, DdCosSin *t);
+DoubleDouble dd_cos_sin_end(const DdCosSin *t);
+
+/* sin x in double-double for |x| <= 2 pi by the table of dd_cos_sin (~2^-104 relative). */
+DoubleDouble dd_sin(DoubleDouble x);
 
 #endif

@@ -9,7 +9,9 @@
  *
  * Method (why it is accurate for m1 -> 0):
  *  - K by the arithmetic-geometric mean from k' (A&S 17.6.1-2, DLMF 19.8.5) in double-double,
- *    formed with the parameter set (elliptic_param_init).
+ *    formed with the parameter set (elliptic_param_init): read off the same descending Landen
+ *    levels the evaluation uses (the AGM normalised), each level's exact k'_n carried as the
+ *    chain's double plus a first-order tail, K = K(m_N) / prod (1 + k'_n)/2 (elliptic.c).
  *  - sn, cn, dn by the descending Landen (Gauss) transformation A&S 16.12.2-4 in its
  *    algebraic form, i.e. the AGM sequence of moduli k_{n+1} = (1 - k_n')/(1 + k_n') of
  *    A&S 17.5 / 16.4, bottomed out with the small-parameter expansions A&S 16.13.1-3.
@@ -74,6 +76,15 @@ typedef struct {
     double landen_1mk[ELLIPTIC_MAX_LEVELS]; /* 1 - k_n = 2 k'_{n-1} / (1 + k'_{n-1}) */
 } EllipticParam;
 
+/* 1 when elliptic_param_init and elliptic_param_init_root accept the parameter: m and m1 in
+ * [0, 1], m1_lo finite and m + m1 equal to 1 within 1e-12 (a caller can check before it
+ * writes anything). */
+static inline int elliptic_param_acceptable(double m, double m1_hi, double m1_lo)
+{
+    return m >= 0.0 && m <= 1.0 && m1_hi >= 0.0 && m1_hi <= 1.0 && isfinite(m1_lo)
+           && fabs(m + m1_hi - 1.0) <= 1e-12;
+}
+
 /* Prepares the parameter set for m in [0, 1] and m1 = 1 - m given separately, m1 in
  * double-double (m1_lo may be 0); K is computed in double-double from it.
  * Returns 0, or -1 (p untouched) if m or m1 is outside [0, 1] or NaN, or m + m1 is not
@@ -87,6 +98,23 @@ int elliptic_param_init(EllipticParam *p, double m, double m1_hi, double m1_lo);
  * it, padding included, as the FMU checksums its states bytewise); on failure p is untouched. */
 int elliptic_param_init_root(EllipticParam *p, double m, double m1_hi, double m1_lo, const DoubleDouble *root,
                              DoubleDouble *inv_K);
+
+/* The set-up of elliptic_param_init_root in two steps, for a caller that knows k' as a double
+ * before its low part (the pendulum from rest: the leading double of cos(theta0/2) comes
+ * first): elliptic_param_begin runs the Landen chain of the double k' (every field the
+ * evaluation reads but K, 1/K and the bottom scale), elliptic_param_finish forms K and 1/K in
+ * double-double from the chain and k' = kc + kc_lo. Together, on a parameter set whose bytes
+ * are zero, they write what elliptic_param_init_root writes for 0 <= m <= 1, 0 < m1 <= 1
+ * (checked by the caller: elliptic_param_acceptable) and k' = sqrt(m1) > 0. */
+typedef struct {
+    double kc[ELLIPTIC_MAX_LEVELS + 1];     /* k'_n of the double chain, n = 0..levels */
+    double root[ELLIPTIC_MAX_LEVELS];       /* sqrt(k'_n), rounded */
+    double one_plus[ELLIPTIC_MAX_LEVELS];   /* 1 + k'_n, rounded */
+} EllipticChain;
+
+void elliptic_param_begin(EllipticParam *p, double m, double kc, EllipticChain *chain);
+void elliptic_param_finish(EllipticParam *p, const EllipticChain *chain, double m1, double kc_lo,
+                           DoubleDouble *inv_K);
 
 /* Above this |z| the bottom level calls libm's sin and cos, below it trig_sincos_small
  * (trig.h: their Maclaurin series to z^17 and z^16, no range reduction). */

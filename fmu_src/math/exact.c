@@ -94,7 +94,8 @@ static void init_separatrix(PendulumExact *e, DoubleDouble s, DoubleDouble c, do
     e->scale_lo = w0.lo;
     e->omega_half = w0.hi;
     e->period = INFINITY;
-    (void)elliptic_param_init(&e->ell, 1.0, 0.0, 0.0);   /* K = +inf; cannot fail */
+    DoubleDouble unused;
+    (void)elliptic_param_init_root(&e->ell, 1.0, 0.0, 0.0, NULL, &unused);   /* K = +inf; accepted */
     if (omega0 == 0.0) {
         /* At rest on the unstable equilibrium (c == 0): stays there. */
         e->direction = 0.0;
@@ -318,8 +319,10 @@ typedef struct {
 /* Step 1. theta0 = 2 pi j + th, th in (-pi, pi] (double-double), and sin, cos of th/2. One
  * subtraction of whole turns does it for |theta0| < 2^50 (j < 2^48, j 2 pi exact in three
  * parts); beyond, the reduction with 1/(2 pi) to 1248 bits (Payne-Hanek, above) for every
- * finite double. For |theta0| <= 3.2 nothing is subtracted and th/2 is exact. */
-static void reduce_initial_angle(double theta0, InitialState *st)
+ * finite double. For |theta0| <= 3.2 nothing is subtracted and th/2 is exact. The sine and
+ * cosine in two steps (dd_cos_sin_begin, _end): between them a release from rest starts its
+ * Landen chain on the leading double of cos(th/2) (init_from_rest). */
+static void reduce_initial_angle(double theta0, InitialState *st, DdCosSin *trig)
 {
     double turns = 0.0;
     DoubleDouble th = dd_of(theta0);
@@ -331,19 +334,23 @@ static void reduce_initial_angle(double theta0, InitialState *st)
         th = subtract_turns(th, j);
         turns += j;
     }
-    DoubleDouble half = {0.5 * th.hi, 0.5 * th.lo};   /* exact */
-    DoubleDouble s = dd_of(0.0), c;
-    dd_cos_sin(half, &c, &s.hi);
-    if (c.hi < 0.0 || (c.hi == 0.0 && th.hi < 0.0)) {
+    const DoubleDouble half = {0.5 * th.hi, 0.5 * th.lo};   /* exact */
+    dd_cos_sin_begin(half, trig);
+    st->turns = turns;
+    st->th = th;
+}
+
+static void finish_initial_angle(InitialState *st, const DdCosSin *trig)
+{
+    DoubleDouble s = dd_of(trig->sin_x), c = dd_cos_sin_end(trig);
+    if (c.hi < 0.0 || (c.hi == 0.0 && st->th.hi < 0.0)) {
         /* th just outside (-pi, pi]: move it by one turn; th/2 moves by pi, s and c change sign. */
-        double shift = th.hi > 0.0 ? 1.0 : -1.0;
-        turns += shift;
-        th = subtract_turns(th, shift);
+        double shift = st->th.hi > 0.0 ? 1.0 : -1.0;
+        st->turns += shift;
+        st->th = subtract_turns(st->th, shift);
         s = dd_neg(s);
         c = dd_neg(c);
     }
-    st->turns = turns;
-    st->th = th;
     st->s = s;
     st->c = c;
 }
@@ -374,11 +381,22 @@ static void locate_separatrix(double theta0, double omega0, DoubleDouble w0, dou
     }
 }
 
+/* The parameter of a libration or rotation, formed before anything is written (so that a
+ * state that cannot be set up leaves the caller's bytes untouched). */
+typedef struct {
+    double m;               /* the parameter the Jacobi functions are taken at (mu for a rotation) */
+    DoubleDouble m1;        /* its complement */
+    double k;               /* libration: sqrt(m) of the motion */
+    DoubleDouble q;         /* libration: |omega0| / (2 w0) */
+    int root_known;         /* libration from rest: k' = c itself */
+    DoubleDouble s;         /* rotation: sin(th/2) in double-double */
+    DoubleDouble one_plus_rho2;   /* rotation: 1 + (s/|q|)^2 */
+} RegimeParameter;
+
 /* Step 3a. Libration (m1 > 0): w_n >= 1/2 here, q = |omega0| / (2 w0) <= c <= 1.
- * Returns 0, 1 when m1 underflowed (the caller treats it as the separatrix), -1 on failure.
- * *rate_n is the rate of u scaled by 2^-exponent. */
-static int init_libration(PendulumExact *e, double omega0, DoubleDouble w0, const InitialState *st,
-                          DoubleDouble *rate_n, DoubleDouble *inv_K)
+ * Returns 0, 1 when m1 underflowed (the caller treats it as the separatrix), -1 when the
+ * parameter is out of range (elliptic_param_acceptable). */
+static int libration_parameter(double omega0, const InitialState *st, RegimeParameter *par)
 {
     const DoubleDouble s = st->s, c = st->c;
     const int from_rest = omega0 == 0.0;
@@ -395,17 +413,30 @@ static int init_libration(PendulumExact *e, double omega0, DoubleDouble w0, cons
     if (!(m1.hi > 0.0)) {
         return 1;
     }
-    e->regime = PENDULUM_LIBRATION;
     /* sqrt(m) = sqrt(s^2 + q^2) without underflow; from rest |s| itself (hypot(s, 0) = |s|) */
     const double k = from_rest ? fabs(s.hi) : hypot(s.hi, q.hi);
-    const double m = smaller(k * k, 1.0);
+    par->k = k;
+    par->m = smaller(k * k, 1.0);
+    par->m1 = m1;
+    par->q = q;
     /* from rest (and not next to the separatrix) k' = sqrt(m1) = c itself */
-    const int root_known = from_rest && !st->fine;
-    if (elliptic_param_init_root(&e->ell, m, m1.hi, m1.lo, root_known ? &c : NULL, inv_K) != 0) {
-        return -1;
-    }
-    e->m = m;
-    e->m1 = m1.hi;
+    par->root_known = from_rest && !st->fine;
+    return elliptic_param_acceptable(par->m, m1.hi, m1.lo) ? 0 : -1;
+}
+
+/* Writes the libration of par into e (its bytes cleared); *rate_n is the rate of u scaled by
+ * 2^-exponent. */
+static void init_libration(PendulumExact *e, double omega0, DoubleDouble w0, const InitialState *st,
+                           const RegimeParameter *par, DoubleDouble *rate_n, DoubleDouble *inv_K)
+{
+    const DoubleDouble s = st->s, c = st->c, q = par->q;
+    const double k = par->k;
+    const int from_rest = omega0 == 0.0;
+    e->regime = PENDULUM_LIBRATION;
+    (void)elliptic_param_init_root(&e->ell, par->m, par->m1.hi, par->m1.lo, par->root_known ? &c : NULL,
+                                   inv_K);   /* accepted by libration_parameter */
+    e->m = par->m;
+    e->m1 = par->m1.hi;
     e->k = k;
     e->kc = e->ell.kc;
     e->K_hi = e->ell.K_hi;
@@ -427,21 +458,17 @@ static int init_libration(PendulumExact *e, double omega0, DoubleDouble w0, cons
         const double base = omega0 >= 0.0 ? f : (2.0 * e->K_hi - f) + 2.0 * e->K_lo;
         e->u0 = s.hi < 0.0 ? -base : base;
     }
-    return 0;
 }
 
 /* Step 3b. Rotation (m1 < 0, omega0 != 0). Ratios to |omega0|/2: rho = s/|q|, gamma = c/|q| < 1
- * (hs_n > c w_n, and c >= ~1e-33, so hs_n is not tiny). */
-static int init_rotation(PendulumExact *e, double omega0, const InitialState *st, DoubleDouble *rate_n,
-                         DoubleDouble *inv_K)
+ * (hs_n > c w_n, and c >= ~1e-33, so hs_n is not tiny). Returns 0, or -1 when the parameter
+ * is out of range (elliptic_param_acceptable). */
+static int rotation_parameter(const InitialState *st, RegimeParameter *par)
 {
     const DoubleDouble half = {0.5 * st->th.hi, 0.5 * st->th.lo};   /* exact */
-    DoubleDouble s, c_again;
-    dd_sincos(half, &s, &c_again);   /* sin(th/2) in double-double */
-    const DoubleDouble c = st->c, w_n = st->w_n;
+    const DoubleDouble s = dd_sin(half);   /* sin(th/2) in double-double */
+    const DoubleDouble w_n = st->w_n;
     const double hs_n = st->hs_n;
-    e->regime = PENDULUM_ROTATION;
-    e->direction = omega0 > 0.0 ? 1.0 : -1.0;
     const DoubleDouble hs = dd_of(hs_n);
     DoubleDouble rho = dd_div(dd_mul(s, w_n), hs);
     DoubleDouble one_plus_rho2 = dd_add(dd_of(1.0), dd_mul(rho, rho));
@@ -460,15 +487,27 @@ static int init_rotation(PendulumExact *e, double omega0, const InitialState *st
     }
     /* mu = 1/m = 1/(q^2 (1 + rho^2)). */
     const double w_hs = w_n.hi / hs_n;
-    const double mu = smaller(w_hs * w_hs / one_plus_rho2.hi, 1.0);   /* finite: hs_n > 0 */
-    if (elliptic_param_init_root(&e->ell, mu, mu1.hi, mu1.lo, NULL, inv_K) != 0) {
-        return -1;
-    }
+    par->m = smaller(w_hs * w_hs / one_plus_rho2.hi, 1.0);   /* finite: hs_n > 0 */
+    par->m1 = mu1;
+    par->s = s;
+    par->one_plus_rho2 = one_plus_rho2;
+    return elliptic_param_acceptable(par->m, mu1.hi, mu1.lo) ? 0 : -1;
+}
+
+/* Writes the rotation of par into e (its bytes cleared). */
+static void init_rotation(PendulumExact *e, double omega0, const InitialState *st, const RegimeParameter *par,
+                          DoubleDouble *rate_n, DoubleDouble *inv_K)
+{
+    const DoubleDouble c = st->c, s = par->s, one_plus_rho2 = par->one_plus_rho2;
+    const double mu = par->m;
+    e->regime = PENDULUM_ROTATION;
+    e->direction = omega0 > 0.0 ? 1.0 : -1.0;
+    (void)elliptic_param_init_root(&e->ell, mu, par->m1.hi, par->m1.lo, NULL, inv_K);   /* accepted */
     /* sqrt(m) w0 = |q| w0 sqrt(1 + rho^2) = (|omega0|/2) sqrt(1 + rho^2). */
-    *rate_n = dd_mul(hs, dd_sqrt(one_plus_rho2));
+    *rate_n = dd_mul(dd_of(st->hs_n), dd_sqrt(one_plus_rho2));
     const DoubleDouble rate = dd_ldexp(*rate_n, st->exponent);
     e->m = 1.0 / mu;
-    e->m1 = -mu1.hi / mu;
+    e->m1 = -par->m1.hi / mu;
     e->k = e->ell.k;
     e->kc = e->ell.kc;
     e->K_hi = e->ell.K_hi;
@@ -478,7 +517,6 @@ static int init_rotation(PendulumExact *e, double omega0, const InitialState *st
     e->omega_half = rate.hi;
     /* v0 = F(th/2 | mu) for the mirrored motion (direction * th), DLMF 19.25.5. */
     e->u0 = e->direction * s.hi * elliptic_RF(c.hi * c.hi, 1.0 / one_plus_rho2.hi, 1.0);
-    return 0;
 }
 
 /* Step 4. Rate and initial phase in quarter periods: rho = scale / K, x0 = u0 / K (products with
@@ -507,47 +545,122 @@ static void set_quarter_rates(PendulumExact *e, DoubleDouble rate_n, int exponen
     e->period = dd_scalbn(dd_div(quarters_K, rate_n).hi, -exponent);
 }
 
+/* Every byte of *e zero (padding included: FMU states compare and checksum it,
+ * pendulum_exact_same, instance/state.c), by memsets of 64 bytes, which compilers turn into a
+ * few vector stores: one memset of the whole state is expanded by GCC (x86-64, generic tuning)
+ * as rep stos, measured at about 15 ns a set-up. */
+static void clear_state(PendulumExact *e)
+{
+    unsigned char *bytes = (unsigned char *)e;
+    size_t done = 0;
+    for (; done + 64 <= sizeof *e; done += 64) {
+        memset(bytes + done, 0, 64);
+    }
+    memset(bytes + done, 0, sizeof *e - done);
+}
+
 /* The solution for w0 in double-double (w0.hi > 0 finite); see pendulum_exact_init. The
- * steps: reduce the angle (1), find the side of the separatrix (2), the constants of the
- * regime (3a, 3b or init_separatrix), the rates in quarter periods (4). */
-static int exact_init_dd(PendulumExact *ex, double theta0, double omega0, DoubleDouble w0, double t0,
+ * steps: reduce the angle (1), find the side of the separatrix (2), the parameter of the
+ * regime (3a, 3b), then, once nothing can fail, the state written in place: its bytes cleared
+ * (clear_state), the constants of the regime (3a, 3b or init_separatrix) and the rates in quarter periods (4). */
+/* The common fields of every regime (the state cleared before). */
+static void set_inputs(PendulumExact *e, double theta0, double omega0, DoubleDouble w0, double t0, double g,
+                       double L, const InitialState *st)
+{
+    e->w0 = w0.hi;
+    e->w0_lo = w0.lo;
+    e->g = g;
+    e->L = L;
+    e->t0 = t0;
+    e->theta0 = theta0;
+    e->omega0 = omega0;
+    e->direction = 1.0;
+    e->theta_turns = st->turns;
+    e->theta_reduced = st->th.hi;
+}
+
+/* A release from rest (omega0 = +-0) with c = cos(th/2) != 0 whose leading double is known
+ * (trig->cos_lead_certain): a libration whose k' is |c| (c < 0: th is moved by a turn,
+ * finish_initial_angle), and nothing can fail (m = s^2 and m1 = c^2 are in range, c^2 does
+ * not underflow for |c| > 2^-500). The state is what the general path below writes (steps 2,
+ * 3a and 4 for q = 0: m1 = c^2, u0 = +-K, x0 = +-1), but its Landen chain is started on c's
+ * leading double before c's low part is formed (the chain of roots and quotients is the
+ * set-up's longest), and the steps that only matter for a moving start are left out. */
+static void init_from_rest(PendulumExact *e, double theta0, double omega0, DoubleDouble w0, double t0, double g,
+                           double L, InitialState *st, const DdCosSin *trig)
+{
+    clear_state(e);
+    const double k = fabs(trig->sin_x), m = smaller(k * k, 1.0);
+    EllipticChain chain;
+    elliptic_param_begin(&e->ell, m, fabs(trig->cos_lead), &chain);
+    finish_initial_angle(st, trig);
+    const DoubleDouble c = st->c, m1 = dd_mul(c, c);
+    DoubleDouble inv_K;
+    elliptic_param_finish(&e->ell, &chain, m1.hi, c.lo, &inv_K);
+    set_inputs(e, theta0, omega0, w0, t0, g, L, st);
+    e->regime = PENDULUM_LIBRATION;
+    e->m = m;
+    e->m1 = m1.hi;
+    e->k = k;
+    e->kc = e->ell.kc;
+    e->K_hi = e->ell.K_hi;
+    e->K_lo = e->ell.K_lo;
+    e->scale = w0.hi;
+    e->scale_lo = w0.lo;
+    e->omega_half = k * w0.hi;
+    e->sqrt_k1 = k / (1.0 + e->ell.kc);   /* sqrt(k_1) = k / (1 + k'), no underflow of k^2 */
+    /* released at a turning point: u0 = +-K (at rest at the bottom, k = 0: theta = 0) */
+    e->u0 = k == 0.0 ? 0.0 : (st->s.hi < 0.0 ? -e->K_hi : e->K_hi);
+    /* step 4 for rate_n = w0 2^-exponent: the powers of two drop out of every product and
+     * quotient (w0 and the results are normal doubles), so rho = w0 / K, period = 4K / w0 */
+    const DoubleDouble rho = dd_mul(w0, inv_K);
+    e->rho_hi = rho.hi;
+    e->rho_lo = rho.lo;
+    e->rho_head = dd_head26(rho.hi);
+    e->rho_tail = rho.hi - e->rho_head;
+    e->x0_hi = e->u0 < 0.0 ? -1.0 : (e->u0 > 0.0 ? 1.0 : 0.0);   /* a turning point, x0_lo = 0 */
+    const DoubleDouble four_K = {4.0 * e->K_hi, 4.0 * e->K_lo};
+    e->period = dd_div(four_K, w0).hi;
+}
+
+static int exact_init_dd(PendulumExact *e, double theta0, double omega0, DoubleDouble w0, double t0,
                          double g, double L)
 {
-    PendulumExact e;
-    memset(&e, 0, sizeof e);
-    e.w0 = w0.hi;
-    e.w0_lo = w0.lo;
-    e.g = g;
-    e.L = L;
-    e.t0 = t0;
-    e.theta0 = theta0;
-    e.omega0 = omega0;
-    e.direction = 1.0;
-
     InitialState st;
-    reduce_initial_angle(theta0, &st);
-    e.theta_turns = st.turns;
-    e.theta_reduced = st.th.hi;
+    DdCosSin trig;
+    reduce_initial_angle(theta0, &st, &trig);
+    if (omega0 == 0.0 && trig.cos_lead_certain && fabs(trig.cos_lead) > 0x1p-500) {
+        init_from_rest(e, theta0, omega0, w0, t0, g, L, &st, &trig);
+        return 0;
+    }
+    finish_initial_angle(&st, &trig);
     locate_separatrix(theta0, omega0, w0, g, L, &st);
     const double side = st.fine ? st.m1_fine.hi : st.gap.hi;   /* the sign of m1 */
 
-    DoubleDouble rate_n = dd_of(0.0), inv_K = dd_of(0.0);
-    int status = 1;                        /* 1: the separatrix */
+    RegimeParameter par = {0};
+    int status = 1;                        /* 1: the separatrix (also when m1 underflowed) */
     if (side > 0.0) {
-        status = init_libration(&e, omega0, w0, &st, &rate_n, &inv_K);
+        status = libration_parameter(omega0, &st, &par);
     } else if (side < 0.0) {
-        status = init_rotation(&e, omega0, &st, &rate_n, &inv_K);
+        status = rotation_parameter(&st, &par);
     }
     if (status < 0) {
         return -1;
     }
+
+    clear_state(e);
+    set_inputs(e, theta0, omega0, w0, t0, g, L, &st);
     if (status == 1) {
-        init_separatrix(&e, st.s, st.c, omega0, w0);   /* also when m1 underflowed */
-    } else {
-        set_quarter_rates(&e, rate_n, st.exponent, omega0 == 0.0, inv_K);
+        init_separatrix(e, st.s, st.c, omega0, w0);
+        return 0;
     }
-    memcpy(ex, &e, sizeof e); /* bytewise, padding included: FMU states compare and checksum it
-                                 (pendulum_exact_same, instance/state.c) */
+    DoubleDouble rate_n, inv_K;
+    if (side > 0.0) {
+        init_libration(e, omega0, w0, &st, &par, &rate_n, &inv_K);
+    } else {
+        init_rotation(e, omega0, &st, &par, &rate_n, &inv_K);
+    }
+    set_quarter_rates(e, rate_n, st.exponent, omega0 == 0.0, inv_K);
     return 0;
 }
 
@@ -580,6 +693,12 @@ int pendulum_exact_init_gl(PendulumExact *ex, double theta0, double omega0, doub
      * the one of those doubles, not of fl(sqrt(fl(g / L))) (whose two roundings can move a
      * state within ~1e-16 of the separatrix to the other side). Scaled by powers of two so that
      * neither the quotient nor Dekker's split overflows or underflows. */
+    if (g >= 0x1p-400 && g <= 0x1p400 && L >= 0x1p-400 && L <= 0x1p400) {
+        /* the same w0 without the scaling below: every step is exact under powers of two (the
+         * quotient's and the root's parts stay normal, g / L within 2^+-800), and the root's
+         * argument is the one below times a power of 4 */
+        return exact_init_dd(ex, theta0, omega0, dd_sqrt(dd_div(dd_of(g), dd_of(L))), t0, g, L);
+    }
     const int eg = dd_frexp_exponent(g), eL = dd_frexp_exponent(L);
     const double gm = dd_scalbn(g, -eg), Lm = dd_scalbn(L, -eL);   /* frexp's fractions */
     int shift = eg - eL;                               /* g / L = (gm / Lm) 2^shift */
@@ -747,14 +866,14 @@ static inline void libration_angle_omega(const PendulumExact *ex, EllipticHomoge
     *omega = 2.0 * (sign * ex->omega_half * (cn_num / den));
 }
 
-void pendulum_exact_eval(const PendulumExact *ex, double t, double *theta, double *omega)
-{
-#ifdef EXACT_HANDS_ON_TO_FMA
-    if (EXACT_FMA_HERE()) {
-        pendulum_exact_eval_fma(ex, t, theta, omega);
-        return;
-    }
+/* pendulum_exact_eval for every motion and time (the common libration below, eval_libration,
+ * leaves the rest to it): out of line, so that the common case is a function without calls
+ * (no registers saved and restored around it). */
+#if defined(__GNUC__)
+__attribute__((noinline))
 #endif
+static void eval_any(const PendulumExact *ex, double t, double *theta, double *omega)
+{
     double angle, om, f = 0.0;
     DoubleDouble n = dd_of(0.0);
     DoubleDouble winding = dd_of(0.0);   /* half turns of a rotation since t0: direction N */
@@ -812,6 +931,60 @@ void pendulum_exact_eval(const PendulumExact *ex, double t, double *theta, doubl
         *theta = ex->theta0 + add_half_turns(winding, angle - ex->theta_reduced);
     }
     *omega = om;
+}
+
+/* A libration at a phase within 2^50 quarter periods whose bottom argument is within the
+ * series (always so but for overflowed inputs) and |theta_turns| < 2^50: the operations of
+ * eval_any for that case (phase_at, elliptic_sncndn_homogeneous_pair, libration_angle_omega,
+ * add_half_turns), the same bits, inline and without a call. Returns 0, nothing written,
+ * off that case. */
+static inline int eval_libration(const PendulumExact *ex, double t, double *theta, double *omega)
+{
+    if (ex->regime != PENDULUM_LIBRATION || t == ex->t0 || !(fabs(ex->theta_turns) < 0x1p50)) {
+        return 0;
+    }
+    const DoubleDouble tau = dd_two_sum(t, -ex->t0);
+    const double x_hi = ex->rho_hi * tau.hi;
+    if (!(fabs(x_hi) < 0x1p50)) {
+        return 0;
+    }
+    double quarters;
+    const double v = phase_near(ex, tau.hi, tau.lo, x_hi, &quarters) * ex->K_hi;
+    const EllipticParam *p = &ex->ell;
+    const double z = fabs(v) * p->bottom_scale;
+    if (!(z <= ELLIPTIC_SERIES_Z_MAX)) {
+        return 0;
+    }
+    double sz, cz;
+    trig_sincos_small(z, &sz, &cz);
+    EllipticHomogeneous h1 = elliptic_landen_bottom(p, z, sz, cz);
+    for (int i = p->levels - 1; i >= 1; --i) {
+        h1 = elliptic_landen_step(p, i, h1);
+    }
+    EllipticHomogeneous h0 = elliptic_landen_step(p, 0, h1);
+    if (v < 0.0) {
+        h1.S = -h1.S;
+        h0.S = -h0.S;
+    }
+    const int quarter = (int)((long long)quarters & 3);   /* |quarters| < 2^51 */
+    double angle, om;
+    libration_angle_omega(ex, h0, h1, (double)(quarter & 1), 1.0 - (double)(quarter & 2), &angle, &om);
+    *theta = add_half_turns(dd_of(2.0 * ex->theta_turns), angle);
+    *omega = om;
+    return 1;
+}
+
+void pendulum_exact_eval(const PendulumExact *ex, double t, double *theta, double *omega)
+{
+#ifdef EXACT_HANDS_ON_TO_FMA
+    if (EXACT_FMA_HERE()) {
+        pendulum_exact_eval_fma(ex, t, theta, omega);
+        return;
+    }
+#endif
+    if (!eval_libration(ex, t, theta, omega)) {
+        eval_any(ex, t, theta, omega);
+    }
 }
 
 /* ---------------------------------------------------------------------------------------

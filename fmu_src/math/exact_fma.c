@@ -18,9 +18,14 @@
 
 #define dd_sincos dd_sincos_fma
 #define dd_cos_sin dd_cos_sin_fma
+#define dd_cos_sin_begin dd_cos_sin_begin_fma
+#define dd_cos_sin_end dd_cos_sin_end_fma
+#define dd_sin dd_sin_fma
 #define elliptic_RF elliptic_RF_fma
 #define elliptic_param_init elliptic_param_init_fma
 #define elliptic_param_init_root elliptic_param_init_root_fma
+#define elliptic_param_begin elliptic_param_begin_fma
+#define elliptic_param_finish elliptic_param_finish_fma
 #define elliptic_quarter_of elliptic_quarter_of_fma
 #define pendulum_exact_init pendulum_exact_init_fma
 #define pendulum_exact_init_gl pendulum_exact_init_gl_fma

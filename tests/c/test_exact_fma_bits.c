@@ -13,9 +13,14 @@
 #define PENDULUM_NO_FMA_BUILD 1
 #define dd_sincos dd_sincos_baseline
 #define dd_cos_sin dd_cos_sin_baseline
+#define dd_cos_sin_begin dd_cos_sin_begin_baseline
+#define dd_cos_sin_end dd_cos_sin_end_baseline
+#define dd_sin dd_sin_baseline
 #define elliptic_RF elliptic_RF_baseline
 #define elliptic_param_init elliptic_param_init_baseline
 #define elliptic_param_init_root elliptic_param_init_root_baseline
+#define elliptic_param_begin elliptic_param_begin_baseline
+#define elliptic_param_finish elliptic_param_finish_baseline
 #define elliptic_quarter_of elliptic_quarter_of_baseline
 #define pendulum_exact_init pendulum_exact_init_baseline
 #define pendulum_exact_init_gl pendulum_exact_init_gl_baseline

@@ -28,6 +28,10 @@ static int same_bits(double a, double b)
  * evaluation) and returns how many of them are not resolvable (their outputs are NaN). */
 static size_t evaluate(const PendulumExact *ex, size_t n, const double *t, double *theta, double *omega)
 {
+    if (n == 1) {   /* a state per point: the scalar evaluation itself (eval_many's bits) */
+        pendulum_exact_eval(ex, t[0], theta, omega);
+        return !pendulum_exact_resolvable(ex, t[0]);
+    }
     pendulum_exact_eval_many(ex, n, t, theta, omega);
     size_t refused = 0;
     for (size_t i = 0; i < n; ++i) {
