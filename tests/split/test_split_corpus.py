@@ -15,6 +15,8 @@ import pytest
 
 import split_corpus as corpus
 
+pytestmark = pytest.mark.slow  # about 80 s for both parts; test_split_judge.py is the fast check
+
 
 @pytest.fixture(scope="module")
 def judged(tmp_path_factory: pytest.TempPathFactory) -> dict[str, list[corpus.Outcome]]:
