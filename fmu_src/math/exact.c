@@ -424,6 +424,22 @@ static int libration_parameter(double omega0, const InitialState *st, RegimePara
     return elliptic_param_acceptable(par->m, m1.hi, m1.lo) ? 0 : -1;
 }
 
+/* The libration's parameter and scales, once e->ell is set up: m, m1 = k'^2 (its leading
+ * double), k = sqrt(m), K, the scale w0 of the time and of omega. */
+static void set_libration_scales(PendulumExact *e, double m, double m1, double k, DoubleDouble w0)
+{
+    e->m = m;
+    e->m1 = m1;
+    e->k = k;
+    e->kc = e->ell.kc;
+    e->K_hi = e->ell.K_hi;
+    e->K_lo = e->ell.K_lo;
+    e->scale = w0.hi;
+    e->scale_lo = w0.lo;
+    e->omega_half = k * w0.hi;
+    e->sqrt_k1 = k / (1.0 + e->ell.kc);   /* sqrt(k_1) = k / (1 + k'), no underflow of k^2 */
+}
+
 /* Writes the libration of par into e (its bytes cleared); *rate_n is the rate of u scaled by
  * 2^-exponent. */
 static void init_libration(PendulumExact *e, double omega0, DoubleDouble w0, const InitialState *st,
@@ -435,17 +451,8 @@ static void init_libration(PendulumExact *e, double omega0, DoubleDouble w0, con
     e->regime = PENDULUM_LIBRATION;
     (void)elliptic_param_init_root(&e->ell, par->m, par->m1.hi, par->m1.lo, par->root_known ? &c : NULL,
                                    inv_K);   /* accepted by libration_parameter */
-    e->m = par->m;
-    e->m1 = par->m1.hi;
-    e->k = k;
-    e->kc = e->ell.kc;
-    e->K_hi = e->ell.K_hi;
-    e->K_lo = e->ell.K_lo;
-    e->scale = w0.hi;
-    e->scale_lo = w0.lo;
+    set_libration_scales(e, par->m, par->m1.hi, k, w0);
     *rate_n = st->w_n;
-    e->omega_half = k * w0.hi;
-    e->sqrt_k1 = k / (1.0 + e->ell.kc);   /* sqrt(k_1) = k / (1 + k'), no underflow of k^2 */
     if (k == 0.0) {
         e->u0 = 0.0;                          /* at rest at the bottom: theta = 0 */
     } else if (from_rest) {
@@ -599,16 +606,7 @@ static void init_from_rest(PendulumExact *e, double theta0, double omega0, Doubl
     elliptic_param_finish(&e->ell, &chain, m1.hi, c.lo, &inv_K);
     set_inputs(e, theta0, omega0, w0, t0, g, L, st);
     e->regime = PENDULUM_LIBRATION;
-    e->m = m;
-    e->m1 = m1.hi;
-    e->k = k;
-    e->kc = e->ell.kc;
-    e->K_hi = e->ell.K_hi;
-    e->K_lo = e->ell.K_lo;
-    e->scale = w0.hi;
-    e->scale_lo = w0.lo;
-    e->omega_half = k * w0.hi;
-    e->sqrt_k1 = k / (1.0 + e->ell.kc);   /* sqrt(k_1) = k / (1 + k'), no underflow of k^2 */
+    set_libration_scales(e, m, m1.hi, k, w0);
     /* released at a turning point: u0 = +-K (at rest at the bottom, k = 0: theta = 0) */
     e->u0 = k == 0.0 ? 0.0 : (st->s.hi < 0.0 ? -e->K_hi : e->K_hi);
     /* step 4 for rate_n = w0 2^-exponent: the powers of two drop out of every product and
