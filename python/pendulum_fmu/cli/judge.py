@@ -122,35 +122,31 @@ def run(args: argparse.Namespace) -> int:
 def start_values(pairs: list[str]) -> dict[str, float | str]:
     """``--start NAME=VALUE`` as the judge's typed start values: ``theta=80deg`` in radians.
 
+    The pairs are split here, degrees turned into radians, and the names and values checked by
+    the judge's own :func:`~pendulum_fmu.judge.experiment.check_start`, so a bad value is
+    reported with the text the user typed.
+
     Raises
     ------
     UsageError
         A pair without ``=``, an unknown name, a value that is not a number or is out of range
-        (naming ``start``; the judge checks the same names and ranges).
+        (naming ``start``).
     """
     from pendulum_fmu.errors import UsageError
-    from pendulum_fmu.judge.experiment import NAMES, start_value_fault
+    from pendulum_fmu.judge.experiment import check_start
 
-    values: dict[str, float | str] = {}
+    typed: dict[str, float | str] = {}
     for pair in pairs:
         name, sep, raw = (part.strip() for part in pair.partition("="))
         if not sep:
             raise UsageError("start", f"expected NAME=VALUE, got {pair!r}")
-        if name not in NAMES:
-            raise UsageError("start", f"unknown name {name!r} (known: {', '.join(NAMES)})")
-        if name == "solver":
-            values[name] = raw
-            continue
-        text, scale = (raw[:-3], math.pi / 180.0) if name == "theta" and raw.endswith("deg") else (raw, 1.0)
-        try:
-            number = float(text) * scale
-        except ValueError:
-            raise UsageError("start", f"{name}={raw!r} is not a number") from None
-        fault = start_value_fault(name, number)
-        if fault is not None:
-            raise UsageError("start", f"{name}={raw!r}: {fault}")
-        values[name] = number
-    return values
+        typed[name] = raw
+        if name == "theta" and raw.endswith("deg"):
+            try:
+                typed[name] = math.radians(float(raw[:-3]))
+            except ValueError:
+                raise UsageError("start", f"{name}={raw!r} is not a number") from None
+    return check_start(typed)
 
 
 def split_problem(pairs: list[str]) -> InitialValueProblem | None:
