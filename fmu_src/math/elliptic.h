@@ -116,6 +116,15 @@ void elliptic_param_begin(EllipticParam *p, double m, double kc, EllipticChain *
 void elliptic_param_finish(EllipticParam *p, const EllipticChain *chain, double m1, double kc_lo,
                            DoubleDouble *inv_K);
 
+/* The same two steps for lanes <= ELLIPTIC_LANES parameter sets p[l] at once, bit for bit
+ * what elliptic_param_begin and _finish write for each: level by level over the lanes, so
+ * that their chains of roots and quotients overlap (chain, inv_K: one per lane). */
+#define ELLIPTIC_LANES 8
+void elliptic_param_begin_many(int lanes, EllipticParam *const *p, const double *m, const double *kc,
+                               EllipticChain *chain);
+void elliptic_param_finish_many(int lanes, EllipticParam *const *p, const EllipticChain *chain, const double *m1,
+                                const double *kc_lo, DoubleDouble *inv_K);
+
 /* Above this |z| the bottom level calls libm's sin and cos, below it trig_sincos_small
  * (trig.h: their Maclaurin series to z^17 and z^16, no range reduction). */
 #define ELLIPTIC_SERIES_Z_MAX 0.8

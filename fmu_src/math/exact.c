@@ -53,6 +53,10 @@ void pendulum_exact_eval_fma(const PendulumExact *ex, double t, double *theta, d
 void pendulum_exact_sin_cos_fma(const PendulumExact *ex, double t, double *sin_theta, double *cos_theta);
 void pendulum_exact_eval_many_fma(const PendulumExact *ex, size_t n, const double *t, double *theta,
                                   double *omega);
+void pendulum_exact_init_many_fma(size_t n, const double *theta0, const double *omega0, const double *w0,
+                                  double t0, PendulumExact *ex, int *status);
+void pendulum_exact_init_gl_many_fma(size_t n, const double *theta0, const double *omega0, const double *g,
+                                     const double *L, double t0, PendulumExact *ex, int *status);
 /* CPUID's fma flag, set by libgcc only where the operating system saves the AVX state */
 #define EXACT_FMA_HERE() __builtin_cpu_supports("fma")
 #endif
@@ -592,21 +596,37 @@ static void set_inputs(PendulumExact *e, double theta0, double omega0, DoubleDou
  * not underflow for |c| > 2^-500). The state is what the general path below writes (steps 2,
  * 3a and 4 for q = 0: m1 = c^2, u0 = +-K, x0 = +-1), but its Landen chain is started on c's
  * leading double before c's low part is formed (the chain of roots and quotients is the
- * set-up's longest), and the steps that only matter for a moving start are left out. */
-static void init_from_rest(PendulumExact *e, double theta0, double omega0, DoubleDouble w0, double t0, double g,
-                           double L, InitialState *st, const DdCosSin *trig)
+ * set-up's longest), and the steps that only matter for a moving start are left out. In
+ * three parts, so that several releases can run each part in lock-step
+ * (init_from_rest_many): the state cleared and m = k^2 (then the chain starts on the leading
+ * double of c), c in full (then the chain's K and 1/K), the fields. */
+static inline int from_rest_can(double omega0, const DdCosSin *trig)
+{
+    return omega0 == 0.0 && trig->cos_lead_certain && fabs(trig->cos_lead) > 0x1p-500;
+}
+
+static inline double from_rest_start(PendulumExact *e, const DdCosSin *trig, double *kc)
 {
     clear_state(e);
-    const double k = fabs(trig->sin_x), m = smaller(k * k, 1.0);
-    EllipticChain chain;
-    elliptic_param_begin(&e->ell, m, fabs(trig->cos_lead), &chain);
+    const double k = fabs(trig->sin_x);
+    *kc = fabs(trig->cos_lead);
+    return smaller(k * k, 1.0);
+}
+
+static inline DoubleDouble from_rest_cosine(InitialState *st, const DdCosSin *trig)
+{
     finish_initial_angle(st, trig);
-    const DoubleDouble c = st->c, m1 = dd_mul(c, c);
-    DoubleDouble inv_K;
-    elliptic_param_finish(&e->ell, &chain, m1.hi, c.lo, &inv_K);
+    return dd_mul(st->c, st->c);   /* m1 = c^2 */
+}
+
+static inline void from_rest_fields(PendulumExact *e, double theta0, double omega0, DoubleDouble w0, double t0,
+                                    double g, double L, const InitialState *st, const DdCosSin *trig,
+                                    double m1, DoubleDouble inv_K)
+{
+    const double k = fabs(trig->sin_x), m = smaller(k * k, 1.0);
     set_inputs(e, theta0, omega0, w0, t0, g, L, st);
     e->regime = PENDULUM_LIBRATION;
-    set_libration_scales(e, m, m1.hi, k, w0);
+    set_libration_scales(e, m, m1, k, w0);
     /* released at a turning point: u0 = +-K (at rest at the bottom, k = 0: theta = 0) */
     e->u0 = k == 0.0 ? 0.0 : (st->s.hi < 0.0 ? -e->K_hi : e->K_hi);
     /* step 4 for rate_n = w0 2^-exponent: the powers of two drop out of every product and
@@ -621,17 +641,25 @@ static void init_from_rest(PendulumExact *e, double theta0, double omega0, Doubl
     e->period = dd_div(four_K, w0).hi;
 }
 
-static int exact_init_dd(PendulumExact *e, double theta0, double omega0, DoubleDouble w0, double t0,
-                         double g, double L)
+static void init_from_rest(PendulumExact *e, double theta0, double omega0, DoubleDouble w0, double t0, double g,
+                           double L, InitialState *st, const DdCosSin *trig)
 {
-    InitialState st;
-    DdCosSin trig;
-    reduce_initial_angle(theta0, &st, &trig);
-    if (omega0 == 0.0 && trig.cos_lead_certain && fabs(trig.cos_lead) > 0x1p-500) {
-        init_from_rest(e, theta0, omega0, w0, t0, g, L, &st, &trig);
-        return 0;
-    }
-    finish_initial_angle(&st, &trig);
+    double kc;
+    const double m = from_rest_start(e, trig, &kc);
+    EllipticChain chain;
+    elliptic_param_begin(&e->ell, m, kc, &chain);
+    const DoubleDouble m1 = from_rest_cosine(st, trig);
+    DoubleDouble inv_K;
+    elliptic_param_finish(&e->ell, &chain, m1.hi, st->c.lo, &inv_K);
+    from_rest_fields(e, theta0, omega0, w0, t0, g, L, st, trig, m1.hi, inv_K);
+}
+
+/* Steps 2 to 4 for every state but the releases of init_from_rest, once the angle is reduced
+ * (step 1, reduce_initial_angle). */
+static int init_reduced(PendulumExact *e, double theta0, double omega0, DoubleDouble w0, double t0, double g,
+                        double L, InitialState st, const DdCosSin *trig)
+{
+    finish_initial_angle(&st, trig);
     locate_separatrix(theta0, omega0, w0, g, L, &st);
     const double side = st.fine ? st.m1_fine.hi : st.gap.hi;   /* the sign of m1 */
 
@@ -662,6 +690,25 @@ static int exact_init_dd(PendulumExact *e, double theta0, double omega0, DoubleD
     return 0;
 }
 
+static int exact_init_dd(PendulumExact *e, double theta0, double omega0, DoubleDouble w0, double t0,
+                         double g, double L)
+{
+    InitialState st;
+    DdCosSin trig;
+    reduce_initial_angle(theta0, &st, &trig);
+    if (from_rest_can(omega0, &trig)) {
+        init_from_rest(e, theta0, omega0, w0, t0, g, L, &st, &trig);
+        return 0;
+    }
+    return init_reduced(e, theta0, omega0, w0, t0, g, L, st, &trig);
+}
+
+/* pendulum_exact_init's check of its inputs (but w0) */
+static int inputs_finite(const PendulumExact *ex, double theta0, double omega0, double t0)
+{
+    return ex != NULL && isfinite(theta0) && isfinite(omega0) && isfinite(t0);
+}
+
 int pendulum_exact_init(PendulumExact *ex, double theta0, double omega0, double w0, double t0)
 {
 #ifdef EXACT_HANDS_ON_TO_FMA
@@ -669,11 +716,38 @@ int pendulum_exact_init(PendulumExact *ex, double theta0, double omega0, double 
         return pendulum_exact_init_fma(ex, theta0, omega0, w0, t0);
     }
 #endif
-    if (ex == NULL || !isfinite(theta0) || !isfinite(omega0) || !isfinite(w0) || !isfinite(t0)
-        || !(w0 > 0.0)) {
+    if (!inputs_finite(ex, theta0, omega0, t0) || !isfinite(w0) || !(w0 > 0.0)) {
         return -1;
     }
     return exact_init_dd(ex, theta0, omega0, dd_of(w0), t0, 0.0, 0.0);
+}
+
+/* w0 = sqrt(g / L) in double-double from the doubles g and L as given: the regime is then the
+ * one of those doubles, not of fl(sqrt(fl(g / L))) (whose two roundings can move a state
+ * within ~1e-16 of the separatrix to the other side). Scaled by powers of two so that neither
+ * the quotient nor Dekker's split overflows or underflows. Returns -1 for g or L not finite
+ * and > 0, or g / L beyond a normal double's range. */
+static int w0_of_gl(double g, double L, DoubleDouble *w0)
+{
+    if (!isfinite(g) || !isfinite(L) || !(g > 0.0) || !(L > 0.0)) {
+        return -1;
+    }
+    if (g >= 0x1p-400 && g <= 0x1p400 && L >= 0x1p-400 && L <= 0x1p400) {
+        /* the same w0 without the scaling below: every step is exact under powers of two (the
+         * quotient's and the root's parts stay normal, g / L within 2^+-800), and the root's
+         * argument is the one below times a power of 4 */
+        *w0 = dd_sqrt(dd_div(dd_of(g), dd_of(L)));
+        return 0;
+    }
+    const int eg = dd_frexp_exponent(g), eL = dd_frexp_exponent(L);
+    const double gm = dd_scalbn(g, -eg), Lm = dd_scalbn(L, -eL);   /* frexp's fractions */
+    int shift = eg - eL;                               /* g / L = (gm / Lm) 2^shift */
+    if (shift & 1) {
+        shift -= 1;                                    /* even, so that the root halves it */
+    }
+    const DoubleDouble ratio = dd_div(dd_of(dd_scalbn(gm, eg - eL - shift)), dd_of(Lm));
+    *w0 = dd_ldexp(dd_sqrt(ratio), shift / 2);
+    return w0->hi > 0.0 && isfinite(w0->hi) ? 0 : -1;   /* g / L overflows or underflows */
 }
 
 int pendulum_exact_init_gl(PendulumExact *ex, double theta0, double omega0, double g, double L, double t0)
@@ -683,32 +757,127 @@ int pendulum_exact_init_gl(PendulumExact *ex, double theta0, double omega0, doub
         return pendulum_exact_init_gl_fma(ex, theta0, omega0, g, L, t0);
     }
 #endif
-    if (ex == NULL || !isfinite(theta0) || !isfinite(omega0) || !isfinite(t0) || !isfinite(g)
-        || !isfinite(L) || !(g > 0.0) || !(L > 0.0)) {
+    DoubleDouble w0;
+    if (!inputs_finite(ex, theta0, omega0, t0) || w0_of_gl(g, L, &w0) != 0) {
         return -1;
     }
-    /* w0 = sqrt(g / L) in double-double from the doubles g and L as given: the regime is then
-     * the one of those doubles, not of fl(sqrt(fl(g / L))) (whose two roundings can move a
-     * state within ~1e-16 of the separatrix to the other side). Scaled by powers of two so that
-     * neither the quotient nor Dekker's split overflows or underflows. */
-    if (g >= 0x1p-400 && g <= 0x1p400 && L >= 0x1p-400 && L <= 0x1p400) {
-        /* the same w0 without the scaling below: every step is exact under powers of two (the
-         * quotient's and the root's parts stay normal, g / L within 2^+-800), and the root's
-         * argument is the one below times a power of 4 */
-        return exact_init_dd(ex, theta0, omega0, dd_sqrt(dd_div(dd_of(g), dd_of(L))), t0, g, L);
-    }
-    const int eg = dd_frexp_exponent(g), eL = dd_frexp_exponent(L);
-    const double gm = dd_scalbn(g, -eg), Lm = dd_scalbn(L, -eL);   /* frexp's fractions */
-    int shift = eg - eL;                               /* g / L = (gm / Lm) 2^shift */
-    if (shift & 1) {
-        shift -= 1;                                    /* even, so that the root halves it */
-    }
-    const DoubleDouble ratio = dd_div(dd_of(dd_scalbn(gm, eg - eL - shift)), dd_of(Lm));
-    DoubleDouble w0 = dd_ldexp(dd_sqrt(ratio), shift / 2);
-    if (!(w0.hi > 0.0) || !isfinite(w0.hi)) {
-        return -1;                                     /* g / L overflows or underflows */
-    }
     return exact_init_dd(ex, theta0, omega0, w0, t0, g, L);
+}
+
+/* ---------------------------------------------------------------------------------------
+ * Many new states. A set-up is a few long chains of dependent operations (the cosine's
+ * series, the Landen chain's roots and quotients, K's tails and quotients), so one state's
+ * set-up leaves the processor waiting. The releases from rest of a block of up to
+ * ELLIPTIC_LANES states run the parts of init_from_rest in lock-step, each part over the
+ * block before the next (the Landen chain and K's tails level by level over the lanes:
+ * elliptic_param_begin_many, _finish_many): the same operations on each state as
+ * init_from_rest, in another order, so the same bytes. Every other state (moving, or a
+ * cosine whose leading double is not certain) takes exact_init_dd's path alone.
+ * --------------------------------------------------------------------------------------- */
+
+/* The inputs of one state of a block, checked. */
+typedef struct {
+    PendulumExact *e;
+    double theta0, omega0, g, L;
+    DoubleDouble w0;
+} NewState;
+
+static void init_block(int count, const NewState *in, double t0)
+{
+    InitialState st[ELLIPTIC_LANES];
+    DdCosSin trig[ELLIPTIC_LANES];
+    int rest[ELLIPTIC_LANES];   /* which states are releases from rest, in order */
+    int lanes = 0;
+    for (int i = 0; i < count; ++i) {
+        reduce_initial_angle(in[i].theta0, &st[i], &trig[i]);
+        if (from_rest_can(in[i].omega0, &trig[i])) {
+            rest[lanes++] = i;
+        } else {
+            (void)init_reduced(in[i].e, in[i].theta0, in[i].omega0, in[i].w0, t0, in[i].g, in[i].L, st[i],
+                               &trig[i]);   /* a libration, rotation or the separatrix: cannot fail here */
+        }
+    }
+    if (lanes == 0) {
+        return;
+    }
+    EllipticParam *ell[ELLIPTIC_LANES];
+    EllipticChain chain[ELLIPTIC_LANES];
+    double m[ELLIPTIC_LANES], kc[ELLIPTIC_LANES], m1[ELLIPTIC_LANES], kc_lo[ELLIPTIC_LANES];
+    DoubleDouble inv_K[ELLIPTIC_LANES];
+    for (int l = 0; l < lanes; ++l) {
+        const int i = rest[l];
+        m[l] = from_rest_start(in[i].e, &trig[i], &kc[l]);
+        ell[l] = &in[i].e->ell;
+    }
+    elliptic_param_begin_many(lanes, ell, m, kc, chain);
+    for (int l = 0; l < lanes; ++l) {
+        const int i = rest[l];
+        m1[l] = from_rest_cosine(&st[i], &trig[i]).hi;
+        kc_lo[l] = st[i].c.lo;
+    }
+    elliptic_param_finish_many(lanes, ell, chain, m1, kc_lo, inv_K);
+    for (int l = 0; l < lanes; ++l) {
+        const NewState *s = &in[rest[l]];
+        from_rest_fields(s->e, s->theta0, s->omega0, s->w0, t0, s->g, s->L, &st[rest[l]], &trig[rest[l]], m1[l],
+                         inv_K[l]);
+    }
+}
+
+/* Gathers the accepted states into blocks for init_block; status[i] = 0 or -1 (refused). */
+static void init_many(size_t n, const double *theta0, const double *omega0, const double *w0, const double *g,
+                      const double *L, double t0, PendulumExact *ex, int *status)
+{
+    NewState block[ELLIPTIC_LANES];
+    int count = 0;
+    for (size_t i = 0; i < n; ++i) {
+        NewState *s = &block[count];
+        int ok = inputs_finite(&ex[i], theta0[i], omega0[i], t0);
+        if (w0 != NULL) {
+            ok = ok && isfinite(w0[i]) && w0[i] > 0.0;
+            s->w0 = dd_of(w0[i]);
+            s->g = s->L = 0.0;
+        } else {
+            ok = ok && w0_of_gl(g[i], L[i], &s->w0) == 0;
+            s->g = g[i];
+            s->L = L[i];
+        }
+        status[i] = ok ? 0 : -1;
+        if (!ok) {
+            continue;
+        }
+        s->e = &ex[i];
+        s->theta0 = theta0[i];
+        s->omega0 = omega0[i];
+        if (++count == ELLIPTIC_LANES) {
+            init_block(count, block, t0);
+            count = 0;
+        }
+    }
+    init_block(count, block, t0);
+}
+
+void pendulum_exact_init_many(size_t n, const double *theta0, const double *omega0, const double *w0, double t0,
+                              PendulumExact *ex, int *status)
+{
+#ifdef EXACT_HANDS_ON_TO_FMA
+    if (EXACT_FMA_HERE()) {
+        pendulum_exact_init_many_fma(n, theta0, omega0, w0, t0, ex, status);
+        return;
+    }
+#endif
+    init_many(n, theta0, omega0, w0, NULL, NULL, t0, ex, status);
+}
+
+void pendulum_exact_init_gl_many(size_t n, const double *theta0, const double *omega0, const double *g,
+                                 const double *L, double t0, PendulumExact *ex, int *status)
+{
+#ifdef EXACT_HANDS_ON_TO_FMA
+    if (EXACT_FMA_HERE()) {
+        pendulum_exact_init_gl_many_fma(n, theta0, omega0, g, L, t0, ex, status);
+        return;
+    }
+#endif
+    init_many(n, theta0, omega0, NULL, g, L, t0, ex, status);
 }
 
 int pendulum_exact_same(const PendulumExact *ex)

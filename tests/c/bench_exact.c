@@ -44,9 +44,12 @@
 #endif
 
 #define ROUNDS 7
-#define KINDS 5
-enum { KIND_EVAL, KIND_BATCH, KIND_GSL, KIND_INIT, KIND_GSL_INIT };
-static const char *const KIND_NAMES[KINDS] = {"eval", "batch", "gsl", "init", "gsl_init"};
+#define KINDS 6
+enum { KIND_EVAL, KIND_BATCH, KIND_GSL, KIND_INIT, KIND_GSL_INIT, KIND_INIT_MANY };
+static const char *const KIND_NAMES[KINDS] = {"eval", "batch", "gsl", "init", "gsl_init", "init_many"};
+
+/* init_many sets up this many new states per call */
+#define MANY_BLOCK 64
 
 /* Processor time of this process (C clock(): CPU time on POSIX), not wall time: the machine
  * may be shared, and time spent waiting for a core is not the code's. */
@@ -133,6 +136,29 @@ static double time_kind(int kind, Case *c)
 #else
         return NAN;
 #endif
+    }
+    case KIND_INIT_MANY: {
+        static PendulumExact fresh[MANY_BLOCK];
+        double theta0[MANY_BLOCK], omega0[MANY_BLOCK], w0[MANY_BLOCK];
+        int status[MANY_BLOCK];
+        for (long first = 0; first < n; first += MANY_BLOCK) {
+            const long count = n - first < MANY_BLOCK ? n - first : MANY_BLOCK;
+            for (long j = 0; j < count; ++j) {
+                theta0[j] = c->theta0 * (1.0 + 1e-9 * (double)((first + j) & 1023));
+                omega0[j] = 0.0;
+                w0[j] = 1.0;
+            }
+            pendulum_exact_init_many((size_t)count, theta0, omega0, w0, 0.0, fresh, status);
+            for (long j = 0; j < count; ++j) {
+                double theta, omega;
+                if (status[j] != 0) {
+                    return NAN;
+                }
+                pendulum_exact_eval(&fresh[j], c->times[first + j], &theta, &omega);
+                sum += theta + omega;
+            }
+        }
+        break;
     }
     default: /* KIND_INIT */
         for (long i = 0; i < n; ++i) {
@@ -259,10 +285,12 @@ int main(int argc, char **argv)
             printf(" %s_best=%.3f %s_median=%.3f", KIND_NAMES[kind], best[kind], KIND_NAMES[kind], median[kind]);
         }
         printf(" gsl_over_eval=%.3f gsl_over_eval_median=%.3f eval_over_batch=%.3f eval_over_batch_median=%.3f"
-               " gsl_init_over_init=%.3f gsl_init_over_init_median=%.3f checksum=%.17g\n",
+               " gsl_init_over_init=%.3f gsl_init_over_init_median=%.3f init_over_init_many=%.3f"
+               " init_over_init_many_median=%.3f checksum=%.17g\n",
                best[KIND_GSL] / best[KIND_EVAL], median[KIND_GSL] / median[KIND_EVAL],
                best[KIND_EVAL] / best[KIND_BATCH], median[KIND_EVAL] / median[KIND_BATCH],
-               best[KIND_GSL_INIT] / best[KIND_INIT], median[KIND_GSL_INIT] / median[KIND_INIT], cases[a].checksum);
+               best[KIND_GSL_INIT] / best[KIND_INIT], median[KIND_GSL_INIT] / median[KIND_INIT],
+               best[KIND_INIT] / best[KIND_INIT_MANY], median[KIND_INIT] / median[KIND_INIT_MANY], cases[a].checksum);
         free((void *)cases[a].times);
         free(cases[a].theta);
         free(cases[a].omega);

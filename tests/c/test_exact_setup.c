@@ -8,7 +8,11 @@
  *    changes no byte of the set-up but the recorded g and L;
  *  - K and the rate in quarter periods agree to double-double accuracy: rho K = the rate of the
  *    elliptic argument (w0, or sqrt(m) w0 in rotation) within 1e-30 relative, and the period
- *    is 4 K / w0 (2 K / rate in rotation) rounded to nearest.
+ *    is 4 K / w0 (2 K / rate in rotation) rounded to nearest;
+ *  - pendulum_exact_init_many and _init_gl_many (releases from rest set up in lock-step) write
+ *    every state byte for byte as pendulum_exact_init and _init_gl do, with the same statuses,
+ *    and leave a refused state's bytes untouched: arrays of 1 to 40 states, mostly releases
+ *    from rest mixed with every other kind and with refused inputs.
  * Over random states of every regime (seeded). Prints one summary line; exit status 0 iff
  * every check passed. */
 #include <math.h>
@@ -56,8 +60,69 @@ static void dd_product(double a_hi, double a_lo, double b_hi, double b_lo, doubl
     *lo = e - (*hi - p);
 }
 
+/* Refused inputs for pendulum_exact_init_many and _init_gl_many: a non-finite angle, speed or
+ * w0, and w0, g or L not > 0 or not finite. */
+static void spoil(long i, double *theta0, double *omega0, double *w0, double *g, double *L)
+{
+    switch (i % 6) {
+    case 0: *theta0 = NAN; break;
+    case 1: *omega0 = INFINITY; break;
+    case 2: *w0 = 0.0; *g = -1.0; break;
+    case 3: *w0 = INFINITY; *L = 0.0; break;
+    case 4: *g = INFINITY; *w0 = NAN; break;
+    default: *L = NAN; *w0 = -2.0; break;
+    }
+}
+
+#define MANY 40
+
+/* The states of pendulum_exact_init_many and _init_gl_many against the scalar set-ups. */
+static void check_many(void)
+{
+    long same = 0, compared = 0;
+    for (long round = 0; round < 3000; ++round) {
+        const long n = 1 + (long)(uniform() * MANY);
+        double theta0[MANY], omega0[MANY], w0[MANY], g[MANY], L[MANY];
+        const double t0 = uniform() < 0.5 ? 0.0 : 10.0 * (2.0 * uniform() - 1.0);
+        for (long i = 0; i < n; ++i) {
+            g[i] = exp(log(1e-2) + uniform() * log(1e5));
+            L[i] = exp(log(1e-2) + uniform() * log(1e4));
+            w0[i] = sqrt(g[i] / L[i]);
+            const double kind = uniform();   /* mostly releases from rest (kinds 0 to 3) */
+            draw_state(kind < 0.8 ? (long)(uniform() * 4) : (long)(uniform() * 8), w0[i], &theta0[i], &omega0[i]);
+            if (kind > 0.97) {
+                spoil(round + i, &theta0[i], &omega0[i], &w0[i], &g[i], &L[i]);
+            }
+        }
+        for (int gl = 0; gl < 2; ++gl) {
+            PendulumExact many[MANY], one[MANY];
+            int status[MANY];
+            memset(many, 0xA5, sizeof many);
+            memset(one, 0xA5, sizeof one);
+            if (gl) {
+                pendulum_exact_init_gl_many((size_t)n, theta0, omega0, g, L, t0, many, status);
+            } else {
+                pendulum_exact_init_many((size_t)n, theta0, omega0, w0, t0, many, status);
+            }
+            for (long i = 0; i < n; ++i) {
+                const int expected = gl ? pendulum_exact_init_gl(&one[i], theta0[i], omega0[i], g[i], L[i], t0)
+                                        : pendulum_exact_init(&one[i], theta0[i], omega0[i], w0[i], t0);
+                compared++;
+                const int ok = status[i] == expected && memcmp(&many[i], &one[i], sizeof one[i]) == 0;
+                same += ok;
+                if (!ok) {
+                    check(0, "init%s_many: state %ld of %ld (theta0 = %.17g, omega0 = %.17g) differs", gl ? "_gl" : "",
+                          i, n, theta0[i], omega0[i]);
+                }
+            }
+        }
+    }
+    check(same == compared, "init_many, init_gl_many: %ld of %ld states the scalar set-ups' bytes", same, compared);
+}
+
 int main(void)
 {
+    check_many();
     long written = 0, scaled = 0, agree = 0, periods = 0, states = 0;
     for (long i = 0; i < 40000; ++i) {
         const double g = exp(log(1e-2) + uniform() * log(1e5)), L = exp(log(1e-2) + uniform() * log(1e4));

@@ -47,17 +47,62 @@ static void refuse(size_t n, double *theta, double *omega)
     }
 }
 
+/* Elements whose inputs differ from both neighbours' (a state per point) are set up this many
+ * at a time by pendulum_exact_init_gl_many, which sets up releases from rest in lock-step. */
+#define SINGLES 32
+
+typedef struct {
+    size_t count;
+    size_t at[SINGLES];
+    double theta0[SINGLES], omega0[SINGLES], L[SINGLES], g[SINGLES];
+} Singles;
+
+/* Sets up and evaluates the pending single elements; returns how many were refused. */
+static size_t flush_singles(Singles *s, const double *t, double *theta, double *omega)
+{
+    PendulumExact ex[SINGLES];
+    int status[SINGLES];
+    pendulum_exact_init_gl_many(s->count, s->theta0, s->omega0, s->g, s->L, 0.0, ex, status);
+    size_t refused = 0;
+    for (size_t j = 0; j < s->count; ++j) {
+        const size_t i = s->at[j];
+        if (status[j] == 0) {
+            refused += evaluate(&ex[j], 1, t + i, theta + i, omega + i);
+        } else {
+            refuse(1, theta + i, omega + i);
+            refused += 1;
+        }
+    }
+    s->count = 0;
+    return refused;
+}
+
 size_t pendulum_exact_many(size_t n, const double *theta0, const double *omega0, const double *L,
                            const double *g, const double *t, double *theta, double *omega)
 {
     size_t refused = 0;
     size_t start = 0;
+    Singles singles;
+    singles.count = 0;
     while (start < n) {
         /* a run of elements with the same inputs (bitwise) shares one set-up */
         size_t end = start + 1;
         while (end < n && same_bits(theta0[end], theta0[start]) && same_bits(omega0[end], omega0[start])
                && same_bits(L[end], L[start]) && same_bits(g[end], g[start])) {
             ++end;
+        }
+        if (end - start == 1) {
+            const size_t j = singles.count++;
+            singles.at[j] = start;
+            singles.theta0[j] = theta0[start];
+            singles.omega0[j] = omega0[start];
+            singles.L[j] = L[start];
+            singles.g[j] = g[start];
+            if (singles.count == SINGLES) {
+                refused += flush_singles(&singles, t, theta, omega);
+            }
+            start = end;
+            continue;
         }
         PendulumExact ex;
         if (set_up(&ex, theta0[start], omega0[start], L[start], g[start]) == 0) {
@@ -68,7 +113,7 @@ size_t pendulum_exact_many(size_t n, const double *theta0, const double *omega0,
         }
         start = end;
     }
-    return refused;
+    return refused + flush_singles(&singles, t, theta, omega);
 }
 
 size_t pendulum_exact_times(double theta0, double omega0, double L, double g, size_t n, const double *t,
