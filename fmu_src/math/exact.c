@@ -801,7 +801,7 @@ static void init_block(int count, const NewState *in, double t0)
         return;
     }
     EllipticParam *ell[ELLIPTIC_LANES];
-    EllipticChain chain[ELLIPTIC_LANES];
+    EllipticChains chains;
     double m[ELLIPTIC_LANES], kc[ELLIPTIC_LANES], m1[ELLIPTIC_LANES], kc_lo[ELLIPTIC_LANES];
     DoubleDouble inv_K[ELLIPTIC_LANES];
     for (int l = 0; l < lanes; ++l) {
@@ -809,13 +809,13 @@ static void init_block(int count, const NewState *in, double t0)
         m[l] = from_rest_start(in[i].e, &trig[i], &kc[l]);
         ell[l] = &in[i].e->ell;
     }
-    elliptic_param_begin_many(lanes, ell, m, kc, chain);
+    elliptic_param_begin_many(lanes, ell, m, kc, &chains);
     for (int l = 0; l < lanes; ++l) {
         const int i = rest[l];
         m1[l] = from_rest_cosine(&st[i], &trig[i]).hi;
         kc_lo[l] = st[i].c.lo;
     }
-    elliptic_param_finish_many(lanes, ell, chain, m1, kc_lo, inv_K);
+    elliptic_param_finish_many(lanes, ell, &chains, m1, kc_lo, inv_K);
     for (int l = 0; l < lanes; ++l) {
         const NewState *s = &in[rest[l]];
         from_rest_fields(s->e, s->theta0, s->omega0, s->w0, t0, s->g, s->L, &st[rest[l]], &trig[rest[l]], m1[l],
