@@ -439,3 +439,172 @@ DoubleDouble dd_sin(DoubleDouble x)
     default: return dd_neg(cos_y);
     }
 }
+
+#ifdef PENDULUM_DD_AVX
+#include "dd_avx.h"
+
+/* horner_double on four lanes */
+static inline V4 v4_horner_double(const DoubleDouble *coef, V4 z)
+{
+    V4 tail = v4_all(coef[13].hi);
+    for (int j = 12; j >= 0; --j) {
+        tail = coef[j].hi + z * tail;
+    }
+    return tail;
+}
+
+/* sin_versine_small on four lanes */
+static inline void v4_sin_versine_small(V4Dd r, V4Dd *w, V4Dd *v)
+{
+    V4Dd r2 = v4_two_prod(r.hi, r.hi);
+    r2.lo += 2.0 * r.hi * r.lo;
+    const V4 z = r2.hi;
+    const V4 p_rest = z * z * (-0x1.a01a01a01a01ap-13 + z * (0x1.71de3a556c734p-19 - z * 0x1.ae64567f544e4p-26));
+    const V4 q_rest = z * z * (0x1.a01a01a01a01ap-16 - z * 0x1.27e4fb7789f5cp-22);
+    const V4Dd p2 = v4_dd_mul(r2, (V4Dd){v4_all(INV_5F_HI), v4_all(INV_5F_LO)});
+    const V4Dd q2 = v4_dd_mul(r2, (V4Dd){v4_all(-INV_6F_HI), v4_all(-INV_6F_LO)});
+    V4Dd P = v4_fast_two_sum(v4_all(-INV_3F_HI), p2.hi), Q = v4_fast_two_sum(v4_all(INV_4F_HI), q2.hi);
+    P.lo += (-INV_3F_LO + p2.lo) + p_rest;
+    Q.lo += (INV_4F_LO + q2.lo) + q_rest;
+    *w = v4_add_smaller(r, v4_dd_mul(v4_dd_mul(r, r2), P));
+    *v = v4_add_smaller((V4Dd){0.5 * r2.hi, 0.5 * r2.lo}, v4_dd_neg(v4_dd_mul(v4_dd_mul(r2, r2), Q)));
+}
+
+/* dd_cos_sin_begin for lanes <= 4 arguments x[l] + 0, |x[l]| < 2 (reduce_quadrant's first
+ * branch); unused lanes compute lane 0's and write nothing. */
+static void cos_sin_begin_avx(int lanes, const double *x, DdCosSin *t)
+{
+    V4 xh;
+    for (int l = 0; l < AVX_LANES; ++l) {
+        xh[l] = x[l < lanes ? l : 0];
+    }
+    /* reduce_quadrant: n in {-1, 0, 1}, y = x - n pi/2 (y = x for n = 0) */
+    const V4 n = v4_pick((V4Mask)(xh > 0.5 * HALF_PI_HI), v4_all(1.0), v4_all(0.0))
+                 - v4_pick((V4Mask)(xh < -0.5 * HALF_PI_HI), v4_all(1.0), v4_all(0.0));
+    const V4Mask zero = (V4Mask)(n == 0.0);
+    const V4 head = xh - n * HALF_PI_HI;
+    const V4Dd rest = v4_two_sum(v4_all(0.0), -n * HALF_PI_LO);
+    V4Dd y = v4_two_sum(head, rest.hi);
+    y.lo += rest.lo - n * HALF_PI_LOLO;
+    y = v4_fast_two_sum(y.hi, y.lo);
+    y = v4_pick_dd(zero, (V4Dd){xh, v4_all(0.0)}, y);
+    /* quadrant_of(n): 0, 1, or 3 for n = -1; odd for n != 0; flip = -1 for quadrant 1 */
+    const V4Mask odd = ~zero, flip_minus = (V4Mask)(n > 0.0);
+    /* the double sin x: the series in double of sincos_reduced */
+    const V4 z = v4_dd_mul(y, y).hi;
+    const V4 even_sum = y.hi + y.hi * z * v4_horner_double(SIN_COEF, z);
+    const V4 odd_sum = 1.0 + z * v4_horner_double(COS_COEF, z);
+    const V4 other = v4_pick(odd, odd_sum, even_sum);
+    const V4 sin_x = v4_pick((V4Mask)(n < 0.0), -other, other);
+    /* table_point */
+    const V4 sign = v4_pick((V4Mask)(y.hi < 0.0), v4_all(-1.0), v4_all(1.0));
+    const V4Dd u = {sign * y.hi, sign * y.lo};
+    const V4 scaled = u.hi * 64.0;
+    const V4 whole = (V4)_mm256_round_pd((__m256d)scaled, _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC);
+    const V4 index = whole + v4_pick((V4Mask)(scaled - whole >= 0.5), v4_all(1.0), v4_all(0.0));
+    V4Dd C, S;
+    for (int l = 0; l < AVX_LANES; ++l) {
+        const double *row = TABLE_64[(int)index[l]];
+        C.hi[l] = row[0];
+        C.lo[l] = row[1];
+        S.hi[l] = row[2];
+        S.lo[l] = row[3];
+    }
+    const V4Dd r = v4_two_sum(u.hi - index * 0.015625, u.lo);
+    /* table_leading */
+    const V4Dd R2 = v4_two_prod(r.hi, r.hi);
+    const V4 zr = R2.hi;
+    const V4 w_rest = r.lo - r.hi * zr * (0x1.5555555555555p-3 - zr * (0x1.1111111111111p-7 - zr * 0x1.a01a01a01a01ap-13));
+    const V4 v_rest = (0.5 * R2.lo + r.hi * r.lo) - zr * zr * (0x1.5555555555555p-5 - zr * 0x1.6c16c16c16c17p-10);
+    const V4Dd first = v4_two_prod(v4_pick(odd, C.hi, -S.hi), r.hi);
+    const V4 base = v4_pick(odd, S.hi, C.hi), other_hi = v4_pick(odd, C.hi, -S.hi);
+    const V4 base_lo = v4_pick(odd, S.lo, C.lo), other_lo = v4_pick(odd, C.lo, -S.lo);
+    const V4Dd second = v4_two_prod(-base, 0.5 * zr);
+    const V4Dd A = v4_two_sum(base, first.hi), B = v4_two_sum(A.hi, second.hi);
+    const V4 rest_sum = ((A.lo + B.lo) + (first.lo + second.lo))
+                        + ((base_lo - base_lo * (0.5 * zr) - base * v_rest) + (other_hi * w_rest + other_lo * r.hi));
+    const V4Dd sum = v4_two_sum(B.hi, rest_sum);
+    const V4 bound = 0x1p-66 * (V4)_mm256_andnot_pd(_mm256_set1_pd(-0.0), (__m256d)sum.hi);
+    const V4Mask certain = (V4Mask)(sum.hi + (sum.lo + bound) == sum.hi) & (V4Mask)(sum.hi + (sum.lo - bound) == sum.hi);
+    const V4 flip = v4_pick(flip_minus, v4_all(-1.0), v4_all(1.0));
+    const V4 cos_lead = flip * v4_pick(odd, sign * sum.hi, sum.hi);
+    for (int l = 0; l < lanes; ++l) {
+        DdCosSin *out = &t[l];
+        out->y.hi = y.hi[l];
+        out->y.lo = y.lo[l];
+        out->quadrant = n[l] < 0.0 ? 3 : (int)n[l];
+        out->sin_x = sin_x[l];
+        out->point.sign = sign[l];
+        out->point.r.hi = r.hi[l];
+        out->point.r.lo = r.lo[l];
+        out->point.C.hi = C.hi[l];
+        out->point.C.lo = C.lo[l];
+        out->point.S.hi = S.hi[l];
+        out->point.S.lo = S.lo[l];
+        out->cos_lead = cos_lead[l];
+        out->cos_lead_certain = certain[l] != 0;
+    }
+}
+
+/* dd_cos_sin_end for lanes <= 4 of cos_sin_begin_avx's (every one with a finite y) */
+static void cos_sin_end_avx(int lanes, const DdCosSin *t, DoubleDouble *cos_x)
+{
+    V4Dd r, C, S;
+    V4 sign, flip, lead;
+    V4Mask odd, certain;
+    for (int l = 0; l < AVX_LANES; ++l) {
+        const DdCosSin *in = &t[l < lanes ? l : 0];
+        r.hi[l] = in->point.r.hi;
+        r.lo[l] = in->point.r.lo;
+        C.hi[l] = in->point.C.hi;
+        C.lo[l] = in->point.C.lo;
+        S.hi[l] = in->point.S.hi;
+        S.lo[l] = in->point.S.lo;
+        sign[l] = in->point.sign;
+        odd[l] = (in->quadrant & 1) ? -1 : 0;
+        flip[l] = (in->quadrant == 1 || in->quadrant == 2) ? -1.0 : 1.0;
+        lead[l] = in->cos_lead;
+        certain[l] = in->cos_lead_certain ? -1 : 0;
+    }
+    /* sincos_at: cos for even quadrants, sin for odd */
+    V4Dd w, v;
+    v4_sin_versine_small(r, &w, &v);
+    const V4Dd cos_y = v4_add_smaller(C, v4_dd_neg(v4_add_smaller(v4_dd_mul(S, w), v4_dd_mul(C, v))));
+    const V4Dd sin_abs = v4_add_smaller(S, v4_add_smaller(v4_dd_mul(C, w), v4_dd_neg(v4_dd_mul(S, v))));
+    const V4Dd sin_y = {sign * sin_abs.hi, sign * sin_abs.lo};
+    const V4Dd value = v4_pick_dd(odd, sin_y, cos_y);
+    /* the certain leading double, or the value itself */
+    const V4Dd known = {lead, flip * ((value.hi - flip * lead) + value.lo)};
+    const V4Dd result = v4_pick_dd(certain, known, (V4Dd){flip * value.hi, flip * value.lo});
+    for (int l = 0; l < lanes; ++l) {
+        cos_x[l].hi = result.hi[l];
+        cos_x[l].lo = result.lo[l];
+    }
+}
+#endif
+
+void dd_cos_sin_begin_many(int lanes, const double *x, DdCosSin *t)
+{
+#ifdef PENDULUM_DD_AVX
+    for (int first = 0; first < lanes; first += AVX_LANES) {
+        cos_sin_begin_avx(lanes - first < AVX_LANES ? lanes - first : AVX_LANES, x + first, t + first);
+    }
+#else
+    for (int l = 0; l < lanes; ++l) {
+        dd_cos_sin_begin(dd_of(x[l]), &t[l]);
+    }
+#endif
+}
+
+void dd_cos_sin_end_many(int lanes, const DdCosSin *t, DoubleDouble *cos_x)
+{
+#ifdef PENDULUM_DD_AVX
+    for (int first = 0; first < lanes; first += AVX_LANES) {
+        cos_sin_end_avx(lanes - first < AVX_LANES ? lanes - first : AVX_LANES, t + first, cos_x + first);
+    }
+#else
+    for (int l = 0; l < lanes; ++l) {
+        cos_x[l] = dd_cos_sin_end(&t[l]);
+    }
+#endif
+}

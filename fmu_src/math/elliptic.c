@@ -236,14 +236,14 @@ void elliptic_param_begin(EllipticParam *p, double m, double kc, EllipticChain *
     chain_end(p, n, m_n);
 }
 
-#ifdef ELLIPTIC_AVX
+#ifdef PENDULUM_DD_AVX
 #include "elliptic_avx.h"
 #endif
 
 void elliptic_param_begin_many(int lanes, EllipticParam *const *p, const double *m, const double *kc,
                                EllipticChains *chains)
 {
-#ifdef ELLIPTIC_AVX
+#ifdef PENDULUM_DD_AVX
     for (int first = 0; first < lanes; first += AVX_LANES) {
         const int count = lanes - first < AVX_LANES ? lanes - first : AVX_LANES;
         chains_begin_avx(count, p + first, m + first, kc + first, chains, first);
@@ -343,7 +343,7 @@ void elliptic_param_finish(EllipticParam *p, const EllipticChain *chain, double 
 void elliptic_param_finish_many(int lanes, EllipticParam *const *p, const EllipticChains *chains, const double *m1,
                                 const double *kc_lo, DoubleDouble *inv_K)
 {
-#ifdef ELLIPTIC_AVX
+#ifdef PENDULUM_DD_AVX
     for (int first = 0; first < lanes; first += AVX_LANES) {
         const int count = lanes - first < AVX_LANES ? lanes - first : AVX_LANES;
         chains_finish_avx(count, p + first, chains, first, m1 + first, kc_lo + first, inv_K + first);

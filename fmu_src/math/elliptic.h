@@ -126,9 +126,6 @@ typedef struct {
     double root[ELLIPTIC_MAX_LEVELS][ELLIPTIC_LANES];
     double one_plus[ELLIPTIC_MAX_LEVELS][ELLIPTIC_LANES];
 } EllipticChains;
-#if defined(PENDULUM_DD_FMA) && defined(__GNUC__) && defined(__x86_64__)
-#define ELLIPTIC_AVX 1
-#endif
 void elliptic_param_begin_many(int lanes, EllipticParam *const *p, const double *m, const double *kc,
                                EllipticChains *chains);
 void elliptic_param_finish_many(int lanes, EllipticParam *const *p, const EllipticChains *chains, const double *m1,

@@ -344,9 +344,10 @@ static void reduce_initial_angle(double theta0, InitialState *st, DdCosSin *trig
     st->th = th;
 }
 
-static void finish_initial_angle(InitialState *st, const DdCosSin *trig)
+/* The end of step 1 from the double sin(th/2) and cos(th/2) in double-double. */
+static void settle_initial_angle(InitialState *st, double sin_half, DoubleDouble c)
 {
-    DoubleDouble s = dd_of(trig->sin_x), c = dd_cos_sin_end(trig);
+    DoubleDouble s = dd_of(sin_half);
     if (c.hi < 0.0 || (c.hi == 0.0 && st->th.hi < 0.0)) {
         /* th just outside (-pi, pi]: move it by one turn; th/2 moves by pi, s and c change sign. */
         double shift = st->th.hi > 0.0 ? 1.0 : -1.0;
@@ -357,6 +358,11 @@ static void finish_initial_angle(InitialState *st, const DdCosSin *trig)
     }
     st->s = s;
     st->c = c;
+}
+
+static void finish_initial_angle(InitialState *st, const DdCosSin *trig)
+{
+    settle_initial_angle(st, trig->sin_x, dd_cos_sin_end(trig));
 }
 
 /* Step 2. The side of the separatrix. Only the ratio q = |omega0| / (2 w0) enters m and m1,
@@ -613,9 +619,9 @@ static inline double from_rest_start(PendulumExact *e, const DdCosSin *trig, dou
     return smaller(k * k, 1.0);
 }
 
-static inline DoubleDouble from_rest_cosine(InitialState *st, const DdCosSin *trig)
+static inline DoubleDouble from_rest_cosine(InitialState *st, double sin_half, DoubleDouble c)
 {
-    finish_initial_angle(st, trig);
+    settle_initial_angle(st, sin_half, c);
     return dd_mul(st->c, st->c);   /* m1 = c^2 */
 }
 
@@ -648,7 +654,7 @@ static void init_from_rest(PendulumExact *e, double theta0, double omega0, Doubl
     const double m = from_rest_start(e, trig, &kc);
     EllipticChain chain;
     elliptic_param_begin(&e->ell, m, kc, &chain);
-    const DoubleDouble m1 = from_rest_cosine(st, trig);
+    const DoubleDouble m1 = from_rest_cosine(st, trig->sin_x, dd_cos_sin_end(trig));
     DoubleDouble inv_K;
     elliptic_param_finish(&e->ell, &chain, m1.hi, st->c.lo, &inv_K);
     from_rest_fields(e, theta0, omega0, w0, t0, g, L, st, trig, m1.hi, inv_K);
@@ -784,42 +790,61 @@ typedef struct {
 
 static void init_block(int count, const NewState *in, double t0)
 {
-    InitialState st[ELLIPTIC_LANES];
-    DdCosSin trig[ELLIPTIC_LANES];
-    int rest[ELLIPTIC_LANES];   /* which states are releases from rest, in order */
-    int lanes = 0;
+    /* step 1 for the releases with |theta0| <= 3.2, as reduce_initial_angle (no turn to
+     * subtract): sin and cos of theta0 / 2 (exact) begun over the block */
+    int near[ELLIPTIC_LANES], candidates = 0;
+    double half[ELLIPTIC_LANES];
     for (int i = 0; i < count; ++i) {
-        reduce_initial_angle(in[i].theta0, &st[i], &trig[i]);
-        if (from_rest_can(in[i].omega0, &trig[i])) {
-            rest[lanes++] = i;
+        if (in[i].omega0 == 0.0 && fabs(in[i].theta0) <= 3.2) {
+            near[candidates] = i;
+            half[candidates++] = 0.5 * in[i].theta0;
         } else {
-            (void)init_reduced(in[i].e, in[i].theta0, in[i].omega0, in[i].w0, t0, in[i].g, in[i].L, st[i],
-                               &trig[i]);   /* a libration, rotation or the separatrix: cannot fail here */
+            (void)exact_init_dd(in[i].e, in[i].theta0, in[i].omega0, in[i].w0, t0, in[i].g, in[i].L);
+        }
+    }
+    if (candidates == 0) {
+        return;
+    }
+    DdCosSin trig[ELLIPTIC_LANES];
+    dd_cos_sin_begin_many(candidates, half, trig);
+    InitialState st[ELLIPTIC_LANES];
+    int rest[ELLIPTIC_LANES];   /* the candidates init_from_rest takes, in order */
+    int lanes = 0;
+    for (int j = 0; j < candidates; ++j) {
+        const NewState *s = &in[near[j]];
+        st[j].turns = 0.0;
+        st[j].th = dd_of(s->theta0);
+        if (from_rest_can(s->omega0, &trig[j])) {
+            trig[lanes] = trig[j];   /* compacted: lane l's trig at l (lanes <= j) */
+            rest[lanes++] = j;
+        } else {
+            /* a libration, rotation or the separatrix: cannot fail here */
+            (void)init_reduced(s->e, s->theta0, s->omega0, s->w0, t0, s->g, s->L, st[j], &trig[j]);
         }
     }
     if (lanes == 0) {
         return;
     }
+    /* init_from_rest's three parts, each over the lanes */
     EllipticParam *ell[ELLIPTIC_LANES];
     EllipticChains chains;
     double m[ELLIPTIC_LANES], kc[ELLIPTIC_LANES], m1[ELLIPTIC_LANES], kc_lo[ELLIPTIC_LANES];
-    DoubleDouble inv_K[ELLIPTIC_LANES];
+    DoubleDouble c[ELLIPTIC_LANES], inv_K[ELLIPTIC_LANES];
     for (int l = 0; l < lanes; ++l) {
-        const int i = rest[l];
-        m[l] = from_rest_start(in[i].e, &trig[i], &kc[l]);
-        ell[l] = &in[i].e->ell;
+        m[l] = from_rest_start(in[near[rest[l]]].e, &trig[l], &kc[l]);
+        ell[l] = &in[near[rest[l]]].e->ell;
     }
     elliptic_param_begin_many(lanes, ell, m, kc, &chains);
+    dd_cos_sin_end_many(lanes, trig, c);
     for (int l = 0; l < lanes; ++l) {
-        const int i = rest[l];
-        m1[l] = from_rest_cosine(&st[i], &trig[i]).hi;
-        kc_lo[l] = st[i].c.lo;
+        InitialState *state = &st[rest[l]];
+        m1[l] = from_rest_cosine(state, trig[l].sin_x, c[l]).hi;
+        kc_lo[l] = state->c.lo;
     }
     elliptic_param_finish_many(lanes, ell, &chains, m1, kc_lo, inv_K);
     for (int l = 0; l < lanes; ++l) {
-        const NewState *s = &in[rest[l]];
-        from_rest_fields(s->e, s->theta0, s->omega0, s->w0, t0, s->g, s->L, &st[rest[l]], &trig[rest[l]], m1[l],
-                         inv_K[l]);
+        const NewState *s = &in[near[rest[l]]];
+        from_rest_fields(s->e, s->theta0, s->omega0, s->w0, t0, s->g, s->L, &st[rest[l]], &trig[l], m1[l], inv_K[l]);
     }
 }
 

@@ -20,6 +20,8 @@
 #define dd_cos_sin dd_cos_sin_fma
 #define dd_cos_sin_begin dd_cos_sin_begin_fma
 #define dd_cos_sin_end dd_cos_sin_end_fma
+#define dd_cos_sin_begin_many dd_cos_sin_begin_many_fma
+#define dd_cos_sin_end_many dd_cos_sin_end_many_fma
 #define dd_sin dd_sin_fma
 #define elliptic_RF elliptic_RF_fma
 #define elliptic_param_init elliptic_param_init_fma

@@ -15,6 +15,8 @@
 #define dd_cos_sin dd_cos_sin_baseline
 #define dd_cos_sin_begin dd_cos_sin_begin_baseline
 #define dd_cos_sin_end dd_cos_sin_end_baseline
+#define dd_cos_sin_begin_many dd_cos_sin_begin_many_baseline
+#define dd_cos_sin_end_many dd_cos_sin_end_many_baseline
 #define dd_sin dd_sin_baseline
 #define elliptic_RF elliptic_RF_baseline
 #define elliptic_param_init elliptic_param_init_baseline

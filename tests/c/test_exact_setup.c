@@ -87,7 +87,6 @@ static void check_many(void)
         for (long i = 0; i < n; ++i) {
             g[i] = exp(log(1e-2) + uniform() * log(1e5));
             L[i] = exp(log(1e-2) + uniform() * log(1e4));
-            w0[i] = sqrt(g[i] / L[i]);
             const double kind = uniform();   /* mostly releases from rest (kinds 0 to 3) */
             draw_state(kind < 0.8 ? (long)(uniform() * 4) : (long)(uniform() * 8), w0[i], &theta0[i], &omega0[i]);
             if (kind > 0.97) {
@@ -114,6 +113,42 @@ static void check_many(void)
                     check(0, "init%s_many: state %ld of %ld (theta0 = %.17g, omega0 = %.17g) differs", gl ? "_gl" : "",
                           i, n, theta0[i], omega0[i]);
                 }
+            }
+        }
+    }
+    /* releases from the edges of the set-up's cases: theta0 / 2 on the table's points i/64 and
+     * half-way between them (ties of the nearest point), next to the quadrant's bound pi/4,
+     * signed zeros, tiny, pi and beyond */
+    double edge[200];
+    int edges = 0;
+    for (int i = 0; i <= 50; ++i) {
+        edge[edges++] = i / 32.0;
+        edge[edges++] = -(i + 0.5) / 32.0;
+        edge[edges++] = nextafter((i + 0.5) / 32.0, 0.0);
+    }
+    const double quarter = 0.5 * 3.141592653589793;   /* theta0 / 2 = pi/4 (the double) */
+    const double special[] = {quarter, nextafter(quarter, 0.0), nextafter(quarter, 4.0), -quarter, 0.0, -0.0,
+                              0x1p-1000, -0x1p-30, 3.141592653589793, -3.141592653589793, 3.2, -3.15};
+    for (size_t i = 0; i < sizeof special / sizeof special[0]; ++i) {
+        edge[edges++] = special[i];
+    }
+    for (int start = 0; start < edges; start += 7) {
+        const int n = edges - start < 7 ? edges - start : 7;
+        double omega0[7] = {0.0}, g[7], L[7];
+        PendulumExact many[7], one;
+        int status[7];
+        for (int i = 0; i < n; ++i) {
+            g[i] = 9.81;
+            L[i] = 1.0 + i;
+        }
+        pendulum_exact_init_gl_many((size_t)n, edge + start, omega0, g, L, 0.0, many, status);
+        for (int i = 0; i < n; ++i) {
+            const int expected = pendulum_exact_init_gl(&one, edge[start + i], 0.0, g[i], L[i], 0.0);
+            compared++;
+            const int ok = status[i] == expected && memcmp(&many[i], &one, sizeof one) == 0;
+            same += ok;
+            if (!ok) {
+                check(0, "init_gl_many: release from %a differs", edge[start + i]);
             }
         }
     }
