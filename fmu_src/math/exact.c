@@ -53,6 +53,8 @@ void pendulum_exact_eval_fma(const PendulumExact *ex, double t, double *theta, d
 void pendulum_exact_sin_cos_fma(const PendulumExact *ex, double t, double *sin_theta, double *cos_theta);
 void pendulum_exact_eval_many_fma(const PendulumExact *ex, size_t n, const double *t, double *theta,
                                   double *omega);
+void pendulum_exact_eval_states_fma(size_t n, const PendulumExact *ex, const double *t, double *theta,
+                                    double *omega);
 void pendulum_exact_init_many_fma(size_t n, const double *theta0, const double *omega0, const double *w0,
                                   double t0, PendulumExact *ex, int *status);
 void pendulum_exact_init_gl_many_fma(size_t n, const double *theta0, const double *omega0, const double *g,
@@ -1297,6 +1299,36 @@ void pendulum_exact_eval_many(const PendulumExact *ex, size_t n, const double *t
     }
     for (; i < n; ++i) {
         pendulum_exact_eval(ex, t[i], &theta[i], &omega[i]);
+    }
+}
+
+#ifdef PENDULUM_DD_AVX
+#include "exact_avx.h"
+#endif
+
+void pendulum_exact_eval_states(size_t n, const PendulumExact *ex, const double *t, double *theta, double *omega)
+{
+#ifdef EXACT_HANDS_ON_TO_FMA
+    if (EXACT_FMA_HERE()) {
+        pendulum_exact_eval_states_fma(n, ex, t, theta, omega);
+        return;
+    }
+#endif
+    size_t i = 0;
+#ifdef PENDULUM_DD_AVX
+    /* four states at a time; a lane off the common case by the scalar evaluation */
+    for (; i < n; i += AVX_LANES) {
+        const int lanes = n - i < AVX_LANES ? (int)(n - i) : AVX_LANES;
+        const int done = eval_states_avx(lanes, ex + i, t + i, theta + i, omega + i);
+        for (int l = 0; l < lanes; ++l) {
+            if (!(done & (1 << l))) {
+                pendulum_exact_eval(&ex[i + l], t[i + l], &theta[i + l], &omega[i + l]);
+            }
+        }
+    }
+#endif
+    for (; i < n; ++i) {
+        pendulum_exact_eval(&ex[i], t[i], &theta[i], &omega[i]);
     }
 }
 

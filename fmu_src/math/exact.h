@@ -109,6 +109,12 @@ void pendulum_exact_sin_cos(const PendulumExact *ex, double t, double *sin_theta
 void pendulum_exact_eval_many(const PendulumExact *ex, size_t n, const double *t, double *theta,
                               double *omega);
 
+/* theta[i], omega[i] = pendulum_exact_eval(&ex[i], t[i], ...) for i < n, bit for bit the same:
+ * many states at one time each (after pendulum_exact_init_many), in the fma build four
+ * librations at once. The arrays must not overlap. */
+void pendulum_exact_eval_states(size_t n, const PendulumExact *ex, const double *t, double *theta,
+                                double *omega);
+
 /* Compares a numerical state (theta, omega) at some time with the exact motion, qualitatively:
  * NULL if it is the same kind of motion, else what went wrong, as a phrase:
  * "carried the libration over the top" (exact libration, |theta - its centre| > pi + 0.5),

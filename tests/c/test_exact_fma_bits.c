@@ -35,6 +35,7 @@
 #define pendulum_exact_eval pendulum_exact_eval_baseline
 #define pendulum_exact_sin_cos pendulum_exact_sin_cos_baseline
 #define pendulum_exact_eval_many pendulum_exact_eval_many_baseline
+#define pendulum_exact_eval_states pendulum_exact_eval_states_baseline
 #define pendulum_exact_qualitative_miss pendulum_exact_qualitative_miss_baseline
 #define pendulum_exact_period pendulum_exact_period_baseline
 #include "dd.c"

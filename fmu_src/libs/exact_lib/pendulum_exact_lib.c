@@ -62,12 +62,29 @@ static size_t flush_singles(Singles *s, const double *t, double *theta, double *
 {
     PendulumExact ex[SINGLES];
     int status[SINGLES];
+    double t_set[SINGLES], theta_set[SINGLES], omega_set[SINGLES];
     pendulum_exact_init_gl_many(s->count, s->theta0, s->omega0, s->g, s->L, 0.0, ex, status);
+    /* the refused states' slots evaluate a copy of a set-up one (their outputs are NaN) */
+    size_t good = 0;
+    for (size_t j = 0; j < s->count; ++j) {
+        t_set[j] = t[s->at[j]];
+        good = status[j] == 0 ? j : good;
+    }
+    for (size_t j = 0; j < s->count; ++j) {
+        if (status[j] != 0) {
+            ex[j] = ex[good];
+        }
+    }
+    if (status[good] == 0) {
+        pendulum_exact_eval_states(s->count, ex, t_set, theta_set, omega_set);
+    }
     size_t refused = 0;
     for (size_t j = 0; j < s->count; ++j) {
         const size_t i = s->at[j];
         if (status[j] == 0) {
-            refused += evaluate(&ex[j], 1, t + i, theta + i, omega + i);
+            theta[i] = theta_set[j];
+            omega[i] = omega_set[j];
+            refused += !pendulum_exact_resolvable(&ex[j], t[i]);
         } else {
             refuse(1, theta + i, omega + i);
             refused += 1;

@@ -1,0 +1,167 @@
+/* exact_avx.h: pendulum_exact_eval_states four states to an AVX vector, for the fma build
+ * (exact_fma.c: GCC on x86-64), included by exact.c there alone.
+ *
+ * Each lane runs eval_libration's operations in their order (phase_near with the fma,
+ * trig_sincos_small, elliptic_landen_bottom, the plain Landen steps, libration_angle_omega
+ * with elliptic_atan_unit) on its own state's constants, elementwise IEEE operations as the
+ * scalar code's (dd_avx.h), so its theta and omega have the scalar bits; a lane whose state
+ * has fewer Landen levels than another's keeps its values through the extra steps. A lane off
+ * that common case (not a libration with at most ELLIPTIC_LEVELS_WITHOUT_RESCALE levels and no
+ * whole turns in theta0, t == t0, a phase beyond 2^50 quarter periods or not finite, a bottom
+ * argument past the series) is left to the caller. test_exact_batch compares every output. */
+#ifndef PENDULUM_EXACT_AVX_H
+#define PENDULUM_EXACT_AVX_H
+
+#include "dd_avx.h"
+
+/* elliptic_atan_series */
+static inline V4 v4_atan_series(V4 s)
+{
+    const V4 s2 = s * s, s4 = s2 * s2, s8 = s4 * s4;
+    const V4 g01 = -0x1.5555555555555p-2 + s * 0x1.9999999999953p-3;
+    const V4 g23 = -0x1.249249248d7eep-3 + s * 0x1.c71c71c304b68p-4;
+    const V4 g45 = -0x1.745d165df3f95p-4 + s * 0x1.3b1392d9e785cp-4;
+    const V4 g67 = -0x1.110e880a7a521p-4 + s * 0x1.e19a13b9fc6dfp-5;
+    const V4 g89 = -0x1.ac7a938b69c93p-5 + s * 0x1.74ddd408bb4c1p-5;
+    const V4 g1011 = -0x1.1b33b923aa954p-5 + s * 0x1.0ad36a455cafbp-6;
+    return ((g01 + s2 * g23) + s4 * (g45 + s2 * g67)) + s8 * (g89 + s2 * g1011);
+}
+
+static inline V4 v4_abs(V4 x)
+{
+    return (V4)_mm256_andnot_pd(_mm256_set1_pd(-0.0), (__m256d)x);
+}
+
+/* elliptic_atan_unit */
+static inline V4 v4_atan_unit(V4 y, V4 x)
+{
+    const V4 a = v4_abs(y), b = x;
+    const V4 w1 = v4_pick((V4Mask)(a > ELLIPTIC_TAN_PI_8 * b), v4_all(1.0), v4_all(0.0)), w0 = 1.0 - w1;
+    const V4 t = (w0 * a + w1 * (a - b)) / (w0 * b + w1 * (a + b));
+    const V4 s = t * t;
+    const V4 g = v4_atan_series(s);
+    const V4 angle = w1 * ELLIPTIC_QUARTER_PI_HI + (w1 * ELLIPTIC_QUARTER_PI_LO + (t + t * s * g));
+    /* copysign(angle, y) */
+    const __m256d sign_bit = _mm256_set1_pd(-0.0);
+    return (V4)_mm256_or_pd(_mm256_andnot_pd(sign_bit, (__m256d)angle), _mm256_and_pd(sign_bit, (__m256d)y));
+}
+
+/* trig_series and trig_sincos_small */
+static inline void v4_sincos_small(V4 r, V4 *sin_r, V4 *cos_r)
+{
+    const double *c = TRIG_SIGNED_INVERSE_FACTORIAL;
+    const V4 z = r * r;
+    const V4 z2 = z * z, z4 = z2 * z2;
+    const V4 ps = ((c[3] + z * c[5]) + z2 * (c[7] + z * c[9])) + z4 * ((c[11] + z * c[13]) + z2 * (c[15] + z * c[17]));
+    const V4 pc = ((c[2] + z * c[4]) + z2 * (c[6] + z * c[8])) + z4 * ((c[10] + z * c[12]) + z2 * (c[14] + z * c[16]));
+    *sin_r = r + (r * z) * ps;
+    *cos_r = 1.0 + z * pc;
+}
+
+/* elliptic_landen_step_plain with each lane's level factors */
+static inline void v4_landen_step(V4 kk, V4 one_plus_k, V4 one_minus_k, V4 *S, V4 *C, V4 *E, V4 *D)
+{
+    const V4 d2 = *D * *D;
+    const V4 up_S = one_plus_k * *S * *D, up_C = *C * *E;
+    const V4 up_E = one_minus_k * d2 + kk * *C * *C, up_D = d2 + kk * *S * *S;
+    *S = up_S;
+    *C = up_C;
+    *E = up_E;
+    *D = up_D;
+}
+
+/* Up to four states ex[l] at t[l] (l < lanes); returns the lanes done as bits (1 << l), their
+ * theta[l] and omega[l] written; the others untouched. */
+static int eval_states_avx(int lanes, const PendulumExact *ex, const double *t, double *theta, double *omega)
+{
+    V4 tv, t0, rho_hi, rho_lo, x0_hi, x0_lo, K_hi, bottom_scale, bottom_m, sqrt_k1, kc, omega_half, levels;
+    int common[AVX_LANES], most = 0;
+    for (int l = 0; l < AVX_LANES; ++l) {
+        const int from = l < lanes ? l : 0;
+        const PendulumExact *e = &ex[from];
+        tv[l] = t[from];
+        t0[l] = e->t0;
+        rho_hi[l] = e->rho_hi;
+        rho_lo[l] = e->rho_lo;
+        x0_hi[l] = e->x0_hi;
+        x0_lo[l] = e->x0_lo;
+        K_hi[l] = e->K_hi;
+        bottom_scale[l] = e->ell.bottom_scale;
+        bottom_m[l] = e->ell.bottom_m;
+        sqrt_k1[l] = e->sqrt_k1;
+        kc[l] = e->kc;
+        omega_half[l] = e->omega_half;
+        common[l] = l < lanes && e->regime == PENDULUM_LIBRATION && e->ell.levels <= ELLIPTIC_LEVELS_WITHOUT_RESCALE
+                    && e->theta_turns == 0.0 && t[l] != e->t0;
+        levels[l] = common[l] ? (double)e->ell.levels : 1.0;
+        most = common[l] && e->ell.levels > most ? e->ell.levels : most;
+    }
+    /* phase_at and phase_near */
+    const V4Dd tau = v4_two_sum(tv, -t0);
+    const V4 x_hi = rho_hi * tau.hi;
+    const V4 x_lo = (V4)_mm256_fmadd_pd((__m256d)rho_hi, (__m256d)tau.hi, (__m256d)(-x_hi));
+    const V4 quarters = (x_hi + x0_hi + 0x1.8p52) - 0x1.8p52;
+    const V4 f = ((x_hi - quarters) + x0_hi) + (x_lo + (rho_hi * tau.lo + rho_lo * tau.hi) + x0_lo);
+    const V4 v = f * K_hi;
+    /* the quarter n mod 4 as eval_libration_lanes' exact weights */
+    const V4 r = quarters - 4.0 * ((0.25 * quarters + 0x1.8p52) - 0x1.8p52);
+    const V4 r2 = r * r;
+    const V4 odd = r2 * (4.0 - r2) / 3.0;
+    const V4 sign = 1.0 - 2.0 * (r2 * (r2 - 1.0) / 12.0 + odd * (1.0 - r) * 0.5);
+    const V4 z = v4_abs(v) * bottom_scale;
+    int done = 0;
+    for (int l = 0; l < lanes; ++l) {
+        done |= (common[l] && fabs(x_hi[l]) < 0x1p50 && z[l] <= ELLIPTIC_SERIES_Z_MAX) << l;
+    }
+    if (done == 0) {
+        return 0;
+    }
+    /* elliptic_landen_bottom, then the steps up to level 1 */
+    V4 sz, cz;
+    v4_sincos_small(z, &sz, &cz);
+    const V4 w = 0.25 * bottom_m * (z - sz * cz);
+    V4 S = sz - w * cz, C = cz + w * sz, E = 1.0 - 0.5 * bottom_m * sz * sz, D = v4_all(1.0);
+    V4 kk = v4_all(0.0), one_plus_k = kk, one_minus_k = kk;
+    for (int i = most - 1; i >= 1; --i) {
+        for (int l = 0; l < AVX_LANES; ++l) {
+            const EllipticParam *p = &ex[l < lanes ? l : 0].ell;
+            const int at = i < p->levels ? i : 0;
+            kk[l] = p->landen_k[at];
+            one_plus_k[l] = p->landen_1pk[at];
+            one_minus_k[l] = p->landen_1mk[at];
+        }
+        V4 S_up = S, C_up = C, E_up = E, D_up = D;
+        v4_landen_step(kk, one_plus_k, one_minus_k, &S_up, &C_up, &E_up, &D_up);
+        const V4Mask below = (V4Mask)(v4_all((double)i) < levels);
+        S = v4_pick(below, S_up, S);
+        C = v4_pick(below, C_up, C);
+        E = v4_pick(below, E_up, E);
+        D = v4_pick(below, D_up, D);
+    }
+    for (int l = 0; l < AVX_LANES; ++l) {
+        const EllipticParam *p = &ex[l < lanes ? l : 0].ell;
+        kk[l] = p->landen_k[0];
+        one_plus_k[l] = p->landen_1pk[0];
+        one_minus_k[l] = p->landen_1mk[0];
+    }
+    V4 S0 = S, C0 = C, E0 = E, D0 = D;
+    v4_landen_step(kk, one_plus_k, one_minus_k, &S0, &C0, &E0, &D0);
+    const V4Mask negative = (V4Mask)(v < 0.0);   /* sn is odd, cn and dn are even */
+    S = v4_pick(negative, -S, S);
+    S0 = v4_pick(negative, -S0, S0);
+    /* libration_angle_omega; theta0 has no whole turns, so theta is the angle */
+    const V4 even = 1.0 - odd;
+    const V4 y1 = even * S + odd * C, x1 = even * D + odd * E;
+    const V4 angle = 4.0 * v4_atan_unit(sign * sqrt_k1 * y1, x1);
+    const V4 cn_num = even * C0 - odd * (kc * S0), den = even * D0 + odd * E0;
+    const V4 om = 2.0 * (sign * omega_half * (cn_num / den));
+    for (int l = 0; l < lanes; ++l) {
+        if (done & (1 << l)) {
+            theta[l] = angle[l];
+            omega[l] = om[l];
+        }
+    }
+    return done;
+}
+
+#endif
