@@ -850,12 +850,25 @@ static void init_block(int count, const NewState *in, double t0)
     }
 }
 
+/* a and b the same double, bit for bit (+0 and -0 differ; NaN is no double of a set-up) */
+static int same_double(double a, double b)
+{
+    uint64_t x, y;
+    memcpy(&x, &a, sizeof x);
+    memcpy(&y, &b, sizeof y);
+    return x == y;
+}
+
 /* Gathers the accepted states into blocks for init_block; status[i] = 0 or -1 (refused). */
 static void init_many(size_t n, const double *theta0, const double *omega0, const double *w0, const double *g,
                       const double *L, double t0, PendulumExact *ex, int *status)
 {
     NewState block[ELLIPTIC_LANES];
     int count = 0;
+    /* the last g and L accepted, and their w0: a sweep over initial states at one g and L
+     * forms its root once */
+    double last_g = NAN, last_L = NAN;
+    DoubleDouble last_w0 = {NAN, NAN};
     for (size_t i = 0; i < n; ++i) {
         NewState *s = &block[count];
         int ok = inputs_finite(&ex[i], theta0[i], omega0[i], t0);
@@ -864,7 +877,15 @@ static void init_many(size_t n, const double *theta0, const double *omega0, cons
             s->w0 = dd_of(w0[i]);
             s->g = s->L = 0.0;
         } else {
-            ok = ok && w0_of_gl(g[i], L[i], &s->w0) == 0;
+            if (!(same_double(g[i], last_g) && same_double(L[i], last_L))) {
+                last_g = g[i];
+                last_L = L[i];
+                if (w0_of_gl(g[i], L[i], &last_w0) != 0) {
+                    last_w0.hi = NAN;   /* refused */
+                }
+            }
+            ok = ok && !isnan(last_w0.hi);
+            s->w0 = last_w0;
             s->g = g[i];
             s->L = L[i];
         }
