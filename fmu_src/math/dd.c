@@ -470,14 +470,10 @@ static inline void v4_sin_versine_small(V4Dd r, V4Dd *w, V4Dd *v)
     *v = v4_add_smaller((V4Dd){0.5 * r2.hi, 0.5 * r2.lo}, v4_dd_neg(v4_dd_mul(v4_dd_mul(r2, r2), Q)));
 }
 
-/* dd_cos_sin_begin for lanes <= 4 arguments x[l] + 0, |x[l]| < 2 (reduce_quadrant's first
- * branch); unused lanes compute lane 0's and write nothing. */
-static void cos_sin_begin_avx(int lanes, const double *x, DdCosSin *t)
+/* dd_cos_sin_begin on four arguments x + 0, |x| < 2 (reduce_quadrant's first branch), into
+ * a CosSinV4 (dd_avx.h) */
+static inline void cos_sin_begin_v4(V4 xh, CosSinV4 *out)
 {
-    V4 xh;
-    for (int l = 0; l < AVX_LANES; ++l) {
-        xh[l] = x[l < lanes ? l : 0];
-    }
     /* reduce_quadrant: n in {-1, 0, 1}, y = x - n pi/2 (y = x for n = 0) */
     const V4 n = v4_pick((V4Mask)(xh > 0.5 * HALF_PI_HI), v4_all(1.0), v4_all(0.0))
                  - v4_pick((V4Mask)(xh < -0.5 * HALF_PI_HI), v4_all(1.0), v4_all(0.0));
@@ -524,58 +520,84 @@ static void cos_sin_begin_avx(int lanes, const double *x, DdCosSin *t)
     const V4 rest_sum = ((A.lo + B.lo) + (first.lo + second.lo))
                         + ((base_lo - base_lo * (0.5 * zr) - base * v_rest) + (other_hi * w_rest + other_lo * r.hi));
     const V4Dd sum = v4_two_sum(B.hi, rest_sum);
-    const V4 bound = 0x1p-66 * (V4)_mm256_andnot_pd(_mm256_set1_pd(-0.0), (__m256d)sum.hi);
-    const V4Mask certain = (V4Mask)(sum.hi + (sum.lo + bound) == sum.hi) & (V4Mask)(sum.hi + (sum.lo - bound) == sum.hi);
+    const V4 bound = 0x1p-66 * v4_abs(sum.hi);
     const V4 flip = v4_pick(flip_minus, v4_all(-1.0), v4_all(1.0));
-    const V4 cos_lead = flip * v4_pick(odd, sign * sum.hi, sum.hi);
+    out->y = y;
+    out->n = n;
+    out->sin_x = sin_x;
+    out->sign = sign;
+    out->r = r;
+    out->C = C;
+    out->S = S;
+    out->cos_lead = flip * v4_pick(odd, sign * sum.hi, sum.hi);
+    out->certain = (V4Mask)(sum.hi + (sum.lo + bound) == sum.hi) & (V4Mask)(sum.hi + (sum.lo - bound) == sum.hi);
+}
+
+/* dd_cos_sin_end of cos_sin_begin_v4's lanes: cos x in double-double */
+static inline V4Dd cos_sin_end_v4(const CosSinV4 *in)
+{
+    const V4Mask odd = (V4Mask)(in->n != 0.0);
+    const V4 flip = v4_pick((V4Mask)(in->n > 0.0), v4_all(-1.0), v4_all(1.0));
+    /* sincos_at: cos for even quadrants, sin for odd */
+    V4Dd w, v;
+    v4_sin_versine_small(in->r, &w, &v);
+    const V4Dd C = in->C, S = in->S;
+    const V4Dd cos_y = v4_add_smaller(C, v4_dd_neg(v4_add_smaller(v4_dd_mul(S, w), v4_dd_mul(C, v))));
+    const V4Dd sin_abs = v4_add_smaller(S, v4_add_smaller(v4_dd_mul(C, w), v4_dd_neg(v4_dd_mul(S, v))));
+    const V4Dd sin_y = {in->sign * sin_abs.hi, in->sign * sin_abs.lo};
+    const V4Dd value = v4_pick_dd(odd, sin_y, cos_y);
+    /* the certain leading double, or the value itself */
+    const V4 lead = in->cos_lead;
+    const V4Dd known = {lead, flip * ((value.hi - flip * lead) + value.lo)};
+    return v4_pick_dd(in->certain, known, (V4Dd){flip * value.hi, flip * value.lo});
+}
+
+/* dd_cos_sin_begin for lanes <= 4 arguments x[l] + 0, |x[l]| < 2; unused lanes compute lane
+ * 0's and write nothing. */
+static void cos_sin_begin_avx(int lanes, const double *x, DdCosSin *t)
+{
+    V4 xh;
+    for (int l = 0; l < AVX_LANES; ++l) {
+        xh[l] = x[l < lanes ? l : 0];
+    }
+    CosSinV4 v;
+    cos_sin_begin_v4(xh, &v);
     for (int l = 0; l < lanes; ++l) {
         DdCosSin *out = &t[l];
-        out->y.hi = y.hi[l];
-        out->y.lo = y.lo[l];
-        out->quadrant = n[l] < 0.0 ? 3 : (int)n[l];
-        out->sin_x = sin_x[l];
-        out->point.sign = sign[l];
-        out->point.r.hi = r.hi[l];
-        out->point.r.lo = r.lo[l];
-        out->point.C.hi = C.hi[l];
-        out->point.C.lo = C.lo[l];
-        out->point.S.hi = S.hi[l];
-        out->point.S.lo = S.lo[l];
-        out->cos_lead = cos_lead[l];
-        out->cos_lead_certain = certain[l] != 0;
+        out->y.hi = v.y.hi[l];
+        out->y.lo = v.y.lo[l];
+        out->quadrant = v.n[l] < 0.0 ? 3 : (int)v.n[l];
+        out->sin_x = v.sin_x[l];
+        out->point.sign = v.sign[l];
+        out->point.r.hi = v.r.hi[l];
+        out->point.r.lo = v.r.lo[l];
+        out->point.C.hi = v.C.hi[l];
+        out->point.C.lo = v.C.lo[l];
+        out->point.S.hi = v.S.hi[l];
+        out->point.S.lo = v.S.lo[l];
+        out->cos_lead = v.cos_lead[l];
+        out->cos_lead_certain = v.certain[l] != 0;
     }
 }
 
-/* dd_cos_sin_end for lanes <= 4 of cos_sin_begin_avx's (every one with a finite y) */
+/* dd_cos_sin_end for lanes <= 4 of cos_sin_begin_avx's */
 static void cos_sin_end_avx(int lanes, const DdCosSin *t, DoubleDouble *cos_x)
 {
-    V4Dd r, C, S;
-    V4 sign, flip, lead;
-    V4Mask odd, certain;
+    CosSinV4 v;
     for (int l = 0; l < AVX_LANES; ++l) {
         const DdCosSin *in = &t[l < lanes ? l : 0];
-        r.hi[l] = in->point.r.hi;
-        r.lo[l] = in->point.r.lo;
-        C.hi[l] = in->point.C.hi;
-        C.lo[l] = in->point.C.lo;
-        S.hi[l] = in->point.S.hi;
-        S.lo[l] = in->point.S.lo;
-        sign[l] = in->point.sign;
-        odd[l] = (in->quadrant & 1) ? -1 : 0;
-        flip[l] = (in->quadrant == 1 || in->quadrant == 2) ? -1.0 : 1.0;
-        lead[l] = in->cos_lead;
-        certain[l] = in->cos_lead_certain ? -1 : 0;
+        v.n[l] = in->quadrant == 3 ? -1.0 : (double)in->quadrant;
+        v.sign[l] = in->point.sign;
+        v.r.hi[l] = in->point.r.hi;
+        v.r.lo[l] = in->point.r.lo;
+        v.C.hi[l] = in->point.C.hi;
+        v.C.lo[l] = in->point.C.lo;
+        v.S.hi[l] = in->point.S.hi;
+        v.S.lo[l] = in->point.S.lo;
+        v.cos_lead[l] = in->cos_lead;
+        v.certain[l] = in->cos_lead_certain ? -1 : 0;
     }
-    /* sincos_at: cos for even quadrants, sin for odd */
-    V4Dd w, v;
-    v4_sin_versine_small(r, &w, &v);
-    const V4Dd cos_y = v4_add_smaller(C, v4_dd_neg(v4_add_smaller(v4_dd_mul(S, w), v4_dd_mul(C, v))));
-    const V4Dd sin_abs = v4_add_smaller(S, v4_add_smaller(v4_dd_mul(C, w), v4_dd_neg(v4_dd_mul(S, v))));
-    const V4Dd sin_y = {sign * sin_abs.hi, sign * sin_abs.lo};
-    const V4Dd value = v4_pick_dd(odd, sin_y, cos_y);
-    /* the certain leading double, or the value itself */
-    const V4Dd known = {lead, flip * ((value.hi - flip * lead) + value.lo)};
-    const V4Dd result = v4_pick_dd(certain, known, (V4Dd){flip * value.hi, flip * value.lo});
+    const V4Dd result = cos_sin_end_v4(&v);
     for (int l = 0; l < lanes; ++l) {
         cos_x[l].hi = result.hi[l];
         cos_x[l].lo = result.lo[l];

@@ -112,4 +112,22 @@ static inline V4Dd v4_dd_neg(V4Dd x)
     return x;
 }
 
+static inline V4 v4_abs(V4 x)
+{
+    return (V4)_mm256_andnot_pd(_mm256_set1_pd(-0.0), (__m256d)x);
+}
+
+/* What dd.c's cos_sin_begin_v4 knows of four arguments x (dd_cos_sin_begin's DdCosSin,
+ * lane by lane): y = x - n pi/2, n in {-1, 0, 1}, the double sin x, the table point
+ * (sign, r, C, S) and the leading double of cos x with its certificate. */
+typedef struct {
+    V4Dd y;
+    V4 n;
+    V4 sin_x;
+    V4 sign;
+    V4Dd r, C, S;
+    V4 cos_lead;
+    V4Mask certain;
+} CosSinV4;
+
 #endif

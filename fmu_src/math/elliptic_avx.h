@@ -13,34 +13,37 @@
 
 #include "dd_avx.h"
 
-/* elliptic_param_begin for lanes <= 4 parameter sets (p[l], m[l], kc[l]), their chains in
- * chains' lanes first .. first + 3 (first + 4 <= ELLIPTIC_LANES); unused lanes compute lane
- * 0's chain frozen at its start and write no parameter set. */
-static void chains_begin_avx(int lanes, EllipticParam *const *p, const double *m, const double *kc,
-                             EllipticChains *chains, int first)
+/* The Landen chains of four lanes (chain_level, level by level): what EllipticChains and the
+ * parameter sets hold, kept in vectors. A lane past its bottom carries its values frozen. */
+typedef struct {
+    V4 kc[ELLIPTIC_MAX_LEVELS + 1], root[ELLIPTIC_MAX_LEVELS], one_plus[ELLIPTIC_MAX_LEVELS];
+    V4 landen_k[ELLIPTIC_MAX_LEVELS], landen_1pk[ELLIPTIC_MAX_LEVELS], landen_1mk[ELLIPTIC_MAX_LEVELS];
+    int level[AVX_LANES];   /* N of each lane */
+    int most;               /* the largest N */
+    V4 levels;              /* N as doubles */
+    V4 kc_bottom, bottom_m; /* k'_N and m_N */
+} ChainsV4;
+
+/* elliptic_param_begin's chain for four lanes (m, kc); the lanes from `lanes` on are carried
+ * frozen at their start (their chain ends at once). */
+static inline void chains_begin_v4(int lanes, V4 m, V4 kc, ChainsV4 *c)
 {
-    V4 kc_n, m_n;
-    int level[AVX_LANES];   /* N of each lane once its chain has ended, else -1 */
+    V4 kc_n = kc, m_n = m;
     for (int l = 0; l < AVX_LANES; ++l) {
-        const int from = l < lanes ? l : 0;
-        kc_n[l] = kc[from];
-        m_n[l] = m[from];
-        level[l] = l < lanes ? -1 : 0;
-    }
-    for (int l = 0; l < lanes; ++l) {
-        chain_start(p[l], m[l], kc[l]);
+        c->level[l] = l < lanes ? -1 : 0;
     }
     int left = lanes;
+    c->most = 0;
     for (int n = 0; left > 0; ++n) {
-        v4_store(&chains->kc[n][first], kc_n);   /* a lane's bottom k' (frozen past it) */
+        c->kc[n] = kc_n;   /* a lane's bottom k' (frozen past it) */
         V4Mask going;
         for (int l = 0; l < AVX_LANES; ++l) {
-            if (level[l] < 0 && !chain_goes_on(n, m_n[l])) {
-                level[l] = n;
-                chain_end(p[l], n, m_n[l]);
+            if (c->level[l] < 0 && !chain_goes_on(n, m_n[l])) {
+                c->level[l] = n;
+                c->most = n;
                 --left;
             }
-            going[l] = level[l] < 0 ? -1 : 0;
+            going[l] = c->level[l] < 0 ? -1 : 0;
         }
         if (left == 0) {
             break;
@@ -50,59 +53,47 @@ static void chains_begin_avx(int lanes, EllipticParam *const *p, const double *m
         const V4 root_kc = (V4)_mm256_sqrt_pd((__m256d)kc_n);
         const V4 kc_next = root_kc / half;
         const V4 k_next = v4_pick((V4Mask)(kc_n < 0.5), (1.0 - kc_n) / one_plus_kc, m_n / (one_plus_kc * one_plus_kc));
-        const V4 one_plus_k = 1.0 + k_next, one_minus_k = kc_n / half;
-        v4_store(&chains->root[n][first], root_kc);
-        v4_store(&chains->one_plus[n][first], one_plus_kc);
-        for (int l = 0; l < lanes; ++l) {
-            if (going[l]) {
-                p[l]->landen_k[n] = k_next[l];
-                p[l]->landen_1pk[n] = one_plus_k[l];
-                p[l]->landen_1mk[n] = one_minus_k[l];
-            }
-        }
+        c->root[n] = root_kc;
+        c->one_plus[n] = one_plus_kc;
+        c->landen_k[n] = k_next;
+        c->landen_1pk[n] = 1.0 + k_next;
+        c->landen_1mk[n] = kc_n / half;
         kc_n = v4_pick(going, kc_next, kc_n);
         m_n = v4_pick(going, k_next * k_next, m_n);
     }
+    for (int l = 0; l < AVX_LANES; ++l) {
+        c->levels[l] = (double)c->level[l];
+        c->kc_bottom[l] = c->kc[c->level[l]][l];
+    }
+    c->bottom_m = m_n;
 }
 
-/* elliptic_param_finish for the lanes of chains_begin_avx: tail_level over every lane's
- * levels (a lane past its bottom keeps its values), then landen_K and finish_K. */
-static void chains_finish_avx(int lanes, EllipticParam *const *p, const EllipticChains *chains, int first,
-                              const double *m1, const double *kc_lo, DoubleDouble *inv_K)
+/* elliptic_param_finish's K and 1/K (tail_level over every lane's levels, landen_K) and
+ * finish_K's bottom scale, from the chain's k', roots and sums (kc, root, one_plus: level by
+ * level) and k' = kc + kc_lo. */
+static inline void chains_finish_v4(const V4 *kc, const V4 *root, const V4 *one_plus, const ChainsV4 *c, V4 kc_lo,
+                                    V4Dd *K_out, V4Dd *inv_K, V4 *bottom_scale)
 {
-    V4 tail, levels, kc_bottom, bottom_m;
-    int most = 0;
-    for (int l = 0; l < AVX_LANES; ++l) {
-        const int from = l < lanes ? l : 0, n = p[from]->levels;
-        tail[l] = kc_lo[from];
-        levels[l] = (double)n;
-        kc_bottom[l] = chains->kc[n][first + from];
-        bottom_m[l] = p[from]->bottom_m;
-        most = n > most ? n : most;
-    }
-    for (int l = 0; l < lanes; ++l) {
-        p[l]->m1 = m1[l];
-    }
+    V4 tail = kc_lo;
     V4Dd mean = {v4_all(1.0), v4_all(0.0)};
     V4 mean_error = v4_all(0.0);
-    for (int n = 0; n < most; ++n) {
+    for (int n = 0; n < c->most; ++n) {
         /* tail_level, and mean_times(&mean, &mean_error, one_plus / 2, tail_h / 2) */
-        const V4Mask active = (V4Mask)(v4_all((double)n) < levels);
-        const V4 kc_n = v4_load(&chains->kc[n][first]), root = v4_load(&chains->root[n][first]);
-        const V4 one_plus = v4_load(&chains->one_plus[n][first]), kc_next = v4_load(&chains->kc[n + 1][first]);
-        const V4 e_h = kc_n - (one_plus - 1.0);
-        const V4Dd root_sq = v4_two_prod(root, root);
+        const V4Mask active = (V4Mask)(v4_all((double)n) < c->levels);
+        const V4 kc_n = kc[n], root_n = root[n], one_plus_n = one_plus[n], kc_next = kc[n + 1];
+        const V4 e_h = kc_n - (one_plus_n - 1.0);
+        const V4Dd root_sq = v4_two_prod(root_n, root_n);
         const V4 e_s = (kc_n - root_sq.hi) - root_sq.lo;
-        const V4Dd product = v4_two_prod(kc_next, one_plus);
-        const V4 e_q = (2.0 * root - product.hi) - product.lo;
+        const V4Dd product = v4_two_prod(kc_next, one_plus_n);
+        const V4 e_q = (2.0 * root_n - product.hi) - product.lo;
         const V4 tail_h = e_h + tail;
-        const V4 f_hi = 0.5 * one_plus, f_lo = 0.5 * tail_h;
+        const V4 f_hi = 0.5 * one_plus_n, f_lo = 0.5 * tail_h;
         const V4Dd pr = v4_two_prod(mean.hi, f_hi), a = v4_two_prod(mean.hi, f_lo);
         const V4Dd b = v4_two_prod(mean.lo, f_hi);
         const V4Dd s1 = v4_two_sum(pr.lo, a.hi), s2 = v4_two_sum(s1.hi, b.hi);
         const V4 error = mean_error * f_hi + (((s1.lo + s2.lo) + (a.lo + b.lo)) + mean.lo * f_lo);
         const V4Dd next_mean = v4_fast_two_sum(pr.hi, s2.hi);
-        const V4 next_tail = ((root * e_q + (e_s + tail)) - root * kc_next * tail_h) / (root * one_plus);
+        const V4 next_tail = ((root_n * e_q + (e_s + tail)) - root_n * kc_next * tail_h) / (root_n * one_plus_n);
         mean_error = v4_pick(active, error, mean_error);
         mean.hi = v4_pick(active, next_mean.hi, mean.hi);
         mean.lo = v4_pick(active, next_mean.lo, mean.lo);
@@ -113,7 +104,7 @@ static void chains_finish_avx(int lanes, EllipticParam *const *p, const Elliptic
     V4Dd B = v4_dd_mul(mean, v4_fast_two_sum(v4_all(2.0 * INV_PI_HI), v4_all(2.0 * INV_PI_LO)));
     A.lo -= A.hi * (A.hi * (mean_error * (2.0 * INV_PI_HI)));
     B.lo += mean_error * (2.0 * INV_PI_HI);
-    const V4Dd d = v4_two_sum(1.0 - kc_bottom, -tail);
+    const V4Dd d = v4_two_sum(1.0 - c->kc_bottom, -tail);
     V4Dd d2 = v4_two_prod(d.hi, d.hi);
     d2.lo += 2.0 * d.hi * d.lo;
     const V4 cube = d.hi * d2.hi;
@@ -127,17 +118,75 @@ static void chains_finish_avx(int lanes, EllipticParam *const *p, const Elliptic
     K.lo += A.lo + (AS.lo + (A.hi * S.lo + A.lo * S.hi));
     V4Dd inverse = v4_fast_two_sum(B.hi, -BT.hi);
     inverse.lo += B.lo - (BT.lo + (B.hi * T.lo + B.lo * T.hi));
-    inverse = v4_fast_two_sum(inverse.hi, inverse.lo);
-    K = v4_fast_two_sum(K.hi, K.lo);
-    /* finish_K */
-    const V4 reciprocal = 1.0 / K.hi;
-    const V4Dd bottom_factor = {1.0 + bottom_m * (0.25 + bottom_m * (9.0 / 64.0)), v4_all(0.0)};
+    *inv_K = v4_fast_two_sum(inverse.hi, inverse.lo);
+    *K_out = v4_fast_two_sum(K.hi, K.lo);
+    /* finish_K's bottom scale */
+    const V4 m_n = c->bottom_m;
+    const V4Dd bottom_factor = {1.0 + m_n * (0.25 + m_n * (9.0 / 64.0)), v4_all(0.0)};
     const V4Dd K_bottom = v4_dd_mul(v4_fast_two_sum(v4_all(HALF_PI_HI), v4_all(HALF_PI_LO)), bottom_factor);
-    const V4 bottom_scale = v4_dd_mul(K_bottom, inverse).hi;
+    *bottom_scale = v4_dd_mul(K_bottom, *inv_K).hi;
+}
+
+/* elliptic_param_begin for lanes <= 4 parameter sets (p[l], m[l], kc[l]), their chains in
+ * chains' lanes first .. first + 3 (first + 4 <= ELLIPTIC_LANES). */
+static void chains_begin_avx(int lanes, EllipticParam *const *p, const double *m, const double *kc,
+                             EllipticChains *chains, int first)
+{
+    V4 m_v, kc_v;
+    for (int l = 0; l < AVX_LANES; ++l) {
+        m_v[l] = m[l < lanes ? l : 0];
+        kc_v[l] = kc[l < lanes ? l : 0];
+    }
+    ChainsV4 c;
+    chains_begin_v4(lanes, m_v, kc_v, &c);
+    for (int n = 0; n <= c.most; ++n) {
+        v4_store(&chains->kc[n][first], c.kc[n]);
+        if (n < c.most) {
+            v4_store(&chains->root[n][first], c.root[n]);
+            v4_store(&chains->one_plus[n][first], c.one_plus[n]);
+        }
+    }
     for (int l = 0; l < lanes; ++l) {
+        chain_start(p[l], m[l], kc[l]);
+        for (int n = 0; n < c.level[l]; ++n) {
+            p[l]->landen_k[n] = c.landen_k[n][l];
+            p[l]->landen_1pk[n] = c.landen_1pk[n][l];
+            p[l]->landen_1mk[n] = c.landen_1mk[n][l];
+        }
+        chain_end(p[l], c.level[l], c.bottom_m[l]);
+    }
+}
+
+/* elliptic_param_finish for the lanes of chains_begin_avx */
+static void chains_finish_avx(int lanes, EllipticParam *const *p, const EllipticChains *chains, int first,
+                              const double *m1, const double *kc_lo, DoubleDouble *inv_K)
+{
+    ChainsV4 c;
+    V4 kc_lo_v;
+    c.most = 0;
+    for (int l = 0; l < AVX_LANES; ++l) {
+        const int from = l < lanes ? l : 0, n = p[from]->levels;
+        kc_lo_v[l] = kc_lo[from];
+        c.levels[l] = (double)n;
+        c.kc_bottom[l] = chains->kc[n][first + from];
+        c.bottom_m[l] = p[from]->bottom_m;
+        c.most = n > c.most ? n : c.most;
+    }
+    for (int n = 0; n <= c.most; ++n) {
+        c.kc[n] = v4_load(&chains->kc[n][first]);
+        if (n < c.most) {
+            c.root[n] = v4_load(&chains->root[n][first]);
+            c.one_plus[n] = v4_load(&chains->one_plus[n][first]);
+        }
+    }
+    V4Dd K, inverse;
+    V4 bottom_scale;
+    chains_finish_v4(c.kc, c.root, c.one_plus, &c, kc_lo_v, &K, &inverse, &bottom_scale);
+    for (int l = 0; l < lanes; ++l) {
+        p[l]->m1 = m1[l];
         p[l]->K_hi = K.hi[l];
         p[l]->K_lo = K.lo[l];
-        p[l]->inv_K = reciprocal[l];
+        p[l]->inv_K = 1.0 / K.hi[l];
         p[l]->K_head = dd_head26(K.hi[l]);
         p[l]->K_tail = K.hi[l] - p[l]->K_head;
         p[l]->bottom_scale = bottom_scale[l];

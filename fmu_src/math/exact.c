@@ -55,6 +55,8 @@ void pendulum_exact_eval_many_fma(const PendulumExact *ex, size_t n, const doubl
                                   double *omega);
 void pendulum_exact_eval_states_fma(size_t n, const PendulumExact *ex, const double *t, double *theta,
                                     double *omega);
+size_t pendulum_exact_once_gl_many_fma(size_t n, const double *theta0, const double *omega0, const double *g,
+                                       const double *L, double t0, const double *t, double *theta, double *omega);
 void pendulum_exact_init_many_fma(size_t n, const double *theta0, const double *omega0, const double *w0,
                                   double t0, PendulumExact *ex, int *status);
 void pendulum_exact_init_gl_many_fma(size_t n, const double *theta0, const double *omega0, const double *g,
@@ -1351,6 +1353,147 @@ void pendulum_exact_eval_states(size_t n, const PendulumExact *ex, const double 
     for (; i < n; ++i) {
         pendulum_exact_eval(&ex[i], t[i], &theta[i], &omega[i]);
     }
+}
+
+#ifdef PENDULUM_DD_AVX
+/* Up to four releases from rest (omega0 = 0, |theta0| <= 3.2, w0 accepted) set up at t0 and
+ * evaluated once each at t[l], all in vectors: init_from_rest's operations (the cosine begun,
+ * the chain, the cosine ended, K, the rates) and eval_libration's, without a set-up written.
+ * Returns the lanes done as bits; the others (a cosine whose leading double is not certain or
+ * within 2^-500 of 0, off eval_libration's path) are the caller's. */
+static int once_avx(int lanes, const double *theta0, const DoubleDouble *w0, double t0, const double *t,
+                    double *theta, double *omega)
+{
+    V4 th, w0_hi, w0_lo, tv;
+    for (int l = 0; l < AVX_LANES; ++l) {
+        const int from = l < lanes ? l : 0;
+        th[l] = theta0[from];
+        w0_hi[l] = w0[from].hi;
+        w0_lo[l] = w0[from].lo;
+        tv[l] = t[from];
+    }
+    CosSinV4 trig;
+    cos_sin_begin_v4(0.5 * th, &trig);   /* step 1: theta0 / 2 exact, no turn to subtract */
+    int eligible[AVX_LANES], any = -1;
+    for (int l = 0; l < AVX_LANES; ++l) {
+        eligible[l] = l < lanes && trig.certain[l] && fabs(trig.cos_lead[l]) > 0x1p-500;
+        any = eligible[l] && any < 0 ? l : any;
+    }
+    if (any < 0) {
+        return 0;
+    }
+    /* from_rest_start: m = k^2 (at most 1), k' = c's leading double; a lane not taken runs a
+     * copy of one taken */
+    const V4 k = v4_abs(trig.sin_x), k2 = k * k;
+    V4 m = v4_pick((V4Mask)(k2 < 1.0), k2, v4_all(1.0)), kc = v4_abs(trig.cos_lead);
+    for (int l = 0; l < AVX_LANES; ++l) {
+        m[l] = eligible[l] ? m[l] : m[any];
+        kc[l] = eligible[l] ? kc[l] : kc[any];
+    }
+    ChainsV4 chains;
+    chains_begin_v4(AVX_LANES, m, kc, &chains);
+    /* settle_initial_angle: c < 0 (theta0 just past pi) moves th by a turn, s and c change sign */
+    const V4Mask past = (V4Mask)(trig.cos_lead < 0.0);
+    const V4Dd cosine = cos_sin_end_v4(&trig);
+    const V4Dd c = v4_pick_dd(past, v4_dd_neg(cosine), cosine);
+    const V4 s_hi = v4_pick(past, -trig.sin_x, trig.sin_x);
+    V4Dd K, inv_K;
+    LibrationV4 s;
+    chains_finish_v4(chains.kc, chains.root, chains.one_plus, &chains, c.lo, &K, &inv_K, &s.bottom_scale);
+    /* from_rest_fields */
+    const V4Dd rho = v4_dd_mul((V4Dd){w0_hi, w0_lo}, inv_K);
+    const V4 u0 = v4_pick((V4Mask)(k == 0.0), v4_all(0.0), v4_pick((V4Mask)(s_hi < 0.0), -K.hi, K.hi));
+    s.theta_turns = v4_pick(past, v4_pick((V4Mask)(th > 0.0), v4_all(1.0), v4_all(-1.0)), v4_all(0.0));
+    s.t0 = v4_all(t0);
+    s.rho_hi = rho.hi;
+    s.rho_lo = rho.lo;
+    s.x0_hi = v4_pick((V4Mask)(u0 < 0.0), v4_all(-1.0), v4_pick((V4Mask)(u0 > 0.0), v4_all(1.0), v4_all(0.0)));
+    s.x0_lo = v4_all(0.0);
+    s.K_hi = K.hi;
+    s.bottom_m = chains.bottom_m;
+    s.sqrt_k1 = k / (1.0 + kc);
+    s.kc = kc;
+    s.omega_half = k * w0_hi;
+    s.levels = chains.levels;
+    s.most = chains.most;
+    memcpy(s.landen_k, chains.landen_k, sizeof s.landen_k);
+    memcpy(s.landen_1pk, chains.landen_1pk, sizeof s.landen_1pk);
+    memcpy(s.landen_1mk, chains.landen_1mk, sizeof s.landen_1mk);
+    V4 angle, om;
+    const V4Mask path = eval_libration_v4(&s, tv, &angle, &om);
+    int done = 0;
+    for (int l = 0; l < lanes; ++l) {
+        if (eligible[l] && path[l]) {
+            theta[l] = angle[l];
+            omega[l] = om[l];
+            done |= 1 << l;
+        }
+    }
+    return done;
+}
+#endif
+
+size_t pendulum_exact_once_gl_many(size_t n, const double *theta0, const double *omega0, const double *g,
+                                   const double *L, double t0, const double *t, double *theta, double *omega)
+{
+#ifdef EXACT_HANDS_ON_TO_FMA
+    if (EXACT_FMA_HERE()) {
+        return pendulum_exact_once_gl_many_fma(n, theta0, omega0, g, L, t0, t, theta, omega);
+    }
+#endif
+    size_t refused = 0;
+#ifdef PENDULUM_DD_AVX
+    double last_g = NAN, last_L = NAN;   /* sqrt(g / L) formed once for a run of one g and L */
+    DoubleDouble last_w0 = {NAN, NAN};
+    int w0_ok = 0;
+#endif
+    for (size_t i = 0; i < n; i += 4) {
+        const int lanes = n - i < 4 ? (int)(n - i) : 4;
+        int done = 0;
+#ifdef PENDULUM_DD_AVX
+        /* the releases from rest of these four elements, in vectors */
+        double th[4], times[4], th_out[4], om_out[4];
+        DoubleDouble w0[4];
+        int taken = 0, at[4];
+        for (int l = 0; l < lanes; ++l) {
+            const size_t j = i + (size_t)l;
+            if (!(same_double(g[j], last_g) && same_double(L[j], last_L))) {
+                last_g = g[j];
+                last_L = L[j];
+                w0_ok = w0_of_gl(g[j], L[j], &last_w0) == 0;
+            }
+            if (w0_ok && omega0[j] == 0.0 && fabs(theta0[j]) <= 3.2 && isfinite(t0)) {
+                th[taken] = theta0[j];
+                times[taken] = t[j];
+                w0[taken] = last_w0;
+                at[taken++] = l;
+            }
+        }
+        const int taken_done = taken > 0 ? once_avx(taken, th, w0, t0, times, th_out, om_out) : 0;
+        for (int j = 0; j < taken; ++j) {
+            if (taken_done & (1 << j)) {
+                theta[i + (size_t)at[j]] = th_out[j];
+                omega[i + (size_t)at[j]] = om_out[j];
+                done |= 1 << at[j];
+            }
+        }
+#endif
+        for (int l = 0; l < lanes; ++l) {
+            const size_t j = i + (size_t)l;
+            if (done & (1 << l)) {
+                continue;
+            }
+            PendulumExact ex;
+            if (pendulum_exact_init_gl(&ex, theta0[j], omega0[j], g[j], L[j], t0) == 0) {
+                pendulum_exact_eval(&ex, t[j], &theta[j], &omega[j]);
+                refused += !pendulum_exact_resolvable(&ex, t[j]);
+            } else {
+                theta[j] = omega[j] = NAN;
+                refused += 1;
+            }
+        }
+    }
+    return refused;
 }
 
 const char *pendulum_exact_qualitative_miss(const PendulumExact *ex, double theta, double omega)

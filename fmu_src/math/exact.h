@@ -115,6 +115,14 @@ void pendulum_exact_eval_many(const PendulumExact *ex, size_t n, const double *t
 void pendulum_exact_eval_states(size_t n, const PendulumExact *ex, const double *t, double *theta,
                                 double *omega);
 
+/* For i < n: theta[i], omega[i] of the solution pendulum_exact_init_gl(theta0[i], omega0[i],
+ * g[i], L[i], t0) sets up, at t[i], bit for bit what that set-up and pendulum_exact_eval
+ * give (NaN for refused inputs): many new states, each evaluated once, without their
+ * set-ups written (in the fma build four releases from rest at once, in vectors). Returns
+ * the number of elements whose inputs were refused or whose time is not resolvable. */
+size_t pendulum_exact_once_gl_many(size_t n, const double *theta0, const double *omega0, const double *g,
+                                   const double *L, double t0, const double *t, double *theta, double *omega);
+
 /* Compares a numerical state (theta, omega) at some time with the exact motion, qualitatively:
  * NULL if it is the same kind of motion, else what went wrong, as a phrase:
  * "carried the libration over the top" (exact libration, |theta - its centre| > pi + 0.5),

@@ -6,9 +6,9 @@
  * with elliptic_atan_unit) on its own state's constants, elementwise IEEE operations as the
  * scalar code's (dd_avx.h), so its theta and omega have the scalar bits; a lane whose state
  * has fewer Landen levels than another's keeps its values through the extra steps. A lane off
- * that common case (not a libration with at most ELLIPTIC_LEVELS_WITHOUT_RESCALE levels and no
- * whole turns in theta0, t == t0, a phase beyond 2^50 quarter periods or not finite, a bottom
- * argument past the series) is left to the caller. test_exact_batch compares every output. */
+ * that common case (not a libration, whole turns in theta0 from 2^50 on, t == t0, a phase
+ * beyond 2^50 quarter periods or not finite, a bottom argument past the series) is left to
+ * the caller. test_exact_batch compares every output. */
 #ifndef PENDULUM_EXACT_AVX_H
 #define PENDULUM_EXACT_AVX_H
 
@@ -25,11 +25,6 @@ static inline V4 v4_atan_series(V4 s)
     const V4 g89 = -0x1.ac7a938b69c93p-5 + s * 0x1.74ddd408bb4c1p-5;
     const V4 g1011 = -0x1.1b33b923aa954p-5 + s * 0x1.0ad36a455cafbp-6;
     return ((g01 + s2 * g23) + s4 * (g45 + s2 * g67)) + s8 * (g89 + s2 * g1011);
-}
-
-static inline V4 v4_abs(V4 x)
-{
-    return (V4)_mm256_andnot_pd(_mm256_set1_pd(-0.0), (__m256d)x);
 }
 
 /* elliptic_atan_unit */
@@ -58,107 +53,135 @@ static inline void v4_sincos_small(V4 r, V4 *sin_r, V4 *cos_r)
     *cos_r = 1.0 + z * pc;
 }
 
-/* elliptic_landen_step_plain with each lane's level factors */
-static inline void v4_landen_step(V4 kk, V4 one_plus_k, V4 one_minus_k, V4 *S, V4 *C, V4 *E, V4 *D)
+/* elliptic_landen_step with each lane's level factors, where `step` is set: the plain step,
+ * then for a chain of more than ELLIPTIC_LEVELS_WITHOUT_RESCALE levels (`long_chain`) the
+ * renormalisation once D passes ELLIPTIC_HOMOGENEOUS_RESCALE */
+static inline void v4_landen_step(V4Mask step, V4Mask long_chain, V4 kk, V4 one_plus_k, V4 one_minus_k, V4 *S,
+                                  V4 *C, V4 *E, V4 *D)
 {
     const V4 d2 = *D * *D;
-    const V4 up_S = one_plus_k * *S * *D, up_C = *C * *E;
-    const V4 up_E = one_minus_k * d2 + kk * *C * *C, up_D = d2 + kk * *S * *S;
-    *S = up_S;
-    *C = up_C;
-    *E = up_E;
-    *D = up_D;
+    V4 up_S = one_plus_k * *S * *D, up_C = *C * *E;
+    V4 up_E = one_minus_k * d2 + kk * *C * *C, up_D = d2 + kk * *S * *S;
+    const V4Mask rescale = long_chain & (V4Mask)(up_D > ELLIPTIC_HOMOGENEOUS_RESCALE);
+    const V4 inv = 1.0 / up_D;
+    up_S = v4_pick(rescale, up_S * inv, up_S);
+    up_C = v4_pick(rescale, up_C * inv, up_C);
+    up_E = v4_pick(rescale, up_E * inv, up_E);
+    up_D = v4_pick(rescale, v4_all(1.0), up_D);
+    *S = v4_pick(step, up_S, *S);
+    *C = v4_pick(step, up_C, *C);
+    *E = v4_pick(step, up_E, *E);
+    *D = v4_pick(step, up_D, *D);
 }
 
-/* Up to four states ex[l] at t[l] (l < lanes); returns the lanes done as bits (1 << l), their
- * theta[l] and omega[l] written; the others untouched. */
-static int eval_states_avx(int lanes, const PendulumExact *ex, const double *t, double *theta, double *omega)
+/* What eval_libration reads of four librations, lane by lane; the level factors level by
+ * level (a lane's own up to its levels, any finite values beyond). */
+typedef struct {
+    V4 t0, rho_hi, rho_lo, x0_hi, x0_lo, K_hi, bottom_scale, bottom_m, sqrt_k1, kc, omega_half;
+    V4 theta_turns;   /* whole turns of theta0, |theta_turns| < 2^50 */
+    V4 levels;   /* N as doubles */
+    int most;    /* the largest N */
+    V4 landen_k[ELLIPTIC_MAX_LEVELS], landen_1pk[ELLIPTIC_MAX_LEVELS], landen_1mk[ELLIPTIC_MAX_LEVELS];
+} LibrationV4;
+
+/* eval_libration's operations at times tv: *theta and *omega for every lane, and a mask of
+ * the lanes on its common path (a phase below 2^50 quarter periods, a bottom argument within
+ * the series, tv != t0; the caller checks the rest). */
+static inline V4Mask eval_libration_v4(const LibrationV4 *s, V4 tv, V4 *theta, V4 *omega)
 {
-    V4 tv, t0, rho_hi, rho_lo, x0_hi, x0_lo, K_hi, bottom_scale, bottom_m, sqrt_k1, kc, omega_half, levels;
-    int common[AVX_LANES], most = 0;
-    for (int l = 0; l < AVX_LANES; ++l) {
-        const int from = l < lanes ? l : 0;
-        const PendulumExact *e = &ex[from];
-        tv[l] = t[from];
-        t0[l] = e->t0;
-        rho_hi[l] = e->rho_hi;
-        rho_lo[l] = e->rho_lo;
-        x0_hi[l] = e->x0_hi;
-        x0_lo[l] = e->x0_lo;
-        K_hi[l] = e->K_hi;
-        bottom_scale[l] = e->ell.bottom_scale;
-        bottom_m[l] = e->ell.bottom_m;
-        sqrt_k1[l] = e->sqrt_k1;
-        kc[l] = e->kc;
-        omega_half[l] = e->omega_half;
-        common[l] = l < lanes && e->regime == PENDULUM_LIBRATION && e->ell.levels <= ELLIPTIC_LEVELS_WITHOUT_RESCALE
-                    && e->theta_turns == 0.0 && t[l] != e->t0;
-        levels[l] = common[l] ? (double)e->ell.levels : 1.0;
-        most = common[l] && e->ell.levels > most ? e->ell.levels : most;
-    }
     /* phase_at and phase_near */
-    const V4Dd tau = v4_two_sum(tv, -t0);
-    const V4 x_hi = rho_hi * tau.hi;
-    const V4 x_lo = (V4)_mm256_fmadd_pd((__m256d)rho_hi, (__m256d)tau.hi, (__m256d)(-x_hi));
-    const V4 quarters = (x_hi + x0_hi + 0x1.8p52) - 0x1.8p52;
-    const V4 f = ((x_hi - quarters) + x0_hi) + (x_lo + (rho_hi * tau.lo + rho_lo * tau.hi) + x0_lo);
-    const V4 v = f * K_hi;
+    const V4Dd tau = v4_two_sum(tv, -s->t0);
+    const V4 x_hi = s->rho_hi * tau.hi;
+    const V4 x_lo = (V4)_mm256_fmadd_pd((__m256d)s->rho_hi, (__m256d)tau.hi, (__m256d)(-x_hi));
+    const V4 quarters = (x_hi + s->x0_hi + 0x1.8p52) - 0x1.8p52;
+    const V4 f = ((x_hi - quarters) + s->x0_hi) + (x_lo + (s->rho_hi * tau.lo + s->rho_lo * tau.hi) + s->x0_lo);
+    const V4 v = f * s->K_hi;
     /* the quarter n mod 4 as eval_libration_lanes' exact weights */
     const V4 r = quarters - 4.0 * ((0.25 * quarters + 0x1.8p52) - 0x1.8p52);
     const V4 r2 = r * r;
     const V4 odd = r2 * (4.0 - r2) / 3.0;
     const V4 sign = 1.0 - 2.0 * (r2 * (r2 - 1.0) / 12.0 + odd * (1.0 - r) * 0.5);
-    const V4 z = v4_abs(v) * bottom_scale;
-    int done = 0;
-    for (int l = 0; l < lanes; ++l) {
-        done |= (common[l] && fabs(x_hi[l]) < 0x1p50 && z[l] <= ELLIPTIC_SERIES_Z_MAX) << l;
-    }
-    if (done == 0) {
-        return 0;
-    }
+    const V4 z = v4_abs(v) * s->bottom_scale;
     /* elliptic_landen_bottom, then the steps up to level 1 */
     V4 sz, cz;
     v4_sincos_small(z, &sz, &cz);
-    const V4 w = 0.25 * bottom_m * (z - sz * cz);
-    V4 S = sz - w * cz, C = cz + w * sz, E = 1.0 - 0.5 * bottom_m * sz * sz, D = v4_all(1.0);
-    V4 kk = v4_all(0.0), one_plus_k = kk, one_minus_k = kk;
-    for (int i = most - 1; i >= 1; --i) {
-        for (int l = 0; l < AVX_LANES; ++l) {
-            const EllipticParam *p = &ex[l < lanes ? l : 0].ell;
-            const int at = i < p->levels ? i : 0;
-            kk[l] = p->landen_k[at];
-            one_plus_k[l] = p->landen_1pk[at];
-            one_minus_k[l] = p->landen_1mk[at];
-        }
-        V4 S_up = S, C_up = C, E_up = E, D_up = D;
-        v4_landen_step(kk, one_plus_k, one_minus_k, &S_up, &C_up, &E_up, &D_up);
-        const V4Mask below = (V4Mask)(v4_all((double)i) < levels);
-        S = v4_pick(below, S_up, S);
-        C = v4_pick(below, C_up, C);
-        E = v4_pick(below, E_up, E);
-        D = v4_pick(below, D_up, D);
-    }
-    for (int l = 0; l < AVX_LANES; ++l) {
-        const EllipticParam *p = &ex[l < lanes ? l : 0].ell;
-        kk[l] = p->landen_k[0];
-        one_plus_k[l] = p->landen_1pk[0];
-        one_minus_k[l] = p->landen_1mk[0];
+    const V4 w = 0.25 * s->bottom_m * (z - sz * cz);
+    V4 S = sz - w * cz, C = cz + w * sz, E = 1.0 - 0.5 * s->bottom_m * sz * sz, D = v4_all(1.0);
+    const V4Mask long_chain = (V4Mask)(s->levels > (double)ELLIPTIC_LEVELS_WITHOUT_RESCALE);
+    for (int i = s->most - 1; i >= 1; --i) {
+        const V4Mask below = (V4Mask)(v4_all((double)i) < s->levels);   /* a step of this lane's chain */
+        v4_landen_step(below, long_chain, s->landen_k[i], s->landen_1pk[i], s->landen_1mk[i], &S, &C, &E, &D);
     }
     V4 S0 = S, C0 = C, E0 = E, D0 = D;
-    v4_landen_step(kk, one_plus_k, one_minus_k, &S0, &C0, &E0, &D0);
+    v4_landen_step(~(V4Mask){0, 0, 0, 0}, long_chain, s->landen_k[0], s->landen_1pk[0], s->landen_1mk[0], &S0, &C0,
+                   &E0, &D0);
     const V4Mask negative = (V4Mask)(v < 0.0);   /* sn is odd, cn and dn are even */
     S = v4_pick(negative, -S, S);
     S0 = v4_pick(negative, -S0, S0);
-    /* libration_angle_omega; theta0 has no whole turns, so theta is the angle */
+    /* libration_angle_omega */
     const V4 even = 1.0 - odd;
     const V4 y1 = even * S + odd * C, x1 = even * D + odd * E;
-    const V4 angle = 4.0 * v4_atan_unit(sign * sqrt_k1 * y1, x1);
-    const V4 cn_num = even * C0 - odd * (kc * S0), den = even * D0 + odd * E0;
-    const V4 om = 2.0 * (sign * omega_half * (cn_num / den));
+    const V4 angle = 4.0 * v4_atan_unit(sign * s->sqrt_k1 * y1, x1);
+    /* add_half_turns(2 theta_turns, angle): half_turns_pi and plus_half_turns (the low part of
+     * the half turns is 0, and lo pi_hi with it), the angle alone without turns */
+    const V4 half_turns = 2.0 * s->theta_turns;
+    const V4Dd turn = v4_two_prod(half_turns, v4_all(PI_HI));
+    const V4 hi_pi_lo = half_turns * PI_LO, lo_pi_hi = v4_all(0.0 * PI_HI);
+    const V4 wound = turn.hi + (turn.lo + (hi_pi_lo + (lo_pi_hi + angle)));
+    *theta = v4_pick((V4Mask)(half_turns == 0.0), angle, wound);
+    const V4 cn_num = even * C0 - odd * (s->kc * S0), den = even * D0 + odd * E0;
+    *omega = 2.0 * (sign * s->omega_half * (cn_num / den));
+    return (V4Mask)(v4_abs(x_hi) < 0x1p50) & (V4Mask)(z <= ELLIPTIC_SERIES_Z_MAX) & (V4Mask)(tv != s->t0);
+}
+
+/* Up to four states ex[l] at t[l] (l < lanes); returns the lanes done as bits (1 << l), their
+ * theta[l] and omega[l] written; the others untouched (the scalar evaluation's). */
+static int eval_states_avx(int lanes, const PendulumExact *ex, const double *t, double *theta, double *omega)
+{
+    LibrationV4 s;
+    V4 tv;
+    int common[AVX_LANES];
+    s.most = 0;
+    for (int l = 0; l < AVX_LANES; ++l) {
+        const int from = l < lanes ? l : 0;
+        const PendulumExact *e = &ex[from];
+        tv[l] = t[from];
+        s.t0[l] = e->t0;
+        s.rho_hi[l] = e->rho_hi;
+        s.rho_lo[l] = e->rho_lo;
+        s.x0_hi[l] = e->x0_hi;
+        s.x0_lo[l] = e->x0_lo;
+        s.K_hi[l] = e->K_hi;
+        s.bottom_scale[l] = e->ell.bottom_scale;
+        s.bottom_m[l] = e->ell.bottom_m;
+        s.sqrt_k1[l] = e->sqrt_k1;
+        s.kc[l] = e->kc;
+        s.omega_half[l] = e->omega_half;
+        s.theta_turns[l] = e->theta_turns;
+        common[l] = l < lanes && e->regime == PENDULUM_LIBRATION && fabs(e->theta_turns) < 0x1p50;
+        s.levels[l] = common[l] ? (double)e->ell.levels : 1.0;
+        s.most = common[l] && e->ell.levels > s.most ? e->ell.levels : s.most;
+    }
+    if (s.most == 0) {
+        return 0;
+    }
+    for (int i = 0; i < s.most; ++i) {
+        for (int l = 0; l < AVX_LANES; ++l) {
+            const EllipticParam *p = &ex[l < lanes ? l : 0].ell;
+            const int at = i < p->levels ? i : 0;
+            s.landen_k[i][l] = p->landen_k[at];
+            s.landen_1pk[i][l] = p->landen_1pk[at];
+            s.landen_1mk[i][l] = p->landen_1mk[at];
+        }
+    }
+    V4 angle, om;
+    const V4Mask path = eval_libration_v4(&s, tv, &angle, &om);
+    int done = 0;
     for (int l = 0; l < lanes; ++l) {
-        if (done & (1 << l)) {
+        if (common[l] && path[l]) {
             theta[l] = angle[l];
             omega[l] = om[l];
+            done |= 1 << l;
         }
     }
     return done;

@@ -41,6 +41,7 @@
 #define pendulum_exact_sin_cos pendulum_exact_sin_cos_fma
 #define pendulum_exact_eval_many pendulum_exact_eval_many_fma
 #define pendulum_exact_eval_states pendulum_exact_eval_states_fma
+#define pendulum_exact_once_gl_many pendulum_exact_once_gl_many_fma
 #define pendulum_exact_qualitative_miss pendulum_exact_qualitative_miss_fma
 #define pendulum_exact_period pendulum_exact_period_fma
 

@@ -44,9 +44,9 @@
 #endif
 
 #define ROUNDS 7
-#define KINDS 6
-enum { KIND_EVAL, KIND_BATCH, KIND_GSL, KIND_INIT, KIND_GSL_INIT, KIND_INIT_MANY };
-static const char *const KIND_NAMES[KINDS] = {"eval", "batch", "gsl", "init", "gsl_init", "init_many"};
+#define KINDS 7
+enum { KIND_EVAL, KIND_BATCH, KIND_GSL, KIND_INIT, KIND_GSL_INIT, KIND_INIT_MANY, KIND_ONCE };
+static const char *const KIND_NAMES[KINDS] = {"eval", "batch", "gsl", "init", "gsl_init", "init_many", "once"};
 
 /* init_many sets up this many new states per call */
 #define MANY_BLOCK 64
@@ -159,6 +159,25 @@ static double time_kind(int kind, Case *c)
         }
         break;
     }
+    case KIND_ONCE: {
+        double theta0[MANY_BLOCK], zeros[MANY_BLOCK], ones[MANY_BLOCK];
+        for (long first = 0; first < n; first += MANY_BLOCK) {
+            const long count = n - first < MANY_BLOCK ? n - first : MANY_BLOCK;
+            for (long j = 0; j < count; ++j) {
+                theta0[j] = c->theta0 * (1.0 + 1e-9 * (double)((first + j) & 1023));
+                zeros[j] = 0.0;
+                ones[j] = 1.0;
+            }
+            if (pendulum_exact_once_gl_many((size_t)count, theta0, zeros, ones, ones, 0.0, c->times + first, c->theta,
+                                            c->omega) != 0) {
+                return NAN;
+            }
+            for (long j = 0; j < count; ++j) {
+                sum += c->theta[j] + c->omega[j];
+            }
+        }
+        break;
+    }
     default: /* KIND_INIT */
         for (long i = 0; i < n; ++i) {
             PendulumExact fresh;
@@ -181,7 +200,7 @@ static double time_kind(int kind, Case *c)
 static int count_one(int argc, char **argv)
 {
     if (argc != 5) {
-        fprintf(stderr, "bench_exact: usage: bench_exact --count eval|batch|gsl|init|gsl_init N amplitude_deg\n");
+        fprintf(stderr, "bench_exact: usage: bench_exact --count eval|batch|gsl|init|gsl_init|init_many|once N amplitude_deg\n");
         return 2;
     }
     int kind = -1;
@@ -285,11 +304,12 @@ int main(int argc, char **argv)
         }
         printf(" gsl_over_eval=%.3f gsl_over_eval_median=%.3f eval_over_batch=%.3f eval_over_batch_median=%.3f"
                " gsl_init_over_init=%.3f gsl_init_over_init_median=%.3f init_over_init_many=%.3f"
-               " init_over_init_many_median=%.3f checksum=%.17g\n",
+               " init_over_init_many_median=%.3f init_over_once=%.3f init_over_once_median=%.3f checksum=%.17g\n",
                best[KIND_GSL] / best[KIND_EVAL], median[KIND_GSL] / median[KIND_EVAL],
                best[KIND_EVAL] / best[KIND_BATCH], median[KIND_EVAL] / median[KIND_BATCH],
                best[KIND_GSL_INIT] / best[KIND_INIT], median[KIND_GSL_INIT] / median[KIND_INIT],
-               best[KIND_INIT] / best[KIND_INIT_MANY], median[KIND_INIT] / median[KIND_INIT_MANY], cases[a].checksum);
+               best[KIND_INIT] / best[KIND_INIT_MANY], median[KIND_INIT] / median[KIND_INIT_MANY],
+               best[KIND_INIT] / best[KIND_ONCE], median[KIND_INIT] / median[KIND_ONCE], cases[a].checksum);
         free((void *)cases[a].times);
         free(cases[a].theta);
         free(cases[a].omega);

@@ -1,6 +1,7 @@
-/* test_exact_batch.c: pendulum_exact_eval_many (points of a libration in lock-step) and
- * pendulum_exact_eval_states (states at one time each, librations in lock-step) give bit for
- * bit what pendulum_exact_eval gives, point by point, for every kind of state and time:
+/* test_exact_batch.c: pendulum_exact_eval_many (points of a libration in lock-step),
+ * pendulum_exact_eval_states (states at one time each, librations in lock-step) and
+ * pendulum_exact_once_gl_many (new states each set up and evaluated once) give bit for
+ * bit what pendulum_exact_init_gl and pendulum_exact_eval give, point by point, for every kind of state and time:
  * librations with few and with many Landen levels (lock-step and the scalar fallback), wound-up
  * initial angles, rotations, the separatrix, rest; times at t0 exactly, negative, far (past
  * 2^50 and 2^60 quarter periods), NaN and infinite, in blocks that mix them, and counts that
@@ -151,9 +152,78 @@ static void check_states(void)
     check(differences == 0, "eval_states: %d of %d outputs differ from the scalar evaluation", differences, points);
 }
 
+/* pendulum_exact_once_gl_many against pendulum_exact_init_gl, _eval and _resolvable, element
+ * by element: arrays of 1 to 40 releases from rest (most: every amplitude, near the top, past
+ * pi, tiny), moving starts, refused inputs, runs of one g and L, special times. */
+static void check_once(void)
+{
+    int differences = 0, points = 0, refusals = 0, wrong_counts = 0;
+    for (int round = 0; round < 4000; ++round) {
+        const size_t n = 1 + (size_t)(uniform() * 40);
+        double theta0[40], omega0[40], g[40], L[40], t[40], theta[40], omega[40];
+        const double t0 = uniform() < 0.6 ? 0.0 : 3.0 * (2.0 * uniform() - 1.0);
+        for (size_t i = 0; i < n; ++i) {
+            g[i] = 0.5 + 20.0 * uniform();
+            L[i] = 0.05 + 5.0 * uniform();
+            if (i > 0 && uniform() < 0.6) {
+                g[i] = g[i - 1];
+                L[i] = L[i - 1];
+            }
+            const double kind = uniform(), w0 = sqrt(g[i] / L[i]);
+            theta0[i] = (2.0 * uniform() - 1.0) * PI;
+            omega0[i] = 0.0;
+            if (kind < 0.1) {
+                theta0[i] = (uniform() < 0.5 ? -PI : PI) * (1.0 - pow(10.0, -1.0 - 15.0 * uniform()));
+            } else if (kind < 0.15) {
+                theta0[i] = (uniform() < 0.5 ? -1.0 : 1.0) * (PI + 0.058 * uniform());
+            } else if (kind < 0.2) {
+                theta0[i] *= pow(10.0, -300.0 * uniform());
+            } else if (kind < 0.3) {
+                omega0[i] = (2.0 * uniform() - 1.0) * 3.0 * w0;
+            } else if (kind < 0.33) {
+                theta0[i] += 2.0 * PI * floor(100.0 * uniform());
+            } else if (kind < 0.36) {
+                const double bad[] = {NAN, INFINITY, -1.0, 0.0};
+                g[i] = bad[(int)(uniform() * 4)];
+            }
+            const double period = 2.0 * PI / w0;
+            t[i] = t0 + (2.0 * uniform() - 1.0) * (uniform() < 0.5 ? 50.0 : 1e6) * period;
+            if (uniform() < 0.05) {
+                const double special[] = {t0, NAN, INFINITY, t0 + 0x1p52 * period, t0 + 0x1p63 * period};
+                t[i] = special[(int)(uniform() * 5)];
+            }
+        }
+        const size_t refused = pendulum_exact_once_gl_many(n, theta0, omega0, g, L, t0, t, theta, omega);
+        size_t expected_refused = 0;
+        for (size_t i = 0; i < n; ++i) {
+            PendulumExact ex;
+            double th = NAN, om = NAN;
+            if (pendulum_exact_init_gl(&ex, theta0[i], omega0[i], g[i], L[i], t0) == 0) {
+                pendulum_exact_eval(&ex, t[i], &th, &om);
+                expected_refused += !pendulum_exact_resolvable(&ex, t[i]);
+            } else {
+                expected_refused += 1;
+                refusals++;
+            }
+            points++;
+            if (!same_bits(th, theta[i]) || !same_bits(om, omega[i])) {
+                if (differences++ == 0) {
+                    check(0, "once: theta0 = %.17g, omega0 = %.17g, g = %.17g, L = %.17g at t = %.17g: (%.17g, %.17g), "
+                          "scalar (%.17g, %.17g)", theta0[i], omega0[i], g[i], L[i], t[i], theta[i], omega[i], th, om);
+                }
+            }
+        }
+        wrong_counts += refused != expected_refused;
+    }
+    check(differences == 0, "once_gl_many: %d of %d outputs differ from the set-up and evaluation", differences, points);
+    check(wrong_counts == 0, "once_gl_many: %d arrays with a wrong count of refused elements", wrong_counts);
+    check(refusals > 1000, "once_gl_many: %d refused inputs drawn", refusals);
+}
+
 int main(void)
 {
     check_states();
+    check_once();
     /* librations from rest, few levels (the lock-step path) and near the top (many levels) */
     const double amplitudes_deg[] = {1e-6, 0.5, 10.0, 45.0, 90.0, 135.0, 170.0, 179.0, 179.9999, 180.0 - 1e-9,
                                      180.0 - 1e-12, 180.0};

@@ -36,6 +36,7 @@
 #define pendulum_exact_sin_cos pendulum_exact_sin_cos_baseline
 #define pendulum_exact_eval_many pendulum_exact_eval_many_baseline
 #define pendulum_exact_eval_states pendulum_exact_eval_states_baseline
+#define pendulum_exact_once_gl_many pendulum_exact_once_gl_many_baseline
 #define pendulum_exact_qualitative_miss pendulum_exact_qualitative_miss_baseline
 #define pendulum_exact_period pendulum_exact_period_baseline
 #include "dd.c"

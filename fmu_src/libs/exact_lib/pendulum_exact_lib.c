@@ -47,48 +47,26 @@ static void refuse(size_t n, double *theta, double *omega)
     }
 }
 
-/* Elements whose inputs differ from both neighbours' (a state per point) are set up this many
- * at a time by pendulum_exact_init_gl_many, which sets up releases from rest in lock-step. */
+/* Elements whose inputs differ from both neighbours' (a state per point) are set up and
+ * evaluated this many at a time by pendulum_exact_once_gl_many (releases from rest several at
+ * once, the same bits). */
 #define SINGLES 32
 
 typedef struct {
     size_t count;
     size_t at[SINGLES];
-    double theta0[SINGLES], omega0[SINGLES], L[SINGLES], g[SINGLES];
+    double theta0[SINGLES], omega0[SINGLES], L[SINGLES], g[SINGLES], t[SINGLES];
 } Singles;
 
 /* Sets up and evaluates the pending single elements; returns how many were refused. */
-static size_t flush_singles(Singles *s, const double *t, double *theta, double *omega)
+static size_t flush_singles(Singles *s, double *theta, double *omega)
 {
-    PendulumExact ex[SINGLES];
-    int status[SINGLES];
-    double t_set[SINGLES], theta_set[SINGLES], omega_set[SINGLES];
-    pendulum_exact_init_gl_many(s->count, s->theta0, s->omega0, s->g, s->L, 0.0, ex, status);
-    /* the refused states' slots evaluate a copy of a set-up one (their outputs are NaN) */
-    size_t good = 0;
+    double theta_at[SINGLES], omega_at[SINGLES];
+    const size_t refused = pendulum_exact_once_gl_many(s->count, s->theta0, s->omega0, s->g, s->L, 0.0, s->t,
+                                                       theta_at, omega_at);
     for (size_t j = 0; j < s->count; ++j) {
-        t_set[j] = t[s->at[j]];
-        good = status[j] == 0 ? j : good;
-    }
-    for (size_t j = 0; j < s->count; ++j) {
-        if (status[j] != 0) {
-            ex[j] = ex[good];
-        }
-    }
-    if (status[good] == 0) {
-        pendulum_exact_eval_states(s->count, ex, t_set, theta_set, omega_set);
-    }
-    size_t refused = 0;
-    for (size_t j = 0; j < s->count; ++j) {
-        const size_t i = s->at[j];
-        if (status[j] == 0) {
-            theta[i] = theta_set[j];
-            omega[i] = omega_set[j];
-            refused += !pendulum_exact_resolvable(&ex[j], t[i]);
-        } else {
-            refuse(1, theta + i, omega + i);
-            refused += 1;
-        }
+        theta[s->at[j]] = theta_at[j];
+        omega[s->at[j]] = omega_at[j];
     }
     s->count = 0;
     return refused;
@@ -115,8 +93,9 @@ size_t pendulum_exact_many(size_t n, const double *theta0, const double *omega0,
             singles.omega0[j] = omega0[start];
             singles.L[j] = L[start];
             singles.g[j] = g[start];
+            singles.t[j] = t[start];
             if (singles.count == SINGLES) {
-                refused += flush_singles(&singles, t, theta, omega);
+                refused += flush_singles(&singles, theta, omega);
             }
             start = end;
             continue;
@@ -130,7 +109,7 @@ size_t pendulum_exact_many(size_t n, const double *theta0, const double *omega0,
         }
         start = end;
     }
-    return refused + flush_singles(&singles, t, theta, omega);
+    return refused + flush_singles(&singles, theta, omega);
 }
 
 size_t pendulum_exact_times(double theta0, double omega0, double L, double g, size_t n, const double *t,
