@@ -47,29 +47,12 @@ static void refuse(size_t n, double *theta, double *omega)
     }
 }
 
-/* Elements whose inputs differ from both neighbours' (a state per point) are set up and
- * evaluated this many at a time by pendulum_exact_once_gl_many (releases from rest several at
- * once, the same bits). */
-#define SINGLES 32
-
-typedef struct {
-    size_t count;
-    size_t at[SINGLES];
-    double theta0[SINGLES], omega0[SINGLES], L[SINGLES], g[SINGLES], t[SINGLES];
-} Singles;
-
-/* Sets up and evaluates the pending single elements; returns how many were refused. */
-static size_t flush_singles(Singles *s, double *theta, double *omega)
+/* 1 when element i has element j's inputs (bitwise). */
+static int same_inputs(const double *theta0, const double *omega0, const double *L, const double *g, size_t i,
+                       size_t j)
 {
-    double theta_at[SINGLES], omega_at[SINGLES];
-    const size_t refused = pendulum_exact_once_gl_many(s->count, s->theta0, s->omega0, s->g, s->L, 0.0, s->t,
-                                                       theta_at, omega_at);
-    for (size_t j = 0; j < s->count; ++j) {
-        theta[s->at[j]] = theta_at[j];
-        omega[s->at[j]] = omega_at[j];
-    }
-    s->count = 0;
-    return refused;
+    return same_bits(theta0[i], theta0[j]) && same_bits(omega0[i], omega0[j]) && same_bits(L[i], L[j])
+           && same_bits(g[i], g[j]);
 }
 
 size_t pendulum_exact_many(size_t n, const double *theta0, const double *omega0, const double *L,
@@ -77,39 +60,33 @@ size_t pendulum_exact_many(size_t n, const double *theta0, const double *omega0,
 {
     size_t refused = 0;
     size_t start = 0;
-    Singles singles;
-    singles.count = 0;
     while (start < n) {
-        /* a run of elements with the same inputs (bitwise) shares one set-up */
+        /* a run of elements with the same inputs shares one set-up */
         size_t end = start + 1;
-        while (end < n && same_bits(theta0[end], theta0[start]) && same_bits(omega0[end], omega0[start])
-               && same_bits(L[end], L[start]) && same_bits(g[end], g[start])) {
+        while (end < n && same_inputs(theta0, omega0, L, g, end, start)) {
             ++end;
         }
-        if (end - start == 1) {
-            const size_t j = singles.count++;
-            singles.at[j] = start;
-            singles.theta0[j] = theta0[start];
-            singles.omega0[j] = omega0[start];
-            singles.L[j] = L[start];
-            singles.g[j] = g[start];
-            singles.t[j] = t[start];
-            if (singles.count == SINGLES) {
-                refused += flush_singles(&singles, theta, omega);
+        if (end - start > 1) {
+            PendulumExact ex;
+            if (set_up(&ex, theta0[start], omega0[start], L[start], g[start]) == 0) {
+                refused += evaluate(&ex, end - start, t + start, theta + start, omega + start);
+            } else {
+                refuse(end - start, theta + start, omega + start);
+                refused += end - start;
             }
             start = end;
             continue;
         }
-        PendulumExact ex;
-        if (set_up(&ex, theta0[start], omega0[start], L[start], g[start]) == 0) {
-            refused += evaluate(&ex, end - start, t + start, theta + start, omega + start);
-        } else {
-            refuse(end - start, theta + start, omega + start);
-            refused += end - start;
+        /* a stretch of elements each with inputs of its own (a state per point): set up and
+         * evaluated together, several at once (pendulum_exact_once_gl_many, the same bits) */
+        while (end < n && !(end + 1 < n && same_inputs(theta0, omega0, L, g, end + 1, end))) {
+            ++end;
         }
+        refused += pendulum_exact_once_gl_many(end - start, theta0 + start, omega0 + start, g + start, L + start, 0.0,
+                                               t + start, theta + start, omega + start);
         start = end;
     }
-    return refused + flush_singles(&singles, theta, omega);
+    return refused;
 }
 
 size_t pendulum_exact_times(double theta0, double omega0, double L, double g, size_t n, const double *t,

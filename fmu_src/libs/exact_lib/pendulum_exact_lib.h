@@ -24,8 +24,8 @@ PENDULUM_EXACT_API int pendulum_exact_abi(void);
  * omega0[i]) with length L[i] and gravity g[i], at time t[i]. The solution's constants are
  * set up again only when an initial state or parameter differs from element i - 1's, so a
  * scalar problem over many times costs one set-up; elements that share their inputs with
- * neither neighbour are set up and evaluated several at a time (pendulum_exact_once_gl_many),
- * the same bits. Returns the number of elements whose
+ * neither neighbour are set up and evaluated together (pendulum_exact_once_gl_many, several
+ * at a time), the same bits. Returns the number of elements whose
  * inputs were refused (not finite, L or g not > 0, g/L not finite and > 0); their outputs
  * are NaN. Every pointer may alias nothing else; n == 0 does nothing. */
 PENDULUM_EXACT_API size_t pendulum_exact_many(size_t n, const double *theta0, const double *omega0,
