@@ -76,6 +76,10 @@ class CTimings:
     gsl_init : BestMedian
         GSL for the same new states: ``gsl_sf_ellint_Kcomp_e`` and one ``gsl_sf_elljac_e`` plus
         atan2 (NaN without GSL, or from an older program that did not time it).
+    init_batch : BestMedian
+        The same new states set up and evaluated in blocks by ``pendulum_exact_once_gl_many``
+        (what :func:`pendulum_fmu.exact` calls with a state per point; NaN from an older
+        program).
     """
 
     eval: BestMedian
@@ -83,6 +87,7 @@ class CTimings:
     gsl: BestMedian
     init: BestMedian
     gsl_init: BestMedian = NOT_MEASURED
+    init_batch: BestMedian = NOT_MEASURED
 
 
 NO_C = CTimings(NOT_MEASURED, NOT_MEASURED, NOT_MEASURED, NOT_MEASURED)
@@ -169,7 +174,7 @@ def run_c_benchmark(executable: Path, n: int, amplitudes_deg: tuple[float, ...])
 
         eval_timing = pair("eval") if "eval_best" in values else BestMedian(float(values["ns_per_eval"]), math.nan)
         timings[float(values["amplitude_deg"])] = CTimings(eval_timing, pair("batch"), pair("gsl"), pair("init"),
-                                                           pair("gsl_init"))
+                                                           pair("gsl_init"), pair("once"))
     return timings
 
 
