@@ -137,3 +137,44 @@ def test_a_forked_child_evaluates_on_threads_of_its_own() -> None:
         child.kill()
     assert not hung, "the forked child hung in exact()"
     assert child.exitcode == 0 and queue.get(timeout=5) == float(theta[-1])
+
+
+def random_states(count: int, seed: int) -> tuple[np.ndarray, ...]:
+    """``count`` states of every kind, most of them releases from rest (the batched path):
+    any angle, next to the top, just past pi, tiny; moving librations, rotations; runs of
+    one L and g; times within 50 periods and a few at 1e6 periods."""
+    rng = np.random.default_rng(seed)
+    theta0 = rng.uniform(-math.pi, math.pi, count)
+    kind = rng.uniform(0.0, 1.0, count)
+    near_top = kind < 0.1
+    theta0[near_top] = np.sign(theta0[near_top]) * math.pi * (1.0 - 10.0 ** rng.uniform(-16.0, -1.0, near_top.sum()))
+    past_pi = (kind >= 0.1) & (kind < 0.15)
+    theta0[past_pi] = np.sign(theta0[past_pi]) * (math.pi + rng.uniform(0.0, 0.058, past_pi.sum()))
+    tiny = (kind >= 0.15) & (kind < 0.2)
+    theta0[tiny] *= 10.0 ** rng.uniform(-300.0, 0.0, tiny.sum())
+    length = np.repeat(rng.uniform(0.1, 5.0, count // 4 + 1), 4)[:count]   # runs of one L and g
+    gravity = np.repeat(rng.uniform(1.0, 20.0, count // 4 + 1), 4)[:count]
+    omega0 = np.where(kind > 0.8, rng.uniform(-3.0, 3.0, count) * np.sqrt(gravity / length), 0.0)
+    periods = np.where(rng.uniform(0.0, 1.0, count) < 0.95, 50.0, 1e6)
+    times = rng.uniform(-1.0, 1.0, count) * periods * 2.0 * math.pi * np.sqrt(length / gravity)
+    return theta0, omega0, length, gravity, times
+
+
+def test_a_state_per_point_is_each_states_own_evaluation_bit_for_bit() -> None:
+    """exact() over arrays of states (set up and evaluated in blocks) gives each state's values
+    as exact() with that state alone (one set-up, the scalar evaluation) gives them."""
+    theta0, omega0, length, gravity, times = random_states(3000, seed=38)
+    theta, omega = exact(theta0, omega0, length, gravity, times)
+    for i in range(theta0.size):
+        alone = exact(theta0[i], omega0[i], length[i], gravity[i], [times[i], times[i]])
+        assert theta[i].tobytes() == alone[0][0].tobytes() and omega[i].tobytes() == alone[1][0].tobytes(), i
+
+
+def test_a_state_per_point_is_the_fmus_theta_exact_bit_for_bit(fmu_path: Path) -> None:
+    theta0, omega0, length, gravity, times = random_states(40, seed=39)
+    theta, omega = exact(theta0, omega0, length, gravity, times)
+    for i in range(theta0.size):
+        with ExactPort(fmu_path) as port:
+            port.initialize(theta0[i], omega0[i], length[i], gravity[i])
+            fmu_theta, fmu_omega = port.evaluate(np.array([times[i]]))
+        assert theta[i].tobytes() == fmu_theta[0].tobytes() and omega[i].tobytes() == fmu_omega[0].tobytes(), i
