@@ -24,35 +24,38 @@ typedef struct {
     V4 kc_bottom, bottom_m; /* k'_N and m_N */
 } ChainsV4;
 
+/* 1 in bit l for every lane l of the mask */
+static inline int v4_bits(V4Mask mask)
+{
+    return _mm256_movemask_pd((__m256d)mask);
+}
+
 /* elliptic_param_begin's chain for four lanes (m, kc); the lanes from `lanes` on are carried
  * frozen at their start (their chain ends at once). */
 static inline void chains_begin_v4(int lanes, V4 m, V4 kc, ChainsV4 *c)
 {
-    V4 kc_n = kc, m_n = m;
+    V4 kc_n = kc, m_n = m, levels = v4_all(0.0);
+    V4Mask going;
     for (int l = 0; l < AVX_LANES; ++l) {
-        c->level[l] = l < lanes ? -1 : 0;
+        going[l] = l < lanes ? -1 : 0;
     }
-    int left = lanes;
-    c->most = 0;
-    for (int n = 0; left > 0; ++n) {
+    int n = 0;
+    for (;; ++n) {
         c->kc[n] = kc_n;   /* a lane's bottom k' (frozen past it) */
-        V4Mask going;
-        for (int l = 0; l < AVX_LANES; ++l) {
-            if (c->level[l] < 0 && !chain_goes_on(n, m_n[l])) {
-                c->level[l] = n;
-                c->most = n;
-                --left;
-            }
-            going[l] = c->level[l] < 0 ? -1 : 0;
-        }
-        if (left == 0) {
+        /* chain_goes_on: below the bottom, at least one level, at most ELLIPTIC_MAX_LEVELS */
+        const V4Mask goes = going & ((V4Mask)(m_n > BOTTOM_M) | (V4Mask)(v4_all((double)n) == 0.0))
+                            & (V4Mask)(v4_all((double)n) < (double)ELLIPTIC_MAX_LEVELS);
+        levels = v4_pick(going & ~goes, v4_all((double)n), levels);   /* ends here: N = n */
+        going = goes;
+        if (v4_bits(going) == 0) {
             break;
         }
         /* chain_level on every lane */
         const V4 one_plus_kc = 1.0 + kc_n, half = 0.5 * one_plus_kc;
         const V4 root_kc = (V4)_mm256_sqrt_pd((__m256d)kc_n);
         const V4 kc_next = root_kc / half;
-        const V4 k_next = v4_pick((V4Mask)(kc_n < 0.5), (1.0 - kc_n) / one_plus_kc, m_n / (one_plus_kc * one_plus_kc));
+        const V4Mask small = (V4Mask)(kc_n < 0.5);   /* k_next by one quotient of either form */
+        const V4 k_next = v4_pick(small, 1.0 - kc_n, m_n) / v4_pick(small, one_plus_kc, one_plus_kc * one_plus_kc);
         c->root[n] = root_kc;
         c->one_plus[n] = one_plus_kc;
         c->landen_k[n] = k_next;
@@ -61,50 +64,64 @@ static inline void chains_begin_v4(int lanes, V4 m, V4 kc, ChainsV4 *c)
         kc_n = v4_pick(going, kc_next, kc_n);
         m_n = v4_pick(going, k_next * k_next, m_n);
     }
+    c->most = n;
+    c->levels = levels;
     for (int l = 0; l < AVX_LANES; ++l) {
-        c->levels[l] = (double)c->level[l];
-        c->kc_bottom[l] = c->kc[c->level[l]][l];
+        c->level[l] = (int)levels[l];
     }
+    c->kc_bottom = kc_n;
     c->bottom_m = m_n;
 }
 
-/* elliptic_param_finish's K and 1/K (tail_level over every lane's levels, landen_K) and
- * finish_K's bottom scale, from the chain's k', roots and sums (kc, root, one_plus: level by
- * level) and k' = kc + kc_lo. */
-static inline void chains_finish_v4(const V4 *kc, const V4 *root, const V4 *one_plus, const ChainsV4 *c, V4 kc_lo,
-                                    V4Dd *K_out, V4Dd *inv_K, V4 *bottom_scale)
+/* elliptic_param_finish's running values (ChainTail) on four lanes */
+typedef struct {
+    V4 tail;
+    V4Dd mean;
+    V4 mean_error;
+} TailsV4;
+
+static inline TailsV4 tails_start_v4(V4 kc_lo)
 {
-    V4 tail = kc_lo;
-    V4Dd mean = {v4_all(1.0), v4_all(0.0)};
-    V4 mean_error = v4_all(0.0);
-    for (int n = 0; n < c->most; ++n) {
-        /* tail_level, and mean_times(&mean, &mean_error, one_plus / 2, tail_h / 2) */
-        const V4Mask active = (V4Mask)(v4_all((double)n) < c->levels);
-        const V4 kc_n = kc[n], root_n = root[n], one_plus_n = one_plus[n], kc_next = kc[n + 1];
-        const V4 e_h = kc_n - (one_plus_n - 1.0);
-        const V4Dd root_sq = v4_two_prod(root_n, root_n);
-        const V4 e_s = (kc_n - root_sq.hi) - root_sq.lo;
-        const V4Dd product = v4_two_prod(kc_next, one_plus_n);
-        const V4 e_q = (2.0 * root_n - product.hi) - product.lo;
-        const V4 tail_h = e_h + tail;
-        const V4 f_hi = 0.5 * one_plus_n, f_lo = 0.5 * tail_h;
-        const V4Dd pr = v4_two_prod(mean.hi, f_hi), a = v4_two_prod(mean.hi, f_lo);
-        const V4Dd b = v4_two_prod(mean.lo, f_hi);
-        const V4Dd s1 = v4_two_sum(pr.lo, a.hi), s2 = v4_two_sum(s1.hi, b.hi);
-        const V4 error = mean_error * f_hi + (((s1.lo + s2.lo) + (a.lo + b.lo)) + mean.lo * f_lo);
-        const V4Dd next_mean = v4_fast_two_sum(pr.hi, s2.hi);
-        const V4 next_tail = ((root_n * e_q + (e_s + tail)) - root_n * kc_next * tail_h) / (root_n * one_plus_n);
-        mean_error = v4_pick(active, error, mean_error);
-        mean.hi = v4_pick(active, next_mean.hi, mean.hi);
-        mean.lo = v4_pick(active, next_mean.lo, mean.lo);
-        tail = v4_pick(active, next_tail, tail);
-    }
-    /* landen_K */
+    const TailsV4 t = {kc_lo, {v4_all(1.0), v4_all(0.0)}, v4_all(0.0)};
+    return t;
+}
+
+/* tail_level of level n, with mean_times(&mean, &mean_error, one_plus / 2, tail_h / 2), on the
+ * lanes whose chain has that level (active); the others keep their values */
+static inline void tails_level_v4(TailsV4 *t, V4Mask active, V4 kc_n, V4 root_n, V4 one_plus_n, V4 kc_next)
+{
+    const V4 tail = t->tail;
+    const V4Dd mean = t->mean;
+    const V4 e_h = kc_n - (one_plus_n - 1.0);
+    const V4Dd root_sq = v4_two_prod(root_n, root_n);
+    const V4 e_s = (kc_n - root_sq.hi) - root_sq.lo;
+    const V4Dd product = v4_two_prod(kc_next, one_plus_n);
+    const V4 e_q = (2.0 * root_n - product.hi) - product.lo;
+    const V4 tail_h = e_h + tail;
+    const V4 f_hi = 0.5 * one_plus_n, f_lo = 0.5 * tail_h;
+    const V4Dd pr = v4_two_prod(mean.hi, f_hi), a = v4_two_prod(mean.hi, f_lo);
+    const V4Dd b = v4_two_prod(mean.lo, f_hi);
+    const V4Dd s1 = v4_two_sum(pr.lo, a.hi), s2 = v4_two_sum(s1.hi, b.hi);
+    const V4 error = t->mean_error * f_hi + (((s1.lo + s2.lo) + (a.lo + b.lo)) + mean.lo * f_lo);
+    const V4Dd next_mean = v4_fast_two_sum(pr.hi, s2.hi);
+    const V4 next_tail = ((root_n * e_q + (e_s + tail)) - root_n * kc_next * tail_h) / (root_n * one_plus_n);
+    t->mean_error = v4_pick(active, error, t->mean_error);
+    t->mean.hi = v4_pick(active, next_mean.hi, mean.hi);
+    t->mean.lo = v4_pick(active, next_mean.lo, mean.lo);
+    t->tail = v4_pick(active, next_tail, tail);
+}
+
+/* landen_K from the tails at the bottom (k'_N = kc_bottom), and finish_K's bottom scale */
+static inline void tails_finish_v4(const TailsV4 *t, V4 kc_bottom, V4 bottom_m, V4Dd *K_out, V4Dd *inv_K,
+                                   V4 *bottom_scale)
+{
+    const V4Dd mean = t->mean;
+    const V4 mean_error = t->mean_error;
     V4Dd A = v4_dd_div(v4_fast_two_sum(v4_all(HALF_PI_HI), v4_all(HALF_PI_LO)), mean);
     V4Dd B = v4_dd_mul(mean, v4_fast_two_sum(v4_all(2.0 * INV_PI_HI), v4_all(2.0 * INV_PI_LO)));
     A.lo -= A.hi * (A.hi * (mean_error * (2.0 * INV_PI_HI)));
     B.lo += mean_error * (2.0 * INV_PI_HI);
-    const V4Dd d = v4_two_sum(1.0 - c->kc_bottom, -tail);
+    const V4Dd d = v4_two_sum(1.0 - kc_bottom, -t->tail);
     V4Dd d2 = v4_two_prod(d.hi, d.hi);
     d2.lo += 2.0 * d.hi * d.lo;
     const V4 cube = d.hi * d2.hi;
@@ -120,11 +137,66 @@ static inline void chains_finish_v4(const V4 *kc, const V4 *root, const V4 *one_
     inverse.lo += B.lo - (BT.lo + (B.hi * T.lo + B.lo * T.hi));
     *inv_K = v4_fast_two_sum(inverse.hi, inverse.lo);
     *K_out = v4_fast_two_sum(K.hi, K.lo);
-    /* finish_K's bottom scale */
-    const V4 m_n = c->bottom_m;
-    const V4Dd bottom_factor = {1.0 + m_n * (0.25 + m_n * (9.0 / 64.0)), v4_all(0.0)};
+    const V4Dd bottom_factor = {1.0 + bottom_m * (0.25 + bottom_m * (9.0 / 64.0)), v4_all(0.0)};
     const V4Dd K_bottom = v4_dd_mul(v4_fast_two_sum(v4_all(HALF_PI_HI), v4_all(HALF_PI_LO)), bottom_factor);
     *bottom_scale = v4_dd_mul(K_bottom, *inv_K).hi;
+}
+
+/* elliptic_param_finish's K and 1/K and finish_K's bottom scale, from the chain's k', roots
+ * and sums (kc, root, one_plus: level by level) and k' = kc + kc_lo. */
+static inline void chains_finish_v4(const V4 *kc, const V4 *root, const V4 *one_plus, const ChainsV4 *c, V4 kc_lo,
+                                    V4Dd *K, V4Dd *inv_K, V4 *bottom_scale)
+{
+    TailsV4 t = tails_start_v4(kc_lo);
+    for (int n = 0; n < c->most; ++n) {
+        tails_level_v4(&t, (V4Mask)(v4_all((double)n) < c->levels), kc[n], root[n], one_plus[n], kc[n + 1]);
+    }
+    tails_finish_v4(&t, c->kc_bottom, c->bottom_m, K, inv_K, bottom_scale);
+}
+
+/* chains_begin_v4 and chains_finish_v4 in one pass, for k' = kc + kc_lo known at the start:
+ * each level's tail follows its level of the chain, so that the two chains of quotients
+ * overlap (the same operations on each lane, in another order). */
+static inline void chains_with_K_v4(int lanes, V4 m, V4 kc, V4 kc_lo, ChainsV4 *c, V4Dd *K, V4Dd *inv_K,
+                                    V4 *bottom_scale)
+{
+    V4 kc_n = kc, m_n = m, levels = v4_all(0.0);
+    V4Mask going;
+    for (int l = 0; l < AVX_LANES; ++l) {
+        going[l] = l < lanes ? -1 : 0;
+    }
+    TailsV4 t = tails_start_v4(kc_lo);
+    int n = 0;
+    for (;; ++n) {
+        c->kc[n] = kc_n;
+        const V4Mask goes = going & ((V4Mask)(m_n > BOTTOM_M) | (V4Mask)(v4_all((double)n) == 0.0))
+                            & (V4Mask)(v4_all((double)n) < (double)ELLIPTIC_MAX_LEVELS);
+        levels = v4_pick(going & ~goes, v4_all((double)n), levels);
+        going = goes;
+        if (v4_bits(going) == 0) {
+            break;
+        }
+        const V4 kc_level = kc_n;
+        const V4 one_plus_kc = 1.0 + kc_n, half = 0.5 * one_plus_kc;
+        const V4 root_kc = (V4)_mm256_sqrt_pd((__m256d)kc_n);
+        const V4 kc_next = root_kc / half;
+        const V4Mask small = (V4Mask)(kc_n < 0.5);
+        const V4 k_next = v4_pick(small, 1.0 - kc_n, m_n) / v4_pick(small, one_plus_kc, one_plus_kc * one_plus_kc);
+        c->landen_k[n] = k_next;
+        c->landen_1pk[n] = 1.0 + k_next;
+        c->landen_1mk[n] = kc_n / half;
+        kc_n = v4_pick(going, kc_next, kc_n);
+        m_n = v4_pick(going, k_next * k_next, m_n);
+        tails_level_v4(&t, going, kc_level, root_kc, one_plus_kc, kc_n);
+    }
+    c->most = n;
+    c->levels = levels;
+    for (int l = 0; l < AVX_LANES; ++l) {
+        c->level[l] = (int)levels[l];
+    }
+    c->kc_bottom = kc_n;
+    c->bottom_m = m_n;
+    tails_finish_v4(&t, kc_n, m_n, K, inv_K, bottom_scale);
 }
 
 /* elliptic_param_begin for lanes <= 4 parameter sets (p[l], m[l], kc[l]), their chains in

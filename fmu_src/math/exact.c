@@ -1390,16 +1390,16 @@ static int once_avx(int lanes, const double *theta0, const DoubleDouble *w0, dou
         m[l] = eligible[l] ? m[l] : m[any];
         kc[l] = eligible[l] ? kc[l] : kc[any];
     }
-    ChainsV4 chains;
-    chains_begin_v4(AVX_LANES, m, kc, &chains);
     /* settle_initial_angle: c < 0 (theta0 just past pi) moves th by a turn, s and c change sign */
     const V4Mask past = (V4Mask)(trig.cos_lead < 0.0);
     const V4Dd cosine = cos_sin_end_v4(&trig);
     const V4Dd c = v4_pick_dd(past, v4_dd_neg(cosine), cosine);
     const V4 s_hi = v4_pick(past, -trig.sin_x, trig.sin_x);
+    /* the chain on c's leading double, K and 1/K from its tails with c's low part */
+    ChainsV4 chains;
     V4Dd K, inv_K;
     LibrationV4 s;
-    chains_finish_v4(chains.kc, chains.root, chains.one_plus, &chains, c.lo, &K, &inv_K, &s.bottom_scale);
+    chains_with_K_v4(AVX_LANES, m, kc, c.lo, &chains, &K, &inv_K, &s.bottom_scale);
     /* from_rest_fields */
     const V4Dd rho = v4_dd_mul((V4Dd){w0_hi, w0_lo}, inv_K);
     const V4 u0 = v4_pick((V4Mask)(k == 0.0), v4_all(0.0), v4_pick((V4Mask)(s_hi < 0.0), -K.hi, K.hi));
@@ -1416,9 +1416,9 @@ static int once_avx(int lanes, const double *theta0, const DoubleDouble *w0, dou
     s.omega_half = k * w0_hi;
     s.levels = chains.levels;
     s.most = chains.most;
-    memcpy(s.landen_k, chains.landen_k, sizeof s.landen_k);
-    memcpy(s.landen_1pk, chains.landen_1pk, sizeof s.landen_1pk);
-    memcpy(s.landen_1mk, chains.landen_1mk, sizeof s.landen_1mk);
+    s.landen_k = chains.landen_k;
+    s.landen_1pk = chains.landen_1pk;
+    s.landen_1mk = chains.landen_1mk;
     V4 angle, om;
     const V4Mask path = eval_libration_v4(&s, tv, &angle, &om);
     int done = 0;

@@ -81,7 +81,7 @@ typedef struct {
     V4 theta_turns;   /* whole turns of theta0, |theta_turns| < 2^50 */
     V4 levels;   /* N as doubles */
     int most;    /* the largest N */
-    V4 landen_k[ELLIPTIC_MAX_LEVELS], landen_1pk[ELLIPTIC_MAX_LEVELS], landen_1mk[ELLIPTIC_MAX_LEVELS];
+    const V4 *landen_k, *landen_1pk, *landen_1mk;   /* [level] */
 } LibrationV4;
 
 /* eval_libration's operations at times tv: *theta and *omega for every lane, and a mask of
@@ -165,15 +165,19 @@ static int eval_states_avx(int lanes, const PendulumExact *ex, const double *t, 
     if (s.most == 0) {
         return 0;
     }
+    V4 landen_k[ELLIPTIC_MAX_LEVELS], landen_1pk[ELLIPTIC_MAX_LEVELS], landen_1mk[ELLIPTIC_MAX_LEVELS];
     for (int i = 0; i < s.most; ++i) {
         for (int l = 0; l < AVX_LANES; ++l) {
             const EllipticParam *p = &ex[l < lanes ? l : 0].ell;
             const int at = i < p->levels ? i : 0;
-            s.landen_k[i][l] = p->landen_k[at];
-            s.landen_1pk[i][l] = p->landen_1pk[at];
-            s.landen_1mk[i][l] = p->landen_1mk[at];
+            landen_k[i][l] = p->landen_k[at];
+            landen_1pk[i][l] = p->landen_1pk[at];
+            landen_1mk[i][l] = p->landen_1mk[at];
         }
     }
+    s.landen_k = landen_k;
+    s.landen_1pk = landen_1pk;
+    s.landen_1mk = landen_1mk;
     V4 angle, om;
     const V4Mask path = eval_libration_v4(&s, tv, &angle, &om);
     int done = 0;
