@@ -63,11 +63,13 @@ static inline void v4_landen_step(V4Mask step, V4Mask long_chain, V4 kk, V4 one_
     V4 up_S = one_plus_k * *S * *D, up_C = *C * *E;
     V4 up_E = one_minus_k * d2 + kk * *C * *C, up_D = d2 + kk * *S * *S;
     const V4Mask rescale = long_chain & (V4Mask)(up_D > ELLIPTIC_HOMOGENEOUS_RESCALE);
-    const V4 inv = 1.0 / up_D;
-    up_S = v4_pick(rescale, up_S * inv, up_S);
-    up_C = v4_pick(rescale, up_C * inv, up_C);
-    up_E = v4_pick(rescale, up_E * inv, up_E);
-    up_D = v4_pick(rescale, v4_all(1.0), up_D);
+    if (_mm256_movemask_pd((__m256d)rescale) != 0) {   /* only chains of more than 7 levels */
+        const V4 inv = 1.0 / up_D;
+        up_S = v4_pick(rescale, up_S * inv, up_S);
+        up_C = v4_pick(rescale, up_C * inv, up_C);
+        up_E = v4_pick(rescale, up_E * inv, up_E);
+        up_D = v4_pick(rescale, v4_all(1.0), up_D);
+    }
     *S = v4_pick(step, up_S, *S);
     *C = v4_pick(step, up_C, *C);
     *E = v4_pick(step, up_E, *E);
