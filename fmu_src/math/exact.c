@@ -781,7 +781,14 @@ static inline double phase_near(const PendulumExact *ex, double tau_hi, double t
     const double x_lo = ((ex->rho_head * tau_head - x_hi) + ex->rho_head * tau_tail
                          + ex->rho_tail * tau_head) + ex->rho_tail * tau_tail;
 #endif
+#if defined(__SSE4_1__)
+    /* roundsd (rint, default rounding): the shift's integer in one operation where the
+     * build has SSE4.1 (the fma build); it is -0 where the shift gives +0, for x in
+     * [-1/2, 0], which changes the sign of a zero f alone, and no output reads that sign */
+    const double n = rint(x_hi + ex->x0_hi);
+#else
     const double n = (x_hi + ex->x0_hi + 0x1.8p52) - 0x1.8p52;
+#endif
     *quarters = n;
     /* x_hi - n is exact once n exceeds a few (Sterbenz); below, all is small */
     return ((x_hi - n) + ex->x0_hi) + (x_lo + (ex->rho_hi * tau_lo + ex->rho_lo * tau_hi) + ex->x0_lo);
@@ -935,19 +942,42 @@ static void eval_any(const PendulumExact *ex, double t, double *theta, double *o
  * series (always so but for overflowed inputs) and |theta_turns| < 2^50: the operations of
  * eval_any for that case (phase_at, elliptic_sncndn_homogeneous_pair, libration_angle_omega,
  * add_half_turns), the same bits, inline and without a call. Returns 0, nothing written,
- * off that case. */
+ * off that case.
+ *
+ * The same roundings in fewer steps on the longest chain (t, the phase, the Landen levels,
+ * the arctangent's quotient and series):
+ *   - t - t0 = tau_hi + tau_lo by Fast2Sum on the two terms ordered by magnitude (3 dependent
+ *     operations, TwoSum's 5): the rounding error of a sum is one number, so tau_lo is
+ *     dd_two_sum's, at most with the other sign of a zero, which reaches f only as the sign
+ *     of a zero f (a sum changes with the sign of a zero term only where it is itself zero),
+ *     and no output reads the sign of f (|f| and f < 0 alone; see below);
+ *   - the quarter n mod 4, known long before the Landen levels end, picks the formulas by
+ *     branches instead of libration_angle_omega's exact 0/1 weights (x 1 + y 0 = x for the
+ *     positive S, C, D, E; the branch is decided early, so a misprediction costs less than
+ *     the products and sums it saves on the chain: bench_exact, docs/speed-exact.md);
+ *   - sn r is odd: the levels run on |r|, and where the weighted code negated S for r < 0,
+ *     the factor copysign(1, r) enters k' sn r (omega, n odd) and the sign of the
+ *     arctangent's argument (theta, n even). For r = -0, S = +0 and both formulas give +0
+ *     either way (0 - (+-0) and -0 + 0), so the sign of a zero r is not read;
+ *   - the arctangent (elliptic_atan_unit) on a = |sign sqrt(k_1) y1| = sqrt(k_1) y1 and
+ *     b = x1, its sector by a branch: t = a / b with a base of 0 (0 + (0 + P) = P for the
+ *     P >= +0 there), or (a - b) / (a + b) with a base of pi/4. */
 static inline int eval_libration(const PendulumExact *ex, double t, double *theta, double *omega)
 {
     if (ex->regime != PENDULUM_LIBRATION || t == ex->t0 || !(fabs(ex->theta_turns) < 0x1p50)) {
         return 0;
     }
-    const DoubleDouble tau = dd_two_sum(t, -ex->t0);
-    const double x_hi = ex->rho_hi * tau.hi;
+    const double minus_t0 = -ex->t0;
+    const int t_larger = fabs(t) >= fabs(minus_t0);
+    const double big = t_larger ? t : minus_t0, small = t_larger ? minus_t0 : t;
+    const double tau_hi = t + minus_t0;                 /* dd_two_sum(t, -t0).hi */
+    const double tau_lo = small - (tau_hi - big);       /* Fast2Sum: exact, |big| >= |small| */
+    const double x_hi = ex->rho_hi * tau_hi;
     if (!(fabs(x_hi) < 0x1p50)) {
         return 0;
     }
     double quarters;
-    const double v = phase_near(ex, tau.hi, tau.lo, x_hi, &quarters) * ex->K_hi;
+    const double v = phase_near(ex, tau_hi, tau_lo, x_hi, &quarters) * ex->K_hi;
     const EllipticParam *p = &ex->ell;
     const double z = fabs(v) * p->bottom_scale;
     if (!(z <= ELLIPTIC_SERIES_Z_MAX)) {
@@ -959,16 +989,33 @@ static inline int eval_libration(const PendulumExact *ex, double t, double *thet
     for (int i = p->levels - 1; i >= 1; --i) {
         h1 = elliptic_landen_step(p, i, h1);
     }
-    EllipticHomogeneous h0 = elliptic_landen_step(p, 0, h1);
-    if (v < 0.0) {
-        h1.S = -h1.S;
-        h0.S = -h0.S;
+    const EllipticHomogeneous h0 = elliptic_landen_step(p, 0, h1);   /* of |r|: S1, S0 >= +0 */
+
+    /* the quarter n mod 4 (|quarters| < 2^51): sign = -1 for n = 2, 3 mod 4 */
+    static const double QUARTER_SIGN[4] = {1.0, 1.0, -1.0, -1.0};
+    const int quarter = (int)((long long)quarters & 3);
+    const int odd = quarter & 1;
+    const double sign = QUARTER_SIGN[quarter], r_sign = copysign(1.0, v);
+
+    /* theta = 4 atan(sign sqrt(k_1) y1 / x1), y1 / x1 = S1 / D1 (n even), C1 / E1 (n odd) */
+    const double a = ex->sqrt_k1 * (odd ? h1.C : h1.S), b = odd ? h1.E : h1.D;
+    double magnitude;
+    if (a > ELLIPTIC_TAN_PI_8 * b) {
+        const double at = (a - b) / (a + b), s = at * at;
+        magnitude = ELLIPTIC_QUARTER_PI_HI + (ELLIPTIC_QUARTER_PI_LO + (at + at * s * elliptic_atan_series(s)));
+    } else {
+        const double at = a / b, s = at * at;
+        magnitude = at + at * s * elliptic_atan_series(s);
     }
-    const int quarter = (int)((long long)quarters & 3);   /* |quarters| < 2^51 */
-    double angle, om;
-    libration_angle_omega(ex, h0, h1, (double)(quarter & 1), 1.0 - (double)(quarter & 2), &angle, &om);
+    /* the sign of sign sqrt(k_1) y1, y1 = r_sign S1 + 0 (n even: the weighted sum's zero) or C1 */
+    const double y = (sign * ex->sqrt_k1) * (odd ? h1.C : r_sign * h1.S + 0.0);
+    const double angle = 4.0 * copysign(magnitude, y);
+
+    /* omega = 2 k w0 cn u: cn u = sign C0 / D0 (n even), -sign k' r_sign S0 / E0 (n odd) */
+    const double cn_num = odd ? 0.0 - (r_sign * ex->kc) * h0.S : h0.C;
+    const double cn_den = odd ? h0.E : h0.D;
+    *omega = 2.0 * (sign * ex->omega_half * (cn_num / cn_den));
     *theta = add_half_turns(dd_of(2.0 * ex->theta_turns), angle);
-    *omega = om;
     return 1;
 }
 
