@@ -149,16 +149,36 @@ typedef struct {
  *   S' = (1 + kk) S D,  C' = C E,  E' = (1 - kk) D^2 + kk C^2,  D' = D^2 + kk S^2,
  * products and sums of positive numbers only (for 0 <= v <= K/2). Renormalised when D
  * grows past ELLIPTIC_HOMOGENEOUS_RESCALE. */
+static inline double elliptic_landen_up_S(const EllipticParam *p, int index, EllipticHomogeneous h)
+{
+    return p->landen_1pk[index] * h.S * h.D;
+}
+
+static inline double elliptic_landen_up_C(EllipticHomogeneous h)
+{
+    return h.C * h.E;
+}
+
+static inline double elliptic_landen_up_E(const EllipticParam *p, int index, EllipticHomogeneous h)
+{
+    return p->landen_1mk[index] * (h.D * h.D) + p->landen_k[index] * h.C * h.C;
+}
+
+static inline double elliptic_landen_up_D(const EllipticParam *p, int index, EllipticHomogeneous h)
+{
+    return h.D * h.D + p->landen_k[index] * h.S * h.S;
+}
+
+/* The four coordinates together (the coordinates alone above: a caller that needs two of
+ * them forms only those, with the same operations). */
 static inline EllipticHomogeneous elliptic_landen_step_plain(const EllipticParam *p, int index,
                                                              EllipticHomogeneous h)
 {
-    const double kk = p->landen_k[index];
-    const double d2 = h.D * h.D;
     EllipticHomogeneous up;
-    up.S = p->landen_1pk[index] * h.S * h.D;
-    up.C = h.C * h.E;
-    up.E = p->landen_1mk[index] * d2 + kk * h.C * h.C;
-    up.D = d2 + kk * h.S * h.S;
+    up.S = elliptic_landen_up_S(p, index, h);
+    up.C = elliptic_landen_up_C(h);
+    up.E = elliptic_landen_up_E(p, index, h);
+    up.D = elliptic_landen_up_D(p, index, h);
     return up;
 }
 

@@ -981,26 +981,47 @@ static double phase_quarters_far(const PendulumExact *ex, DoubleDouble tau, Doub
     return fraction - n_f;
 }
 
+/* x_lo = rho_hi tau_hi - x_hi exactly, x_hi = rho_hi tau_hi rounded: the fma, or Dekker's
+ * two-product with rho_hi split once in init */
+static inline double phase_product_error(const PendulumExact *ex, double tau_hi, double x_hi)
+{
+#if defined(FP_FAST_FMA) || defined(PENDULUM_DD_FMA)
+    return fma(ex->rho_hi, tau_hi, -x_hi);
+#else
+    const double tau_split = 134217729.0 * tau_hi;          /* Veltkamp split of tau_hi */
+    const double tau_head = tau_split - (tau_split - tau_hi), tau_tail = tau_hi - tau_head;
+    return ((ex->rho_head * tau_head - x_hi) + ex->rho_head * tau_tail + ex->rho_tail * tau_head)
+           + ex->rho_tail * tau_tail;
+#endif
+}
+
+/* The integer nearest to x_hi + x0_hi (|x_hi| < 2^50, |x0_hi| <= 2): the 1.5 * 2^52 shift, or
+ * roundsd (rint, default rounding) where the build has SSE4.1 (the fma build), one operation
+ * for two. rint gives -0 where the shift gives +0 (x_hi + x0_hi in [-1/2, 0]), which changes
+ * the sign of a zero fraction f alone, and no output reads that sign (the quarter is n mod 4,
+ * the evaluations read |f| and f < 0). */
+static inline double phase_nearest_integer(const PendulumExact *ex, double x_hi)
+{
+#if defined(__SSE4_1__)
+    return rint(x_hi + ex->x0_hi);
+#else
+    return (x_hi + ex->x0_hi + 0x1.8p52) - 0x1.8p52;
+#endif
+}
+
 /* The phase below 2^50 quarter periods, x = rho tau + x0 with tau = t - t0 (tau = tau_hi +
  * tau_lo exact, TwoSum) and x_hi = rho_hi tau_hi given, |x_hi| < 2^50: returns the fraction
  * f = x - quarters, *quarters the integer nearest to x_hi + x0_hi. Up to 2^50 quarter periods
  * the cross terms rho_hi tau_lo, rho_lo tau_hi stay below 1/8 and need no integer split, and
- * the exact product rho_hi tau_hi = x_hi + x_lo, with rho_hi split once in init (Dekker) or
- * by the fma, is all the work. The nearest integer is the 1.5 * 2^52 shift of
- * dd_nearest_integer, whose other branch (|x| >= 2^51) cannot be taken here (|x0| <= 2).
+ * the exact product rho_hi tau_hi = x_hi + x_lo (phase_product_error) is all the work. The
+ * nearest integer (phase_nearest_integer) is the 1.5 * 2^52 shift of dd_nearest_integer,
+ * whose other branch (|x| >= 2^51) cannot be taken here (|x0| <= 2).
  * Plain arithmetic without a branch: the lock-step evaluation runs it over its lanes. */
 static inline double phase_near(const PendulumExact *ex, double tau_hi, double tau_lo, double x_hi,
                                 double *quarters)
 {
-#if defined(FP_FAST_FMA) || defined(PENDULUM_DD_FMA)
-    const double x_lo = fma(ex->rho_hi, tau_hi, -x_hi);
-#else
-    const double tau_split = 134217729.0 * tau_hi;          /* Veltkamp split of tau_hi */
-    const double tau_head = tau_split - (tau_split - tau_hi), tau_tail = tau_hi - tau_head;
-    const double x_lo = ((ex->rho_head * tau_head - x_hi) + ex->rho_head * tau_tail
-                         + ex->rho_tail * tau_head) + ex->rho_tail * tau_tail;
-#endif
-    const double n = (x_hi + ex->x0_hi + 0x1.8p52) - 0x1.8p52;
+    const double x_lo = phase_product_error(ex, tau_hi, x_hi);
+    const double n = phase_nearest_integer(ex, x_hi);
     *quarters = n;
     /* x_hi - n is exact once n exceeds a few (Sterbenz); below, all is small */
     return ((x_hi - n) + ex->x0_hi) + (x_lo + (ex->rho_hi * tau_lo + ex->rho_lo * tau_hi) + ex->x0_lo);
@@ -1154,19 +1175,52 @@ static void eval_any(const PendulumExact *ex, double t, double *theta, double *o
  * series (always so but for overflowed inputs) and |theta_turns| < 2^50: the operations of
  * eval_any for that case (phase_at, elliptic_sncndn_homogeneous_pair, libration_angle_omega,
  * add_half_turns), the same bits, inline and without a call. Returns 0, nothing written,
- * off that case. */
+ * off that case.
+ *
+ * The same roundings as those functions, in fewer operations and fewer steps on the longest
+ * chain (t, the phase, the Landen levels, the arctangent's quotient and series), the bits
+ * kept (tests/c/test_exact_fma_bits.c, scripts/compare-exact-builds.py):
+ *   - t - t0 = tau_hi + tau_lo by Fast2Sum on the two terms ordered by magnitude (3 dependent
+ *     operations, TwoSum's 5): the rounding error of a sum is one number, so tau_lo is
+ *     dd_two_sum's, at most with the other sign of a zero. Where tau_lo is zero (t - t0
+ *     exact: always for t0 = 0) the phase's sum leaves out the zero term rho_hi tau_lo. A
+ *     sum changes with the sign of a zero term only where it is itself zero, so either
+ *     reaches the fraction f only as the sign of a zero f, which no output reads (below);
+ *   - the quarter n mod 4, known long before the Landen levels end, picks the formulas by
+ *     branches instead of libration_angle_omega's exact 0/1 weights (x 1 + y 0 = x for the
+ *     positive S, C, D, E): the branches are decided early, and a misprediction then costs
+ *     less than the products and sums the weights put on the chain (bench_exact);
+ *   - sn r is odd: the levels run on |r|, and where the weighted code negated S for r < 0,
+ *     the factor copysign(1, r) enters k' sn r (omega, n odd) and the sign of the
+ *     arctangent's argument (theta, n even). For r = +-0, S = +0 and both give +0 with
+ *     either factor (0 - (+-0) and -0 + 0), so the sign of a zero r is read nowhere;
+ *   - the arctangent (elliptic_atan_unit) on a = |sign sqrt(k_1) y1| = sqrt(k_1) y1 and
+ *     b = x1, its sector by a branch: t = a / b with a base of 0 (0 + (0 + P) = P for the
+ *     P >= +0 there), or (a - b) / (a + b) with a base of pi/4;
+ *   - the last Landen step forms only the two coordinates that omega divides (where no
+ *     rescaling can occur). */
 static inline int eval_libration(const PendulumExact *ex, double t, double *theta, double *omega)
 {
     if (ex->regime != PENDULUM_LIBRATION || t == ex->t0 || !(fabs(ex->theta_turns) < 0x1p50)) {
         return 0;
     }
-    const DoubleDouble tau = dd_two_sum(t, -ex->t0);
-    const double x_hi = ex->rho_hi * tau.hi;
+    const double minus_t0 = -ex->t0;
+    const int t_larger = fabs(t) >= fabs(minus_t0);
+    const double big = t_larger ? t : minus_t0, small = t_larger ? minus_t0 : t;
+    const double tau_hi = t + minus_t0;                 /* dd_two_sum(t, -t0).hi */
+    const double tau_lo = small - (tau_hi - big);       /* Fast2Sum: exact, |big| >= |small| */
+    const double x_hi = ex->rho_hi * tau_hi;
     if (!(fabs(x_hi) < 0x1p50)) {
         return 0;
     }
-    double quarters;
-    const double v = phase_near(ex, tau.hi, tau.lo, x_hi, &quarters) * ex->K_hi;
+    /* phase_near's fraction f; where tau_lo is zero (t - t0 exact, as always for t0 = 0) its
+     * sum leaves out the zero cross term rho_hi tau_lo */
+    const double x_lo = phase_product_error(ex, tau_hi, x_hi), quarters = phase_nearest_integer(ex, x_hi);
+    double cross = ex->rho_lo * tau_hi;
+    if (tau_lo != 0.0) {
+        cross = ex->rho_hi * tau_lo + cross;
+    }
+    const double v = (((x_hi - quarters) + ex->x0_hi) + ((x_lo + cross) + ex->x0_lo)) * ex->K_hi;
     const EllipticParam *p = &ex->ell;
     const double z = fabs(v) * p->bottom_scale;
     if (!(z <= ELLIPTIC_SERIES_Z_MAX)) {
@@ -1176,18 +1230,43 @@ static inline int eval_libration(const PendulumExact *ex, double t, double *thet
     trig_sincos_small(z, &sz, &cz);
     EllipticHomogeneous h1 = elliptic_landen_bottom(p, z, sz, cz);
     for (int i = p->levels - 1; i >= 1; --i) {
-        h1 = elliptic_landen_step(p, i, h1);
+        h1 = elliptic_landen_step(p, i, h1);   /* of |r|: S1 >= +0 */
     }
-    EllipticHomogeneous h0 = elliptic_landen_step(p, 0, h1);
-    if (v < 0.0) {
-        h1.S = -h1.S;
-        h0.S = -h0.S;
+
+    /* the quarter n mod 4 (|quarters| < 2^51): sign = -1 for n = 2, 3 mod 4 */
+    static const double QUARTER_SIGN[4] = {1.0, 1.0, -1.0, -1.0};
+    const int quarter = (int)((long long)quarters & 3);
+    const int odd = quarter & 1;
+    const double sign = QUARTER_SIGN[quarter], r_sign = copysign(1.0, v);
+
+    /* theta = 4 atan(sign sqrt(k_1) y1 / x1), y1 / x1 = S1 / D1 (n even), C1 / E1 (n odd) */
+    const double a = ex->sqrt_k1 * (odd ? h1.C : h1.S), b = odd ? h1.E : h1.D;
+    double magnitude;
+    if (a > ELLIPTIC_TAN_PI_8 * b) {
+        const double at = (a - b) / (a + b), s = at * at;
+        magnitude = ELLIPTIC_QUARTER_PI_HI + (ELLIPTIC_QUARTER_PI_LO + (at + at * s * elliptic_atan_series(s)));
+    } else {
+        const double at = a / b, s = at * at;
+        magnitude = at + at * s * elliptic_atan_series(s);
     }
-    const int quarter = (int)((long long)quarters & 3);   /* |quarters| < 2^51 */
-    double angle, om;
-    libration_angle_omega(ex, h0, h1, (double)(quarter & 1), 1.0 - (double)(quarter & 2), &angle, &om);
+    /* the sign of sign sqrt(k_1) y1, y1 = r_sign S1 + 0 (n even: the weighted sum's zero) or C1 */
+    const double y = (sign * ex->sqrt_k1) * (odd ? h1.C : r_sign * h1.S + 0.0);
+    const double angle = 4.0 * copysign(magnitude, y);
+
+    /* omega = 2 k w0 cn u: cn u = sign C0 / D0 (n even), -sign k' r_sign S0 / E0 (n odd), the
+     * last Landen step forming the two coordinates it needs (all four, and their rescaling,
+     * where the chain is long enough to need it) */
+    double cn_num, cn_den;
+    if (p->levels <= ELLIPTIC_LEVELS_WITHOUT_RESCALE) {
+        cn_num = odd ? 0.0 - (r_sign * ex->kc) * elliptic_landen_up_S(p, 0, h1) : elliptic_landen_up_C(h1);
+        cn_den = odd ? elliptic_landen_up_E(p, 0, h1) : elliptic_landen_up_D(p, 0, h1);
+    } else {
+        const EllipticHomogeneous h0 = elliptic_landen_step(p, 0, h1);
+        cn_num = odd ? 0.0 - (r_sign * ex->kc) * h0.S : h0.C;
+        cn_den = odd ? h0.E : h0.D;
+    }
+    *omega = 2.0 * (sign * ex->omega_half * (cn_num / cn_den));
     *theta = add_half_turns(dd_of(2.0 * ex->theta_turns), angle);
-    *omega = om;
     return 1;
 }
 
