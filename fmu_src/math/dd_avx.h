@@ -33,6 +33,12 @@ static inline V4 v4_pick(V4Mask where, V4 yes, V4 no)
     return (V4)_mm256_blendv_pd((__m256d)no, (__m256d)yes, (__m256d)where);
 }
 
+/* 1 in bit l for every lane l of the mask */
+static inline int v4_bits(V4Mask mask)
+{
+    return _mm256_movemask_pd((__m256d)mask);
+}
+
 typedef struct {
     V4 hi, lo;
 } V4Dd;

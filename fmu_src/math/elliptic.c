@@ -168,9 +168,7 @@ int elliptic_param_init_root(EllipticParam *p, double m, double m1_hi, double m1
     return 0;
 }
 
-/* The start of elliptic_param_begin: the parameter and every level's factors at 1 (the
- * evaluation reads them for levels past the chain's). */
-static inline void chain_start(EllipticParam *p, double m, double kc)
+void elliptic_param_begin(EllipticParam *p, double m, double kc, EllipticChain *chain)
 {
     p->m = m;
     p->k = sqrt(m);
@@ -179,135 +177,70 @@ static inline void chain_start(EllipticParam *p, double m, double kc)
         p->landen_1pk[i] = 1.0;
         p->landen_1mk[i] = 1.0;
     }
-}
-
-/* 1 while the chain goes on below level n: m_n above the bottom, and at least one level. */
-static inline int chain_goes_on(int n, double m_n)
-{
-    return (m_n > BOTTOM_M || n == 0) && n < ELLIPTIC_MAX_LEVELS;
-}
-
-/* Level n of the descending Landen sequence (A&S 16.12.1, DLMF 22.7.1; the AGM of A&S 16.4
- * normalised, k_n = c_n / a_n, k'_n = b_n / a_n):
- *   k_{n+1} = (1 - k'_n) / (1 + k'_n) = m_n / (1 + k'_n)^2,
- *   1 - k_{n+1} = 2 k'_n / (1 + k'_n),   k'_{n+1} = 2 sqrt(k'_n) / (1 + k'_n),
- * each in the form that does not cancel, all from the double k' (the halves (1 + k'_n)/2
- * are exact, so k'_n / ((1 + k'_n)/2) is the rounded 2 k'_n / (1 + k'_n) itself). Not
- * rounded from a more accurate chain: its moduli would be the correctly rounded ones, but
- * each level is then not the Landen transform of the rounded level above it, and the
- * evaluation, which passes through the levels in turn, loses more (measured: theta's mean
- * error at 170 deg from rest 3.2e-16 rad against 2.2e-16 with this chain). *kc_n and *m_n
- * move down one level. */
-static inline void chain_level(EllipticParam *p, int n, double *kc_n, double *m_n, double *root, double *one_plus)
-{
-    const double kc = *kc_n;
-    const double one_plus_kc = 1.0 + kc, half = 0.5 * one_plus_kc;   /* half: exact */
-    const double root_kc = sqrt(kc);
-    const double kc_next = root_kc / half;   /* 2 sqrt(k'_n) / (1 + k'_n) */
-    const double k_next = kc < 0.5 ? (1.0 - kc) / one_plus_kc : *m_n / (one_plus_kc * one_plus_kc);
-    p->landen_k[n] = k_next;
-    p->landen_1pk[n] = 1.0 + k_next;
-    p->landen_1mk[n] = kc / half;
-    *root = root_kc;
-    *one_plus = one_plus_kc;
-    *kc_n = kc_next;
-    *m_n = k_next * k_next;
-}
-
-/* The bottom of the chain, N = n levels down (the chain's last k' is the caller's to keep). */
-static inline void chain_end(EllipticParam *p, int n, double m_n)
-{
+    /* Descending Landen sequence (A&S 16.12.1, DLMF 22.7.1; the AGM of A&S 16.4 normalised,
+     * k_n = c_n / a_n, k'_n = b_n / a_n):
+     *   k_{n+1} = (1 - k'_n) / (1 + k'_n) = m_n / (1 + k'_n)^2,
+     *   1 - k_{n+1} = 2 k'_n / (1 + k'_n),   k'_{n+1} = 2 sqrt(k'_n) / (1 + k'_n),
+     * each in the form that does not cancel, all from the double k' (the halves (1 + k'_n)/2
+     * are exact, so k'_n / ((1 + k'_n)/2) is the rounded 2 k'_n / (1 + k'_n) itself). Not
+     * rounded from a more accurate chain: its moduli would be the correctly rounded ones, but
+     * each level is then not the Landen transform of the rounded level above it, and the
+     * evaluation, which passes through the levels in turn, loses more (measured: theta's mean
+     * error at 170 deg from rest 3.2e-16 rad against 2.2e-16 with this chain). Every m_1 >= the
+     * smallest subnormal reaches m_N <= BOTTOM_M within 11 levels. */
+    double kc_n = kc, m_n = m;
+    int n = 0;
+    while ((m_n > BOTTOM_M || n == 0) && n < ELLIPTIC_MAX_LEVELS) {   /* at least one level */
+        const double one_plus_kc = 1.0 + kc_n, half = 0.5 * one_plus_kc;   /* half: exact */
+        const double root_kc = sqrt(kc_n);
+        const double kc_next = root_kc / half;   /* 2 sqrt(k'_n) / (1 + k'_n) */
+        const double k_next = kc_n < 0.5 ? (1.0 - kc_n) / one_plus_kc
+                                         : m_n / (one_plus_kc * one_plus_kc);
+        p->landen_k[n] = k_next;
+        p->landen_1pk[n] = 1.0 + k_next;
+        p->landen_1mk[n] = kc_n / half;
+        chain->kc[n] = kc_n;
+        chain->root[n] = root_kc;
+        chain->one_plus[n] = one_plus_kc;
+        kc_n = kc_next;
+        m_n = k_next * k_next;
+        ++n;
+    }
+    chain->kc[n] = kc_n;
     p->levels = n;
-    p->sqrt_k1 = p->k / (1.0 + p->kc);   /* sqrt(k_1) = sqrt((1 - k')/(1 + k')) = k / (1 + k') */
+    p->sqrt_k1 = p->k / (1.0 + kc);   /* sqrt(k_1) = sqrt((1 - k')/(1 + k')) = k / (1 + k') */
     p->bottom_m = m_n;
 }
 
-void elliptic_param_begin(EllipticParam *p, double m, double kc, EllipticChain *chain)
+void elliptic_param_finish(EllipticParam *p, const EllipticChain *chain, double m1, double kc_lo,
+                           DoubleDouble *inv_K)
 {
-    chain_start(p, m, kc);
-    /* Every m_1 >= the smallest subnormal reaches m_N <= BOTTOM_M within 11 levels. */
-    double kc_n = kc, m_n = m;
-    int n = 0;
-    for (; chain_goes_on(n, m_n); ++n) {
-        chain->kc[n] = kc_n;
-        chain_level(p, n, &kc_n, &m_n, &chain->root[n], &chain->one_plus[n]);
+    p->m1 = m1;
+    /* K in double-double from the same levels (landen_K): the exact complementary modulus of
+     * level n is kappa_n = kc_n + tail_n, the tail carried to first order beside the double
+     * chain, and K = K(m_N) / prod_{n < N} (1 + kappa_n)/2. kappa_{n+1} = 2 sqrt(kappa_n) /
+     * (1 + kappa_n) to first order in the tails and in the rounding errors of level n, each
+     * exact: e_h = (1 + kc_n) - one_plus (Fast2Sum), e_s = kc_n - root^2 and
+     * e_q = 2 root - kc_{n+1} one_plus (the residuals of a correctly rounded root and quotient
+     * are doubles; two-products, Sterbenz):
+     *   tail_{n+1} = (root e_q + (e_s + tail_n) - root kc_{n+1} (e_h + tail_n)) / (root one_plus),
+     * what is left out of the order of tail^2 / kc_n, ~2^-106 relative. */
+    double tail = kc_lo;
+    DoubleDouble mean = dd_of(1.0);   /* prod_{i < n} (1 + kappa_i)/2: the AGM's a_n for a_0 = 1 */
+    double mean_error = 0.0;          /* ... less mean: what its double-double has rounded off */
+    for (int n = 0; n < p->levels; ++n) {
+        const double kc_n = chain->kc[n], root = chain->root[n], one_plus = chain->one_plus[n];
+        const double kc_next = chain->kc[n + 1];
+        const double e_h = kc_n - (one_plus - 1.0);
+        const DoubleDouble root_sq = dd_two_prod(root, root);
+        const double e_s = (kc_n - root_sq.hi) - root_sq.lo;
+        const DoubleDouble product = dd_two_prod(kc_next, one_plus);
+        const double e_q = (2.0 * root - product.hi) - product.lo;
+        const double tail_h = e_h + tail;   /* 1 + kappa_n = one_plus + tail_h */
+        mean_times(&mean, &mean_error, 0.5 * one_plus, 0.5 * tail_h);
+        tail = ((root * e_q + (e_s + tail)) - root * kc_next * tail_h) / (root * one_plus);
     }
-    chain->kc[n] = kc_n;
-    chain_end(p, n, m_n);
-}
-
-#ifdef PENDULUM_DD_AVX
-#include "elliptic_avx.h"
-#endif
-
-void elliptic_param_begin_many(int lanes, EllipticParam *const *p, const double *m, const double *kc,
-                               EllipticChains *chains)
-{
-#ifdef PENDULUM_DD_AVX
-    for (int first = 0; first < lanes; first += AVX_LANES) {
-        const int count = lanes - first < AVX_LANES ? lanes - first : AVX_LANES;
-        chains_begin_avx(count, p + first, m + first, kc + first, chains, first);
-    }
-#else
-    double kc_n[ELLIPTIC_LANES], m_n[ELLIPTIC_LANES];
-    int going[ELLIPTIC_LANES];
-    for (int l = 0; l < lanes; ++l) {
-        chain_start(p[l], m[l], kc[l]);
-        kc_n[l] = kc[l];
-        m_n[l] = m[l];
-        going[l] = 1;
-    }
-    /* level by level, every lane still going: the lanes' roots and quotients overlap */
-    for (int n = 0, left = lanes; left > 0; ++n) {
-        for (int l = 0; l < lanes; ++l) {
-            if (!going[l]) {
-                continue;
-            }
-            chains->kc[n][l] = kc_n[l];
-            if (chain_goes_on(n, m_n[l])) {
-                chain_level(p[l], n, &kc_n[l], &m_n[l], &chains->root[n][l], &chains->one_plus[n][l]);
-            } else {
-                chain_end(p[l], n, m_n[l]);
-                going[l] = 0;
-                --left;
-            }
-        }
-    }
-#endif
-}
-
-/* elliptic_param_finish's running values: the tail of kappa_n and the mean. */
-typedef struct {
-    double tail;
-    DoubleDouble mean;   /* prod_{i < n} (1 + kappa_i)/2: the AGM's a_n for a_0 = 1 */
-    double mean_error;   /* ... less mean: what its double-double has rounded off */
-} ChainTail;
-
-/* K in double-double from the same levels (landen_K): the exact complementary modulus of
- * level n is kappa_n = kc_n + tail_n, the tail carried to first order beside the double
- * chain, and K = K(m_N) / prod_{n < N} (1 + kappa_n)/2. kappa_{n+1} = 2 sqrt(kappa_n) /
- * (1 + kappa_n) to first order in the tails and in the rounding errors of level n, each
- * exact: e_h = (1 + kc_n) - one_plus (Fast2Sum), e_s = kc_n - root^2 and
- * e_q = 2 root - kc_{n+1} one_plus (the residuals of a correctly rounded root and quotient
- * are doubles; two-products, Sterbenz):
- *   tail_{n+1} = (root e_q + (e_s + tail_n) - root kc_{n+1} (e_h + tail_n)) / (root one_plus),
- * what is left out of the order of tail^2 / kc_n, ~2^-106 relative. */
-static inline void tail_level(double kc_n, double root, double one_plus, double kc_next, ChainTail *t)
-{
-    const double e_h = kc_n - (one_plus - 1.0);
-    const DoubleDouble root_sq = dd_two_prod(root, root);
-    const double e_s = (kc_n - root_sq.hi) - root_sq.lo;
-    const DoubleDouble product = dd_two_prod(kc_next, one_plus);
-    const double e_q = (2.0 * root - product.hi) - product.lo;
-    const double tail_h = e_h + t->tail;   /* 1 + kappa_n = one_plus + tail_h */
-    mean_times(&t->mean, &t->mean_error, 0.5 * one_plus, 0.5 * tail_h);
-    t->tail = ((root * e_q + (e_s + t->tail)) - root * kc_next * tail_h) / (root * one_plus);
-}
-
-/* K, 1/K and the bottom scale once the tails have run down the chain. */
-static inline void finish_K(EllipticParam *p, double kc_bottom, const ChainTail *t, DoubleDouble *inv_K)
-{
-    const DoubleDouble K = landen_K(t->mean, t->mean_error, kc_bottom, t->tail, inv_K);
+    const DoubleDouble K = landen_K(mean, mean_error, chain->kc[p->levels], tail, inv_K);
     p->K_hi = K.hi;
     p->K_lo = K.lo;
     p->inv_K = 1.0 / K.hi;   /* as before: the correctly rounded 1/K.hi */
@@ -323,52 +256,6 @@ static inline void finish_K(EllipticParam *p, double kc_bottom, const ChainTail 
     p->bottom_scale = dd_mul(K_bottom, *inv_K).hi;
 }
 
-static inline ChainTail tail_start(double kc_lo)
-{
-    const ChainTail t = {kc_lo, {1.0, 0.0}, 0.0};
-    return t;
-}
-
-void elliptic_param_finish(EllipticParam *p, const EllipticChain *chain, double m1, double kc_lo,
-                           DoubleDouble *inv_K)
-{
-    p->m1 = m1;
-    ChainTail t = tail_start(kc_lo);
-    for (int n = 0; n < p->levels; ++n) {
-        tail_level(chain->kc[n], chain->root[n], chain->one_plus[n], chain->kc[n + 1], &t);
-    }
-    finish_K(p, chain->kc[p->levels], &t, inv_K);
-}
-
-void elliptic_param_finish_many(int lanes, EllipticParam *const *p, const EllipticChains *chains, const double *m1,
-                                const double *kc_lo, DoubleDouble *inv_K)
-{
-#ifdef PENDULUM_DD_AVX
-    for (int first = 0; first < lanes; first += AVX_LANES) {
-        const int count = lanes - first < AVX_LANES ? lanes - first : AVX_LANES;
-        chains_finish_avx(count, p + first, chains, first, m1 + first, kc_lo + first, inv_K + first);
-    }
-#else
-    ChainTail t[ELLIPTIC_LANES];
-    int most = 0;
-    for (int l = 0; l < lanes; ++l) {
-        p[l]->m1 = m1[l];
-        t[l] = tail_start(kc_lo[l]);
-        most = p[l]->levels > most ? p[l]->levels : most;
-    }
-    for (int n = 0; n < most; ++n) {
-        for (int l = 0; l < lanes; ++l) {
-            if (n < p[l]->levels) {
-                tail_level(chains->kc[n][l], chains->root[n][l], chains->one_plus[n][l], chains->kc[n + 1][l], &t[l]);
-            }
-        }
-    }
-    for (int l = 0; l < lanes; ++l) {
-        finish_K(p[l], chains->kc[p[l]->levels][l], &t[l], &inv_K[l]);
-    }
-#endif
-}
-
 int elliptic_quarter_of(double n)
 {
     if (fabs(n) < 0x1p62) {
@@ -380,3 +267,7 @@ int elliptic_quarter_of(double n)
     double r = fmod(n, 4.0);
     return (int)(r < 0.0 ? r + 4.0 : r);
 }
+
+#ifdef PENDULUM_DD_AVX
+#include "elliptic_avx.h"   /* the same chain and K on four lanes, for exact.c's batched new states */
+#endif

@@ -116,20 +116,6 @@ void elliptic_param_begin(EllipticParam *p, double m, double kc, EllipticChain *
 void elliptic_param_finish(EllipticParam *p, const EllipticChain *chain, double m1, double kc_lo,
                            DoubleDouble *inv_K);
 
-/* The same two steps for lanes <= ELLIPTIC_LANES parameter sets p[l] at once, bit for bit
- * what elliptic_param_begin and _finish write for each: level by level over the lanes, so
- * that their chains of roots and quotients overlap (inv_K: one per lane). In the fma build
- * (exact_fma.c) four lanes to an AVX vector (elliptic_avx.h). */
-#define ELLIPTIC_LANES 8
-typedef struct {
-    double kc[ELLIPTIC_MAX_LEVELS + 1][ELLIPTIC_LANES];   /* [n][lane]: as EllipticChain's */
-    double root[ELLIPTIC_MAX_LEVELS][ELLIPTIC_LANES];
-    double one_plus[ELLIPTIC_MAX_LEVELS][ELLIPTIC_LANES];
-} EllipticChains;
-void elliptic_param_begin_many(int lanes, EllipticParam *const *p, const double *m, const double *kc,
-                               EllipticChains *chains);
-void elliptic_param_finish_many(int lanes, EllipticParam *const *p, const EllipticChains *chains, const double *m1,
-                                const double *kc_lo, DoubleDouble *inv_K);
 
 /* Above this |z| the bottom level calls libm's sin and cos, below it trig_sincos_small
  * (trig.h: their Maclaurin series to z^17 and z^16, no range reduction). */

@@ -1,79 +1,29 @@
-/* elliptic_avx.h: elliptic_param_begin_many and _finish_many four lanes to a vector, for the fma
- * build (exact_fma.c: GCC on x86-64, AVX and FMA enabled by its target pragma), included by
- * elliptic.c there alone.
+/* elliptic_avx.h: the Landen chain, K and 1/K of four parameters to an AVX vector, for the fma
+ * build's batched new states (exact.c: pendulum_exact_once_gl_many; exact_fma.c: GCC on
+ * x86-64, AVX and FMA enabled by its target pragma), included by elliptic.c there alone.
  *
- * Each lane runs the operations of chain_level, tail_level and finish_K in their order, on
- * GCC's vector type of four doubles (+, -, *, / elementwise, each IEEE-rounded as the scalar
- * operation), with the fma's two-product (fma(a, b, -p), exact: the same e) and the
- * correctly rounded vector square root: the same bits as the scalar code. Where the scalar
- * code branches, a lane computes both sides and keeps its own (blend); a lane whose chain has
- * ended is carried along with its values frozen. test_exact_setup compares every byte. */
+ * Each lane runs the operations of elliptic_param_begin and _finish (a level of the chain, a
+ * level of the tails with mean_times, landen_K, the bottom scale) in their order on GCC's
+ * vector of doubles (dd_avx.h: +, -, *, / elementwise, each IEEE-rounded as the scalar
+ * operation, the fma's two-product, the correctly rounded vector square root): the same bits
+ * as the scalar code. Where the scalar code
+ * branches, a lane computes both sides and keeps its own; a lane whose chain has ended is
+ * carried along with its values frozen. test_exact_batch compares every output. */
 #ifndef PENDULUM_ELLIPTIC_AVX_H
 #define PENDULUM_ELLIPTIC_AVX_H
 
 #include "dd_avx.h"
 
-/* The Landen chains of four lanes (chain_level, level by level): what EllipticChains and the
- * parameter sets hold, kept in vectors. A lane past its bottom carries its values frozen. */
+/* The Landen chains of four lanes, as the evaluation reads them: each level's factors (a
+ * lane's own up to its N, frozen values past it), N and m_N. */
 typedef struct {
-    V4 kc[ELLIPTIC_MAX_LEVELS + 1], root[ELLIPTIC_MAX_LEVELS], one_plus[ELLIPTIC_MAX_LEVELS];
     V4 landen_k[ELLIPTIC_MAX_LEVELS], landen_1pk[ELLIPTIC_MAX_LEVELS], landen_1mk[ELLIPTIC_MAX_LEVELS];
-    int level[AVX_LANES];   /* N of each lane */
-    int most;               /* the largest N */
-    V4 levels;              /* N as doubles */
-    V4 kc_bottom, bottom_m; /* k'_N and m_N */
+    V4 levels;    /* N as doubles */
+    int most;     /* the largest N */
+    V4 bottom_m;  /* m_N */
 } ChainsV4;
 
-/* 1 in bit l for every lane l of the mask */
-static inline int v4_bits(V4Mask mask)
-{
-    return _mm256_movemask_pd((__m256d)mask);
-}
-
-/* elliptic_param_begin's chain for four lanes (m, kc); the lanes from `lanes` on are carried
- * frozen at their start (their chain ends at once). */
-static inline void chains_begin_v4(int lanes, V4 m, V4 kc, ChainsV4 *c)
-{
-    V4 kc_n = kc, m_n = m, levels = v4_all(0.0);
-    V4Mask going;
-    for (int l = 0; l < AVX_LANES; ++l) {
-        going[l] = l < lanes ? -1 : 0;
-    }
-    int n = 0;
-    for (;; ++n) {
-        c->kc[n] = kc_n;   /* a lane's bottom k' (frozen past it) */
-        /* chain_goes_on: below the bottom, at least one level, at most ELLIPTIC_MAX_LEVELS */
-        const V4Mask goes = going & ((V4Mask)(m_n > BOTTOM_M) | (V4Mask)(v4_all((double)n) == 0.0))
-                            & (V4Mask)(v4_all((double)n) < (double)ELLIPTIC_MAX_LEVELS);
-        levels = v4_pick(going & ~goes, v4_all((double)n), levels);   /* ends here: N = n */
-        going = goes;
-        if (v4_bits(going) == 0) {
-            break;
-        }
-        /* chain_level on every lane */
-        const V4 one_plus_kc = 1.0 + kc_n, half = 0.5 * one_plus_kc;
-        const V4 root_kc = (V4)_mm256_sqrt_pd((__m256d)kc_n);
-        const V4 kc_next = root_kc / half;
-        const V4Mask small = (V4Mask)(kc_n < 0.5);   /* k_next by one quotient of either form */
-        const V4 k_next = v4_pick(small, 1.0 - kc_n, m_n) / v4_pick(small, one_plus_kc, one_plus_kc * one_plus_kc);
-        c->root[n] = root_kc;
-        c->one_plus[n] = one_plus_kc;
-        c->landen_k[n] = k_next;
-        c->landen_1pk[n] = 1.0 + k_next;
-        c->landen_1mk[n] = kc_n / half;
-        kc_n = v4_pick(going, kc_next, kc_n);
-        m_n = v4_pick(going, k_next * k_next, m_n);
-    }
-    c->most = n;
-    c->levels = levels;
-    for (int l = 0; l < AVX_LANES; ++l) {
-        c->level[l] = (int)levels[l];
-    }
-    c->kc_bottom = kc_n;
-    c->bottom_m = m_n;
-}
-
-/* elliptic_param_finish's running values (ChainTail) on four lanes */
+/* elliptic_param_finish's running values on four lanes: the tail, the mean and its error */
 typedef struct {
     V4 tail;
     V4Dd mean;
@@ -86,8 +36,8 @@ static inline TailsV4 tails_start_v4(V4 kc_lo)
     return t;
 }
 
-/* tail_level of level n, with mean_times(&mean, &mean_error, one_plus / 2, tail_h / 2), on the
- * lanes whose chain has that level (active); the others keep their values */
+/* elliptic_param_finish's level n, with mean_times(&mean, &mean_error, one_plus / 2,
+ * tail_h / 2), on the lanes whose chain has that level (active); the others keep their values */
 static inline void tails_level_v4(TailsV4 *t, V4Mask active, V4 kc_n, V4 root_n, V4 one_plus_n, V4 kc_next)
 {
     const V4 tail = t->tail;
@@ -111,7 +61,8 @@ static inline void tails_level_v4(TailsV4 *t, V4Mask active, V4 kc_n, V4 root_n,
     t->tail = v4_pick(active, next_tail, tail);
 }
 
-/* landen_K from the tails at the bottom (k'_N = kc_bottom), and finish_K's bottom scale */
+/* landen_K from the tails at the bottom (k'_N = kc_bottom), and elliptic_param_finish's
+ * bottom scale */
 static inline void tails_finish_v4(const TailsV4 *t, V4 kc_bottom, V4 bottom_m, V4Dd *K_out, V4Dd *inv_K,
                                    V4 *bottom_scale)
 {
@@ -142,21 +93,10 @@ static inline void tails_finish_v4(const TailsV4 *t, V4 kc_bottom, V4 bottom_m, 
     *bottom_scale = v4_dd_mul(K_bottom, *inv_K).hi;
 }
 
-/* elliptic_param_finish's K and 1/K and finish_K's bottom scale, from the chain's k', roots
- * and sums (kc, root, one_plus: level by level) and k' = kc + kc_lo. */
-static inline void chains_finish_v4(const V4 *kc, const V4 *root, const V4 *one_plus, const ChainsV4 *c, V4 kc_lo,
-                                    V4Dd *K, V4Dd *inv_K, V4 *bottom_scale)
-{
-    TailsV4 t = tails_start_v4(kc_lo);
-    for (int n = 0; n < c->most; ++n) {
-        tails_level_v4(&t, (V4Mask)(v4_all((double)n) < c->levels), kc[n], root[n], one_plus[n], kc[n + 1]);
-    }
-    tails_finish_v4(&t, c->kc_bottom, c->bottom_m, K, inv_K, bottom_scale);
-}
-
-/* chains_begin_v4 and chains_finish_v4 in one pass, for k' = kc + kc_lo known at the start:
- * each level's tail follows its level of the chain, so that the two chains of quotients
- * overlap (the same operations on each lane, in another order). */
+/* elliptic_param_begin and _finish on four lanes (m, kc, and k' = kc + kc_lo; the lanes from
+ * `lanes` on are carried frozen at their start) in one pass: each level's tail follows its
+ * level of the chain, so that the two chains of quotients overlap (the same operations on each
+ * lane, in another order). Writes the chain's levels to *c, K, 1/K and the bottom scale. */
 static inline void chains_with_K_v4(int lanes, V4 m, V4 kc, V4 kc_lo, ChainsV4 *c, V4Dd *K, V4Dd *inv_K,
                                     V4 *bottom_scale)
 {
@@ -168,19 +108,20 @@ static inline void chains_with_K_v4(int lanes, V4 m, V4 kc, V4 kc_lo, ChainsV4 *
     TailsV4 t = tails_start_v4(kc_lo);
     int n = 0;
     for (;; ++n) {
-        c->kc[n] = kc_n;
+        /* elliptic_param_begin's test: below the bottom, at least one level, at most 16 levels */
         const V4Mask goes = going & ((V4Mask)(m_n > BOTTOM_M) | (V4Mask)(v4_all((double)n) == 0.0))
                             & (V4Mask)(v4_all((double)n) < (double)ELLIPTIC_MAX_LEVELS);
-        levels = v4_pick(going & ~goes, v4_all((double)n), levels);
+        levels = v4_pick(going & ~goes, v4_all((double)n), levels);   /* ends here: N = n */
         going = goes;
         if (v4_bits(going) == 0) {
             break;
         }
+        /* elliptic_param_begin's level on every lane, then elliptic_param_finish's */
         const V4 kc_level = kc_n;
         const V4 one_plus_kc = 1.0 + kc_n, half = 0.5 * one_plus_kc;
         const V4 root_kc = (V4)_mm256_sqrt_pd((__m256d)kc_n);
         const V4 kc_next = root_kc / half;
-        const V4Mask small = (V4Mask)(kc_n < 0.5);
+        const V4Mask small = (V4Mask)(kc_n < 0.5);   /* k_next by one quotient of either form */
         const V4 k_next = v4_pick(small, 1.0 - kc_n, m_n) / v4_pick(small, one_plus_kc, one_plus_kc * one_plus_kc);
         c->landen_k[n] = k_next;
         c->landen_1pk[n] = 1.0 + k_next;
@@ -191,80 +132,8 @@ static inline void chains_with_K_v4(int lanes, V4 m, V4 kc, V4 kc_lo, ChainsV4 *
     }
     c->most = n;
     c->levels = levels;
-    for (int l = 0; l < AVX_LANES; ++l) {
-        c->level[l] = (int)levels[l];
-    }
-    c->kc_bottom = kc_n;
     c->bottom_m = m_n;
     tails_finish_v4(&t, kc_n, m_n, K, inv_K, bottom_scale);
-}
-
-/* elliptic_param_begin for lanes <= 4 parameter sets (p[l], m[l], kc[l]), their chains in
- * chains' lanes first .. first + 3 (first + 4 <= ELLIPTIC_LANES). */
-static void chains_begin_avx(int lanes, EllipticParam *const *p, const double *m, const double *kc,
-                             EllipticChains *chains, int first)
-{
-    V4 m_v, kc_v;
-    for (int l = 0; l < AVX_LANES; ++l) {
-        m_v[l] = m[l < lanes ? l : 0];
-        kc_v[l] = kc[l < lanes ? l : 0];
-    }
-    ChainsV4 c;
-    chains_begin_v4(lanes, m_v, kc_v, &c);
-    for (int n = 0; n <= c.most; ++n) {
-        v4_store(&chains->kc[n][first], c.kc[n]);
-        if (n < c.most) {
-            v4_store(&chains->root[n][first], c.root[n]);
-            v4_store(&chains->one_plus[n][first], c.one_plus[n]);
-        }
-    }
-    for (int l = 0; l < lanes; ++l) {
-        chain_start(p[l], m[l], kc[l]);
-        for (int n = 0; n < c.level[l]; ++n) {
-            p[l]->landen_k[n] = c.landen_k[n][l];
-            p[l]->landen_1pk[n] = c.landen_1pk[n][l];
-            p[l]->landen_1mk[n] = c.landen_1mk[n][l];
-        }
-        chain_end(p[l], c.level[l], c.bottom_m[l]);
-    }
-}
-
-/* elliptic_param_finish for the lanes of chains_begin_avx */
-static void chains_finish_avx(int lanes, EllipticParam *const *p, const EllipticChains *chains, int first,
-                              const double *m1, const double *kc_lo, DoubleDouble *inv_K)
-{
-    ChainsV4 c;
-    V4 kc_lo_v;
-    c.most = 0;
-    for (int l = 0; l < AVX_LANES; ++l) {
-        const int from = l < lanes ? l : 0, n = p[from]->levels;
-        kc_lo_v[l] = kc_lo[from];
-        c.levels[l] = (double)n;
-        c.kc_bottom[l] = chains->kc[n][first + from];
-        c.bottom_m[l] = p[from]->bottom_m;
-        c.most = n > c.most ? n : c.most;
-    }
-    for (int n = 0; n <= c.most; ++n) {
-        c.kc[n] = v4_load(&chains->kc[n][first]);
-        if (n < c.most) {
-            c.root[n] = v4_load(&chains->root[n][first]);
-            c.one_plus[n] = v4_load(&chains->one_plus[n][first]);
-        }
-    }
-    V4Dd K, inverse;
-    V4 bottom_scale;
-    chains_finish_v4(c.kc, c.root, c.one_plus, &c, kc_lo_v, &K, &inverse, &bottom_scale);
-    for (int l = 0; l < lanes; ++l) {
-        p[l]->m1 = m1[l];
-        p[l]->K_hi = K.hi[l];
-        p[l]->K_lo = K.lo[l];
-        p[l]->inv_K = 1.0 / K.hi[l];
-        p[l]->K_head = dd_head26(K.hi[l]);
-        p[l]->K_tail = K.hi[l] - p[l]->K_head;
-        p[l]->bottom_scale = bottom_scale[l];
-        inv_K[l].hi = inverse.hi[l];
-        inv_K[l].lo = inverse.lo[l];
-    }
 }
 
 #endif

@@ -53,14 +53,8 @@ void pendulum_exact_eval_fma(const PendulumExact *ex, double t, double *theta, d
 void pendulum_exact_sin_cos_fma(const PendulumExact *ex, double t, double *sin_theta, double *cos_theta);
 void pendulum_exact_eval_many_fma(const PendulumExact *ex, size_t n, const double *t, double *theta,
                                   double *omega);
-void pendulum_exact_eval_states_fma(size_t n, const PendulumExact *ex, const double *t, double *theta,
-                                    double *omega);
 size_t pendulum_exact_once_gl_many_fma(size_t n, const double *theta0, const double *omega0, const double *g,
                                        const double *L, double t0, const double *t, double *theta, double *omega);
-void pendulum_exact_init_many_fma(size_t n, const double *theta0, const double *omega0, const double *w0,
-                                  double t0, PendulumExact *ex, int *status);
-void pendulum_exact_init_gl_many_fma(size_t n, const double *theta0, const double *omega0, const double *g,
-                                     const double *L, double t0, PendulumExact *ex, int *status);
 /* CPUID's fma flag, set by libgcc only where the operating system saves the AVX state */
 #define EXACT_FMA_HERE() __builtin_cpu_supports("fma")
 #endif
@@ -348,10 +342,9 @@ static void reduce_initial_angle(double theta0, InitialState *st, DdCosSin *trig
     st->th = th;
 }
 
-/* The end of step 1 from the double sin(th/2) and cos(th/2) in double-double. */
-static void settle_initial_angle(InitialState *st, double sin_half, DoubleDouble c)
+static void finish_initial_angle(InitialState *st, const DdCosSin *trig)
 {
-    DoubleDouble s = dd_of(sin_half);
+    DoubleDouble s = dd_of(trig->sin_x), c = dd_cos_sin_end(trig);
     if (c.hi < 0.0 || (c.hi == 0.0 && st->th.hi < 0.0)) {
         /* th just outside (-pi, pi]: move it by one turn; th/2 moves by pi, s and c change sign. */
         double shift = st->th.hi > 0.0 ? 1.0 : -1.0;
@@ -362,11 +355,6 @@ static void settle_initial_angle(InitialState *st, double sin_half, DoubleDouble
     }
     st->s = s;
     st->c = c;
-}
-
-static void finish_initial_angle(InitialState *st, const DdCosSin *trig)
-{
-    settle_initial_angle(st, trig->sin_x, dd_cos_sin_end(trig));
 }
 
 /* Step 2. The side of the separatrix. Only the ratio q = |omega0| / (2 w0) enters m and m1,
@@ -606,37 +594,21 @@ static void set_inputs(PendulumExact *e, double theta0, double omega0, DoubleDou
  * not underflow for |c| > 2^-500). The state is what the general path below writes (steps 2,
  * 3a and 4 for q = 0: m1 = c^2, u0 = +-K, x0 = +-1), but its Landen chain is started on c's
  * leading double before c's low part is formed (the chain of roots and quotients is the
- * set-up's longest), and the steps that only matter for a moving start are left out. In
- * three parts, so that several releases can run each part in lock-step
- * (init_from_rest_many): the state cleared and m = k^2 (then the chain starts on the leading
- * double of c), c in full (then the chain's K and 1/K), the fields. */
-static inline int from_rest_can(double omega0, const DdCosSin *trig)
-{
-    return omega0 == 0.0 && trig->cos_lead_certain && fabs(trig->cos_lead) > 0x1p-500;
-}
-
-static inline double from_rest_start(PendulumExact *e, const DdCosSin *trig, double *kc)
+ * set-up's longest), and the steps that only matter for a moving start are left out. */
+static void init_from_rest(PendulumExact *e, double theta0, double omega0, DoubleDouble w0, double t0, double g,
+                           double L, InitialState *st, const DdCosSin *trig)
 {
     clear_state(e);
-    const double k = fabs(trig->sin_x);
-    *kc = fabs(trig->cos_lead);
-    return smaller(k * k, 1.0);
-}
-
-static inline DoubleDouble from_rest_cosine(InitialState *st, double sin_half, DoubleDouble c)
-{
-    settle_initial_angle(st, sin_half, c);
-    return dd_mul(st->c, st->c);   /* m1 = c^2 */
-}
-
-static inline void from_rest_fields(PendulumExact *e, double theta0, double omega0, DoubleDouble w0, double t0,
-                                    double g, double L, const InitialState *st, const DdCosSin *trig,
-                                    double m1, DoubleDouble inv_K)
-{
     const double k = fabs(trig->sin_x), m = smaller(k * k, 1.0);
+    EllipticChain chain;
+    elliptic_param_begin(&e->ell, m, fabs(trig->cos_lead), &chain);
+    finish_initial_angle(st, trig);
+    const DoubleDouble c = st->c, m1 = dd_mul(c, c);
+    DoubleDouble inv_K;
+    elliptic_param_finish(&e->ell, &chain, m1.hi, c.lo, &inv_K);
     set_inputs(e, theta0, omega0, w0, t0, g, L, st);
     e->regime = PENDULUM_LIBRATION;
-    set_libration_scales(e, m, m1, k, w0);
+    set_libration_scales(e, m, m1.hi, k, w0);
     /* released at a turning point: u0 = +-K (at rest at the bottom, k = 0: theta = 0) */
     e->u0 = k == 0.0 ? 0.0 : (st->s.hi < 0.0 ? -e->K_hi : e->K_hi);
     /* step 4 for rate_n = w0 2^-exponent: the powers of two drop out of every product and
@@ -651,25 +623,17 @@ static inline void from_rest_fields(PendulumExact *e, double theta0, double omeg
     e->period = dd_div(four_K, w0).hi;
 }
 
-static void init_from_rest(PendulumExact *e, double theta0, double omega0, DoubleDouble w0, double t0, double g,
-                           double L, InitialState *st, const DdCosSin *trig)
+static int exact_init_dd(PendulumExact *e, double theta0, double omega0, DoubleDouble w0, double t0,
+                         double g, double L)
 {
-    double kc;
-    const double m = from_rest_start(e, trig, &kc);
-    EllipticChain chain;
-    elliptic_param_begin(&e->ell, m, kc, &chain);
-    const DoubleDouble m1 = from_rest_cosine(st, trig->sin_x, dd_cos_sin_end(trig));
-    DoubleDouble inv_K;
-    elliptic_param_finish(&e->ell, &chain, m1.hi, st->c.lo, &inv_K);
-    from_rest_fields(e, theta0, omega0, w0, t0, g, L, st, trig, m1.hi, inv_K);
-}
-
-/* Steps 2 to 4 for every state but the releases of init_from_rest, once the angle is reduced
- * (step 1, reduce_initial_angle). */
-static int init_reduced(PendulumExact *e, double theta0, double omega0, DoubleDouble w0, double t0, double g,
-                        double L, InitialState st, const DdCosSin *trig)
-{
-    finish_initial_angle(&st, trig);
+    InitialState st;
+    DdCosSin trig;
+    reduce_initial_angle(theta0, &st, &trig);
+    if (omega0 == 0.0 && trig.cos_lead_certain && fabs(trig.cos_lead) > 0x1p-500) {
+        init_from_rest(e, theta0, omega0, w0, t0, g, L, &st, &trig);
+        return 0;
+    }
+    finish_initial_angle(&st, &trig);
     locate_separatrix(theta0, omega0, w0, g, L, &st);
     const double side = st.fine ? st.m1_fine.hi : st.gap.hi;   /* the sign of m1 */
 
@@ -698,19 +662,6 @@ static int init_reduced(PendulumExact *e, double theta0, double omega0, DoubleDo
     }
     set_quarter_rates(e, rate_n, st.exponent, omega0 == 0.0, inv_K);
     return 0;
-}
-
-static int exact_init_dd(PendulumExact *e, double theta0, double omega0, DoubleDouble w0, double t0,
-                         double g, double L)
-{
-    InitialState st;
-    DdCosSin trig;
-    reduce_initial_angle(theta0, &st, &trig);
-    if (from_rest_can(omega0, &trig)) {
-        init_from_rest(e, theta0, omega0, w0, t0, g, L, &st, &trig);
-        return 0;
-    }
-    return init_reduced(e, theta0, omega0, w0, t0, g, L, st, &trig);
 }
 
 /* pendulum_exact_init's check of its inputs (but w0) */
@@ -772,162 +723,6 @@ int pendulum_exact_init_gl(PendulumExact *ex, double theta0, double omega0, doub
         return -1;
     }
     return exact_init_dd(ex, theta0, omega0, w0, t0, g, L);
-}
-
-/* ---------------------------------------------------------------------------------------
- * Many new states. A set-up is a few long chains of dependent operations (the cosine's
- * series, the Landen chain's roots and quotients, K's tails and quotients), so one state's
- * set-up leaves the processor waiting. The releases from rest of a block of up to
- * ELLIPTIC_LANES states run the parts of init_from_rest in lock-step, each part over the
- * block before the next (the Landen chain and K's tails level by level over the lanes:
- * elliptic_param_begin_many, _finish_many): the same operations on each state as
- * init_from_rest, in another order, so the same bytes. Every other state (moving, or a
- * cosine whose leading double is not certain) takes exact_init_dd's path alone.
- * --------------------------------------------------------------------------------------- */
-
-/* The inputs of one state of a block, checked. */
-typedef struct {
-    PendulumExact *e;
-    double theta0, omega0, g, L;
-    DoubleDouble w0;
-} NewState;
-
-static void init_block(int count, const NewState *in, double t0)
-{
-    /* step 1 for the releases with |theta0| <= 3.2, as reduce_initial_angle (no turn to
-     * subtract): sin and cos of theta0 / 2 (exact) begun over the block */
-    int near[ELLIPTIC_LANES], candidates = 0;
-    double half[ELLIPTIC_LANES];
-    for (int i = 0; i < count; ++i) {
-        if (in[i].omega0 == 0.0 && fabs(in[i].theta0) <= 3.2) {
-            near[candidates] = i;
-            half[candidates++] = 0.5 * in[i].theta0;
-        } else {
-            (void)exact_init_dd(in[i].e, in[i].theta0, in[i].omega0, in[i].w0, t0, in[i].g, in[i].L);
-        }
-    }
-    if (candidates == 0) {
-        return;
-    }
-    DdCosSin trig[ELLIPTIC_LANES];
-    dd_cos_sin_begin_many(candidates, half, trig);
-    InitialState st[ELLIPTIC_LANES];
-    int rest[ELLIPTIC_LANES];   /* the candidates init_from_rest takes, in order */
-    int lanes = 0;
-    for (int j = 0; j < candidates; ++j) {
-        const NewState *s = &in[near[j]];
-        st[j].turns = 0.0;
-        st[j].th = dd_of(s->theta0);
-        if (from_rest_can(s->omega0, &trig[j])) {
-            trig[lanes] = trig[j];   /* compacted: lane l's trig at l (lanes <= j) */
-            rest[lanes++] = j;
-        } else {
-            /* a libration, rotation or the separatrix: cannot fail here */
-            (void)init_reduced(s->e, s->theta0, s->omega0, s->w0, t0, s->g, s->L, st[j], &trig[j]);
-        }
-    }
-    if (lanes == 0) {
-        return;
-    }
-    /* init_from_rest's three parts, each over the lanes */
-    EllipticParam *ell[ELLIPTIC_LANES];
-    EllipticChains chains;
-    double m[ELLIPTIC_LANES], kc[ELLIPTIC_LANES], m1[ELLIPTIC_LANES], kc_lo[ELLIPTIC_LANES];
-    DoubleDouble c[ELLIPTIC_LANES], inv_K[ELLIPTIC_LANES];
-    for (int l = 0; l < lanes; ++l) {
-        m[l] = from_rest_start(in[near[rest[l]]].e, &trig[l], &kc[l]);
-        ell[l] = &in[near[rest[l]]].e->ell;
-    }
-    elliptic_param_begin_many(lanes, ell, m, kc, &chains);
-    dd_cos_sin_end_many(lanes, trig, c);
-    for (int l = 0; l < lanes; ++l) {
-        InitialState *state = &st[rest[l]];
-        m1[l] = from_rest_cosine(state, trig[l].sin_x, c[l]).hi;
-        kc_lo[l] = state->c.lo;
-    }
-    elliptic_param_finish_many(lanes, ell, &chains, m1, kc_lo, inv_K);
-    for (int l = 0; l < lanes; ++l) {
-        const NewState *s = &in[near[rest[l]]];
-        from_rest_fields(s->e, s->theta0, s->omega0, s->w0, t0, s->g, s->L, &st[rest[l]], &trig[l], m1[l], inv_K[l]);
-    }
-}
-
-/* a and b the same double, bit for bit (+0 and -0 differ; NaN is no double of a set-up) */
-static int same_double(double a, double b)
-{
-    uint64_t x, y;
-    memcpy(&x, &a, sizeof x);
-    memcpy(&y, &b, sizeof y);
-    return x == y;
-}
-
-/* Gathers the accepted states into blocks for init_block; status[i] = 0 or -1 (refused). */
-static void init_many(size_t n, const double *theta0, const double *omega0, const double *w0, const double *g,
-                      const double *L, double t0, PendulumExact *ex, int *status)
-{
-    NewState block[ELLIPTIC_LANES];
-    int count = 0;
-    /* the last g and L accepted, and their w0: a sweep over initial states at one g and L
-     * forms its root once */
-    double last_g = NAN, last_L = NAN;
-    DoubleDouble last_w0 = {NAN, NAN};
-    for (size_t i = 0; i < n; ++i) {
-        NewState *s = &block[count];
-        int ok = inputs_finite(&ex[i], theta0[i], omega0[i], t0);
-        if (w0 != NULL) {
-            ok = ok && isfinite(w0[i]) && w0[i] > 0.0;
-            s->w0 = dd_of(w0[i]);
-            s->g = s->L = 0.0;
-        } else {
-            if (!(same_double(g[i], last_g) && same_double(L[i], last_L))) {
-                last_g = g[i];
-                last_L = L[i];
-                if (w0_of_gl(g[i], L[i], &last_w0) != 0) {
-                    last_w0.hi = NAN;   /* refused */
-                }
-            }
-            ok = ok && !isnan(last_w0.hi);
-            s->w0 = last_w0;
-            s->g = g[i];
-            s->L = L[i];
-        }
-        status[i] = ok ? 0 : -1;
-        if (!ok) {
-            continue;
-        }
-        s->e = &ex[i];
-        s->theta0 = theta0[i];
-        s->omega0 = omega0[i];
-        if (++count == ELLIPTIC_LANES) {
-            init_block(count, block, t0);
-            count = 0;
-        }
-    }
-    init_block(count, block, t0);
-}
-
-void pendulum_exact_init_many(size_t n, const double *theta0, const double *omega0, const double *w0, double t0,
-                              PendulumExact *ex, int *status)
-{
-#ifdef EXACT_HANDS_ON_TO_FMA
-    if (EXACT_FMA_HERE()) {
-        pendulum_exact_init_many_fma(n, theta0, omega0, w0, t0, ex, status);
-        return;
-    }
-#endif
-    init_many(n, theta0, omega0, w0, NULL, NULL, t0, ex, status);
-}
-
-void pendulum_exact_init_gl_many(size_t n, const double *theta0, const double *omega0, const double *g,
-                                 const double *L, double t0, PendulumExact *ex, int *status)
-{
-#ifdef EXACT_HANDS_ON_TO_FMA
-    if (EXACT_FMA_HERE()) {
-        pendulum_exact_init_gl_many_fma(n, theta0, omega0, g, L, t0, ex, status);
-        return;
-    }
-#endif
-    init_many(n, theta0, omega0, NULL, g, L, t0, ex, status);
 }
 
 int pendulum_exact_same(const PendulumExact *ex)
@@ -1408,33 +1203,16 @@ void pendulum_exact_eval_many(const PendulumExact *ex, size_t n, const double *t
 #include "exact_avx.h"
 #endif
 
-void pendulum_exact_eval_states(size_t n, const PendulumExact *ex, const double *t, double *theta, double *omega)
-{
-#ifdef EXACT_HANDS_ON_TO_FMA
-    if (EXACT_FMA_HERE()) {
-        pendulum_exact_eval_states_fma(n, ex, t, theta, omega);
-        return;
-    }
-#endif
-    size_t i = 0;
 #ifdef PENDULUM_DD_AVX
-    /* four states at a time; a lane off the common case by the scalar evaluation */
-    for (; i < n; i += AVX_LANES) {
-        const int lanes = n - i < AVX_LANES ? (int)(n - i) : AVX_LANES;
-        const int done = eval_states_avx(lanes, ex + i, t + i, theta + i, omega + i);
-        for (int l = 0; l < lanes; ++l) {
-            if (!(done & (1 << l))) {
-                pendulum_exact_eval(&ex[i + l], t[i + l], &theta[i + l], &omega[i + l]);
-            }
-        }
-    }
-#endif
-    for (; i < n; ++i) {
-        pendulum_exact_eval(&ex[i], t[i], &theta[i], &omega[i]);
-    }
+/* a and b the same double, bit for bit (+0 and -0 differ; NaN is no double of a set-up) */
+static int same_double(double a, double b)
+{
+    uint64_t x, y;
+    memcpy(&x, &a, sizeof x);
+    memcpy(&y, &b, sizeof y);
+    return x == y;
 }
 
-#ifdef PENDULUM_DD_AVX
 /* Up to four releases from rest (omega0 = 0, |theta0| <= 3.2, w0 accepted) set up at t0 and
  * evaluated once each at t[l], all in vectors: init_from_rest's operations (the cosine begun,
  * the chain, the cosine ended, K, the rates) and eval_libration's, without a set-up written.

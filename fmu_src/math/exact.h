@@ -67,16 +67,6 @@ int pendulum_exact_init(PendulumExact *ex, double theta0, double omega0, double 
  * Returns -1 for a non-finite input, g or L <= 0, or g / L not a normal double's range. */
 int pendulum_exact_init_gl(PendulumExact *ex, double theta0, double omega0, double g, double L, double t0);
 
-/* For i < n: status[i] = pendulum_exact_init(&ex[i], theta0[i], omega0[i], w0[i], t0), and
- * ex[i] byte for byte that set-up (untouched where status[i] is -1): several releases from
- * rest set up in lock-step, faster per state than the loop. */
-void pendulum_exact_init_many(size_t n, const double *theta0, const double *omega0, const double *w0, double t0,
-                              PendulumExact *ex, int *status);
-
-/* The same for pendulum_exact_init_gl(&ex[i], theta0[i], omega0[i], g[i], L[i], t0). */
-void pendulum_exact_init_gl_many(size_t n, const double *theta0, const double *omega0, const double *g,
-                                 const double *L, double t0, PendulumExact *ex, int *status);
-
 /* 1 if *ex is exactly (bytewise) what pendulum_exact_init_gl sets up from its own recorded
  * inputs (theta0, omega0, g, L, t0), 0 otherwise (also for a solution set up from w0 by
  * pendulum_exact_init, which the FMU never makes): the check of a solution read from
@@ -108,12 +98,6 @@ void pendulum_exact_sin_cos(const PendulumExact *ex, double t, double *sin_theta
  * over pendulum_exact_eval). The arrays must not overlap. */
 void pendulum_exact_eval_many(const PendulumExact *ex, size_t n, const double *t, double *theta,
                               double *omega);
-
-/* theta[i], omega[i] = pendulum_exact_eval(&ex[i], t[i], ...) for i < n, bit for bit the same:
- * many states at one time each (after pendulum_exact_init_many), in the fma build four
- * librations at once. The arrays must not overlap. */
-void pendulum_exact_eval_states(size_t n, const PendulumExact *ex, const double *t, double *theta,
-                                double *omega);
 
 /* For i < n: theta[i], omega[i] of the solution pendulum_exact_init_gl(theta0[i], omega0[i],
  * g[i], L[i], t0) sets up, at t[i], bit for bit what that set-up and pendulum_exact_eval

@@ -1,14 +1,14 @@
-/* exact_avx.h: pendulum_exact_eval_states four states to an AVX vector, for the fma build
- * (exact_fma.c: GCC on x86-64), included by exact.c there alone.
+/* exact_avx.h: the evaluation of four librations to an AVX vector, for the fma build's batched
+ * new states (exact.c: pendulum_exact_once_gl_many; exact_fma.c: GCC on x86-64), included by
+ * exact.c there alone.
  *
- * Each lane runs eval_libration's operations in their order (phase_near with the fma,
- * trig_sincos_small, elliptic_landen_bottom, the plain Landen steps, libration_angle_omega
- * with elliptic_atan_unit) on its own state's constants, elementwise IEEE operations as the
- * scalar code's (dd_avx.h), so its theta and omega have the scalar bits; a lane whose state
- * has fewer Landen levels than another's keeps its values through the extra steps. A lane off
- * that common case (not a libration, whole turns in theta0 from 2^50 on, t == t0, a phase
- * beyond 2^50 quarter periods or not finite, a bottom argument past the series) is left to
- * the caller. test_exact_batch compares every output. */
+ * Each lane runs eval_libration's operations in their order (phase_near, trig_sincos_small,
+ * elliptic_landen_bottom, the Landen steps, libration_angle_omega with elliptic_atan_unit,
+ * add_half_turns) on its own state's constants, elementwise IEEE operations as the scalar
+ * code's (dd_avx.h), so its theta and omega have the scalar bits; a lane whose chain has fewer
+ * Landen levels than another's keeps its values through the extra steps. A lane off
+ * eval_libration's path (t == t0, a phase beyond 2^50 quarter periods or not finite, a bottom
+ * argument past the series) is left to the caller. test_exact_batch compares every output. */
 #ifndef PENDULUM_EXACT_AVX_H
 #define PENDULUM_EXACT_AVX_H
 
@@ -63,7 +63,7 @@ static inline void v4_landen_step(V4Mask step, V4Mask long_chain, V4 kk, V4 one_
     V4 up_S = one_plus_k * *S * *D, up_C = *C * *E;
     V4 up_E = one_minus_k * d2 + kk * *C * *C, up_D = d2 + kk * *S * *S;
     const V4Mask rescale = long_chain & (V4Mask)(up_D > ELLIPTIC_HOMOGENEOUS_RESCALE);
-    if (_mm256_movemask_pd((__m256d)rescale) != 0) {   /* only chains of more than 7 levels */
+    if (v4_bits(rescale) != 0) {   /* only chains of more than 7 levels */
         const V4 inv = 1.0 / up_D;
         up_S = v4_pick(rescale, up_S * inv, up_S);
         up_C = v4_pick(rescale, up_C * inv, up_C);
@@ -134,63 +134,6 @@ static inline V4Mask eval_libration_v4(const LibrationV4 *s, V4 tv, V4 *theta, V
     const V4 cn_num = even * C0 - odd * (s->kc * S0), den = even * D0 + odd * E0;
     *omega = 2.0 * (sign * s->omega_half * (cn_num / den));
     return (V4Mask)(v4_abs(x_hi) < 0x1p50) & (V4Mask)(z <= ELLIPTIC_SERIES_Z_MAX) & (V4Mask)(tv != s->t0);
-}
-
-/* Up to four states ex[l] at t[l] (l < lanes); returns the lanes done as bits (1 << l), their
- * theta[l] and omega[l] written; the others untouched (the scalar evaluation's). */
-static int eval_states_avx(int lanes, const PendulumExact *ex, const double *t, double *theta, double *omega)
-{
-    LibrationV4 s;
-    V4 tv;
-    int common[AVX_LANES];
-    s.most = 0;
-    for (int l = 0; l < AVX_LANES; ++l) {
-        const int from = l < lanes ? l : 0;
-        const PendulumExact *e = &ex[from];
-        tv[l] = t[from];
-        s.t0[l] = e->t0;
-        s.rho_hi[l] = e->rho_hi;
-        s.rho_lo[l] = e->rho_lo;
-        s.x0_hi[l] = e->x0_hi;
-        s.x0_lo[l] = e->x0_lo;
-        s.K_hi[l] = e->K_hi;
-        s.bottom_scale[l] = e->ell.bottom_scale;
-        s.bottom_m[l] = e->ell.bottom_m;
-        s.sqrt_k1[l] = e->sqrt_k1;
-        s.kc[l] = e->kc;
-        s.omega_half[l] = e->omega_half;
-        s.theta_turns[l] = e->theta_turns;
-        common[l] = l < lanes && e->regime == PENDULUM_LIBRATION && fabs(e->theta_turns) < 0x1p50;
-        s.levels[l] = common[l] ? (double)e->ell.levels : 1.0;
-        s.most = common[l] && e->ell.levels > s.most ? e->ell.levels : s.most;
-    }
-    if (s.most == 0) {
-        return 0;
-    }
-    V4 landen_k[ELLIPTIC_MAX_LEVELS], landen_1pk[ELLIPTIC_MAX_LEVELS], landen_1mk[ELLIPTIC_MAX_LEVELS];
-    for (int i = 0; i < s.most; ++i) {
-        for (int l = 0; l < AVX_LANES; ++l) {
-            const EllipticParam *p = &ex[l < lanes ? l : 0].ell;
-            const int at = i < p->levels ? i : 0;
-            landen_k[i][l] = p->landen_k[at];
-            landen_1pk[i][l] = p->landen_1pk[at];
-            landen_1mk[i][l] = p->landen_1mk[at];
-        }
-    }
-    s.landen_k = landen_k;
-    s.landen_1pk = landen_1pk;
-    s.landen_1mk = landen_1mk;
-    V4 angle, om;
-    const V4Mask path = eval_libration_v4(&s, tv, &angle, &om);
-    int done = 0;
-    for (int l = 0; l < lanes; ++l) {
-        if (common[l] && path[l]) {
-            theta[l] = angle[l];
-            omega[l] = om[l];
-            done |= 1 << l;
-        }
-    }
-    return done;
 }
 
 #endif

@@ -12,7 +12,9 @@
  *          angles around the amplitude (theta0 (1 + 1e-9 j)), each evaluated once at one of
  *          the times;
  *   gsl_init  the same new states with GSL: k = sin(theta0/2), K by gsl_sf_ellint_Kcomp_e,
- *          then gsl_sf_elljac_e(w0 t + K, k^2) and the two outputs as for gsl (only with GSL).
+ *          then gsl_sf_elljac_e(w0 t + K, k^2) and the two outputs as for gsl (only with GSL);
+ *   once   the same new states and times through pendulum_exact_once_gl_many (g = L = 1), 64
+ *          a call: set up and evaluated in blocks, as pendulum_fmu.exact does them.
  * Times are processor time of the process (clock()), so that waiting for a core on a shared
  * machine does not count. The kinds are timed in interleaved rounds (ROUNDS rounds, each timing every kind and
  * amplitude once), so that a change of machine load hits all of them alike; each figure is
@@ -21,7 +23,7 @@
  *   bench_exact amplitude_deg=90 n=200000 rounds=7 ns_per_eval=... eval_median=...
  *     batch_best=... batch_median=... gsl_best=... gsl_median=... init_best=... init_median=...
  *     gsl_init_best=... gsl_init_median=... gsl_over_eval=... eval_over_batch=...
- *     gsl_init_over_init=... instructions: see docs/speed-exact.md
+ *     gsl_init_over_init=... once_best=... init_over_once=... instructions: see docs/speed-exact.md
  * (gsl_* are "nan" without GSL). ns_per_eval is the best eval time (the field older parsers
  * read). The checksum keeps the compiler from dropping the work.
  *
@@ -44,11 +46,11 @@
 #endif
 
 #define ROUNDS 7
-#define KINDS 7
-enum { KIND_EVAL, KIND_BATCH, KIND_GSL, KIND_INIT, KIND_GSL_INIT, KIND_INIT_MANY, KIND_ONCE };
-static const char *const KIND_NAMES[KINDS] = {"eval", "batch", "gsl", "init", "gsl_init", "init_many", "once"};
+#define KINDS 6
+enum { KIND_EVAL, KIND_BATCH, KIND_GSL, KIND_INIT, KIND_GSL_INIT, KIND_ONCE };
+static const char *const KIND_NAMES[KINDS] = {"eval", "batch", "gsl", "init", "gsl_init", "once"};
 
-/* init_many sets up this many new states per call */
+/* once sets up and evaluates this many new states per call */
 #define MANY_BLOCK 64
 
 /* Processor time of this process (C clock(): CPU time on POSIX), not wall time: the machine
@@ -137,28 +139,6 @@ static double time_kind(int kind, Case *c)
         return NAN;
 #endif
     }
-    case KIND_INIT_MANY: {
-        static PendulumExact fresh[MANY_BLOCK];
-        double theta0[MANY_BLOCK], omega0[MANY_BLOCK], w0[MANY_BLOCK];
-        int status[MANY_BLOCK];
-        for (long first = 0; first < n; first += MANY_BLOCK) {
-            const long count = n - first < MANY_BLOCK ? n - first : MANY_BLOCK;
-            for (long j = 0; j < count; ++j) {
-                theta0[j] = c->theta0 * (1.0 + 1e-9 * (double)((first + j) & 1023));
-                omega0[j] = 0.0;
-                w0[j] = 1.0;
-            }
-            pendulum_exact_init_many((size_t)count, theta0, omega0, w0, 0.0, fresh, status);
-            pendulum_exact_eval_states((size_t)count, fresh, c->times + first, c->theta, c->omega);
-            for (long j = 0; j < count; ++j) {
-                if (status[j] != 0) {
-                    return NAN;
-                }
-                sum += c->theta[j] + c->omega[j];
-            }
-        }
-        break;
-    }
     case KIND_ONCE: {
         double theta0[MANY_BLOCK], zeros[MANY_BLOCK], ones[MANY_BLOCK];
         for (long first = 0; first < n; first += MANY_BLOCK) {
@@ -200,7 +180,7 @@ static double time_kind(int kind, Case *c)
 static int count_one(int argc, char **argv)
 {
     if (argc != 5) {
-        fprintf(stderr, "bench_exact: usage: bench_exact --count eval|batch|gsl|init|gsl_init|init_many|once N amplitude_deg\n");
+        fprintf(stderr, "bench_exact: usage: bench_exact --count eval|batch|gsl|init|gsl_init|once N amplitude_deg\n");
         return 2;
     }
     int kind = -1;
@@ -303,12 +283,11 @@ int main(int argc, char **argv)
             printf(" %s_best=%.3f %s_median=%.3f", KIND_NAMES[kind], best[kind], KIND_NAMES[kind], median[kind]);
         }
         printf(" gsl_over_eval=%.3f gsl_over_eval_median=%.3f eval_over_batch=%.3f eval_over_batch_median=%.3f"
-               " gsl_init_over_init=%.3f gsl_init_over_init_median=%.3f init_over_init_many=%.3f"
-               " init_over_init_many_median=%.3f init_over_once=%.3f init_over_once_median=%.3f checksum=%.17g\n",
+               " gsl_init_over_init=%.3f gsl_init_over_init_median=%.3f init_over_once=%.3f init_over_once_median=%.3f"
+               " checksum=%.17g\n",
                best[KIND_GSL] / best[KIND_EVAL], median[KIND_GSL] / median[KIND_EVAL],
                best[KIND_EVAL] / best[KIND_BATCH], median[KIND_EVAL] / median[KIND_BATCH],
                best[KIND_GSL_INIT] / best[KIND_INIT], median[KIND_GSL_INIT] / median[KIND_INIT],
-               best[KIND_INIT] / best[KIND_INIT_MANY], median[KIND_INIT] / median[KIND_INIT_MANY],
                best[KIND_INIT] / best[KIND_ONCE], median[KIND_INIT] / median[KIND_ONCE], cases[a].checksum);
         free((void *)cases[a].times);
         free(cases[a].theta);

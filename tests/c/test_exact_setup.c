@@ -8,11 +8,7 @@
  *    changes no byte of the set-up but the recorded g and L;
  *  - K and the rate in quarter periods agree to double-double accuracy: rho K = the rate of the
  *    elliptic argument (w0, or sqrt(m) w0 in rotation) within 1e-30 relative, and the period
- *    is 4 K / w0 (2 K / rate in rotation) rounded to nearest;
- *  - pendulum_exact_init_many and _init_gl_many (releases from rest set up in lock-step) write
- *    every state byte for byte as pendulum_exact_init and _init_gl do, with the same statuses,
- *    and leave a refused state's bytes untouched: arrays of 1 to 40 states, mostly releases
- *    from rest mixed with every other kind and with refused inputs.
+ *    is 4 K / w0 (2 K / rate in rotation) rounded to nearest.
  * Over random states of every regime (seeded). Prints one summary line; exit status 0 iff
  * every check passed. */
 #include <math.h>
@@ -60,112 +56,8 @@ static void dd_product(double a_hi, double a_lo, double b_hi, double b_lo, doubl
     *lo = e - (*hi - p);
 }
 
-/* Refused inputs for pendulum_exact_init_many and _init_gl_many: a non-finite angle, speed or
- * w0, and w0, g or L not > 0 or not finite. */
-static void spoil(long i, double *theta0, double *omega0, double *w0, double *g, double *L)
-{
-    switch (i % 6) {
-    case 0: *theta0 = NAN; break;
-    case 1: *omega0 = INFINITY; break;
-    case 2: *w0 = 0.0; *g = -1.0; break;
-    case 3: *w0 = INFINITY; *L = 0.0; break;
-    case 4: *g = INFINITY; *w0 = NAN; break;
-    default: *L = NAN; *w0 = -2.0; break;
-    }
-}
-
-#define MANY 40
-
-/* The states of pendulum_exact_init_many and _init_gl_many against the scalar set-ups. */
-static void check_many(void)
-{
-    long same = 0, compared = 0, refused = 0;
-    for (long round = 0; round < 3000; ++round) {
-        const long n = 1 + (long)(uniform() * MANY);
-        double theta0[MANY], omega0[MANY], w0[MANY], g[MANY], L[MANY];
-        const double t0 = uniform() < 0.5 ? 0.0 : 10.0 * (2.0 * uniform() - 1.0);
-        for (long i = 0; i < n; ++i) {
-            g[i] = exp(log(1e-2) + uniform() * log(1e5));
-            L[i] = exp(log(1e-2) + uniform() * log(1e4));
-            if (i > 0 && uniform() < 0.5) {   /* a run at one g and L, as a sweep has */
-                g[i] = g[i - 1];
-                L[i] = L[i - 1];
-            }
-            w0[i] = sqrt(g[i] / L[i]);
-            const double kind = uniform();   /* mostly releases from rest (kinds 0 to 3) */
-            draw_state(kind < 0.8 ? (long)(uniform() * 4) : (long)(uniform() * 8), w0[i], &theta0[i], &omega0[i]);
-            if (kind > 0.97) {
-                spoil(round + i, &theta0[i], &omega0[i], &w0[i], &g[i], &L[i]);
-            }
-        }
-        for (int gl = 0; gl < 2; ++gl) {
-            PendulumExact many[MANY], one[MANY];
-            int status[MANY];
-            memset(many, 0xA5, sizeof many);
-            memset(one, 0xA5, sizeof one);
-            if (gl) {
-                pendulum_exact_init_gl_many((size_t)n, theta0, omega0, g, L, t0, many, status);
-            } else {
-                pendulum_exact_init_many((size_t)n, theta0, omega0, w0, t0, many, status);
-            }
-            for (long i = 0; i < n; ++i) {
-                const int expected = gl ? pendulum_exact_init_gl(&one[i], theta0[i], omega0[i], g[i], L[i], t0)
-                                        : pendulum_exact_init(&one[i], theta0[i], omega0[i], w0[i], t0);
-                compared++;
-                refused += expected != 0;
-                const int ok = status[i] == expected && memcmp(&many[i], &one[i], sizeof one[i]) == 0;
-                same += ok;
-                if (!ok) {
-                    check(0, "init%s_many: state %ld of %ld (theta0 = %.17g, omega0 = %.17g) differs", gl ? "_gl" : "",
-                          i, n, theta0[i], omega0[i]);
-                }
-            }
-        }
-    }
-    /* releases from the edges of the set-up's cases: theta0 / 2 on the table's points i/64 and
-     * half-way between them (ties of the nearest point), next to the quadrant's bound pi/4,
-     * signed zeros, tiny, pi and beyond */
-    double edge[200];
-    int edges = 0;
-    for (int i = 0; i <= 50; ++i) {
-        edge[edges++] = i / 32.0;
-        edge[edges++] = -(i + 0.5) / 32.0;
-        edge[edges++] = nextafter((i + 0.5) / 32.0, 0.0);
-    }
-    const double quarter = 0.5 * 3.141592653589793;   /* theta0 / 2 = pi/4 (the double) */
-    const double special[] = {quarter, nextafter(quarter, 0.0), nextafter(quarter, 4.0), -quarter, 0.0, -0.0,
-                              0x1p-1000, -0x1p-30, 3.141592653589793, -3.141592653589793, 3.2, -3.15};
-    for (size_t i = 0; i < sizeof special / sizeof special[0]; ++i) {
-        edge[edges++] = special[i];
-    }
-    for (int start = 0; start < edges; start += 7) {
-        const int n = edges - start < 7 ? edges - start : 7;
-        double omega0[7] = {0.0}, g[7], L[7];
-        PendulumExact many[7], one;
-        int status[7];
-        for (int i = 0; i < n; ++i) {
-            g[i] = 9.81;
-            L[i] = 1.0 + i;
-        }
-        pendulum_exact_init_gl_many((size_t)n, edge + start, omega0, g, L, 0.0, many, status);
-        for (int i = 0; i < n; ++i) {
-            const int expected = pendulum_exact_init_gl(&one, edge[start + i], 0.0, g[i], L[i], 0.0);
-            compared++;
-            const int ok = status[i] == expected && memcmp(&many[i], &one, sizeof one) == 0;
-            same += ok;
-            if (!ok) {
-                check(0, "init_gl_many: release from %a differs", edge[start + i]);
-            }
-        }
-    }
-    check(same == compared, "init_many, init_gl_many: %ld of %ld states the scalar set-ups' bytes", same, compared);
-    check(refused > 1000 && compared - refused > 100000, "init_many: %ld states refused, %ld set up", refused,
-          compared - refused);
-}
-
 int main(void)
 {
-    check_many();
     long written = 0, scaled = 0, agree = 0, periods = 0, states = 0;
     for (long i = 0; i < 40000; ++i) {
         const double g = exp(log(1e-2) + uniform() * log(1e5)), L = exp(log(1e-2) + uniform() * log(1e4));
