@@ -162,6 +162,36 @@ static void check_once(void)
         }
         wrong_counts += refused != expected_refused;
     }
+    /* releases from the edges of the set-up's cases: theta0 / 2 on the table's points i/64 and
+     * half-way between them (ties of the nearest point), next to the quadrant's bound pi/4,
+     * signed zeros, tiny, pi and just past it */
+    double edge[200];
+    int edges = 0;
+    for (int i = 0; i <= 50; ++i) {
+        edge[edges++] = i / 32.0;
+        edge[edges++] = -(i + 0.5) / 32.0;
+        edge[edges++] = nextafter((i + 0.5) / 32.0, 0.0);
+    }
+    const double quarter = 0.5 * PI;   /* theta0 / 2 = pi/4 (the double) */
+    const double special[] = {quarter, nextafter(quarter, 0.0), nextafter(quarter, 4.0), -quarter, 0.0, -0.0,
+                              0x1p-1000, -0x1p-30, PI, -PI, nextafter(PI, 4.0), 3.2, -3.15};
+    for (size_t i = 0; i < sizeof special / sizeof special[0]; ++i) {
+        edge[edges++] = special[i];
+    }
+    for (int i = 0; i < edges; ++i) {
+        double zero = 0.0, g = 9.81, L = 0.5 + i, t = (i % 2 ? 1e8 : 0.37) * i + 0.1, theta, omega, th, om;
+        const size_t refused = pendulum_exact_once_gl_many(1, &edge[i], &zero, &g, &L, 0.0, &t, &theta, &omega);
+        PendulumExact ex;
+        check(pendulum_exact_init_gl(&ex, edge[i], 0.0, g, L, 0.0) == 0 && refused == 0, "edge %a refused", edge[i]);
+        pendulum_exact_eval(&ex, t, &th, &om);
+        points++;
+        if (!same_bits(th, theta) || !same_bits(om, omega)) {
+            if (differences++ == 0) {
+                check(0, "once: release from %a at t = %g: (%.17g, %.17g), scalar (%.17g, %.17g)", edge[i], t, theta,
+                      omega, th, om);
+            }
+        }
+    }
     check(differences == 0, "once_gl_many: %d of %d outputs differ from the set-up and evaluation", differences, points);
     check(wrong_counts == 0, "once_gl_many: %d arrays with a wrong count of refused elements", wrong_counts);
     check(refusals > 1000, "once_gl_many: %d refused inputs drawn", refusals);
