@@ -6,8 +6,9 @@
  * FMU and pendulum_exact_lib do, or pendulum_exact_init from w0); an evaluation is one argument
  * reduction and one sn/cn/dn call. The struct is plain data (no pointers), so an FMU can
  * copy and serialize it byte for byte. On a processor with an fma, init, init_gl, eval,
- * eval_many and sin_cos run a second build of the same sources that forms its exact
- * two-products with the fma (exact_fma.h): the same bits, fewer operations. */
+ * eval_many, once_gl_many and sin_cos run a second build of the same sources that forms its
+ * exact two-products with the fma (exact_fma.h): the same bits, fewer operations; its
+ * once_gl_many sets up and evaluates four new states at once in AVX vectors. */
 #ifndef PENDULUM_EXACT_H
 #define PENDULUM_EXACT_H
 

@@ -10,8 +10,8 @@
  *
  * exact_fma.c compiles dd.c, elliptic.c and exact.c again with the fma enabled (GCC's target
  * pragma) and PENDULUM_DD_FMA defined, their public functions renamed with the suffix _fma
- * (below). The baseline functions pendulum_exact_init, _init_gl, _eval, _eval_many and _sin_cos
- * hand the call to the _fma build when the processor has an fma (GCC's
+ * (below). The baseline functions pendulum_exact_init, _init_gl, _eval, _eval_many,
+ * _once_gl_many and _sin_cos hand the call to the _fma build when the processor has an fma (GCC's
  * __builtin_cpu_supports: CPUID, with the operating system's support of the AVX state). Only
  * for GCC on x86-64 Linux (the host build); every other compiler and platform builds the
  * baseline alone, and exact_fma.c is then empty. */
