@@ -258,13 +258,6 @@ typedef struct {
 void dd_cos_sin_begin(DoubleDouble x, DdCosSin *t);
 DoubleDouble dd_cos_sin_end(const DdCosSin *t);
 
-/* The fma build (exact_fma.c: GCC on x86-64) sets up batches of new states four lanes to an
- * AVX vector (dd_avx.h; dd.c's cos_sin_begin_v4 and _end_v4 are dd_cos_sin_begin and _end
- * there). */
-#if defined(PENDULUM_DD_FMA) && defined(__GNUC__) && defined(__x86_64__)
-#define PENDULUM_DD_AVX 1
-#endif
-
 /* sin x in double-double for |x| <= 2 pi by the table of dd_cos_sin (~2^-104 relative). */
 DoubleDouble dd_sin(DoubleDouble x);
 

@@ -267,7 +267,3 @@ int elliptic_quarter_of(double n)
     double r = fmod(n, 4.0);
     return (int)(r < 0.0 ? r + 4.0 : r);
 }
-
-#ifdef PENDULUM_DD_AVX
-#include "elliptic_avx.h"   /* the same chain and K on four lanes, for exact.c's batched new states */
-#endif

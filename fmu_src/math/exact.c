@@ -1199,95 +1199,11 @@ void pendulum_exact_eval_many(const PendulumExact *ex, size_t n, const double *t
     }
 }
 
-#ifdef PENDULUM_DD_AVX
-#include "exact_avx.h"
-#endif
-
-#ifdef PENDULUM_DD_AVX
-/* a and b the same double, bit for bit (+0 and -0 differ; NaN is no double of a set-up) */
-static int same_double(double a, double b)
-{
-    uint64_t x, y;
-    memcpy(&x, &a, sizeof x);
-    memcpy(&y, &b, sizeof y);
-    return x == y;
-}
-
-/* Up to four releases from rest (omega0 = 0, |theta0| <= 3.2, w0 accepted) set up at t0 and
- * evaluated once each at t[l], all in vectors: init_from_rest's operations (the cosine begun,
- * the chain, the cosine ended, K, the rates) and eval_libration's, without a set-up written.
- * Returns the lanes done as bits; the others (a cosine whose leading double is not certain or
- * within 2^-500 of 0, off eval_libration's path) are the caller's. */
-static int once_avx(int lanes, const double *theta0, const DoubleDouble *w0, double t0, const double *t,
-                    double *theta, double *omega)
-{
-    V4 th, w0_hi, w0_lo, tv;
-    for (int l = 0; l < AVX_LANES; ++l) {
-        const int from = l < lanes ? l : 0;
-        th[l] = theta0[from];
-        w0_hi[l] = w0[from].hi;
-        w0_lo[l] = w0[from].lo;
-        tv[l] = t[from];
-    }
-    CosSinV4 trig;
-    cos_sin_begin_v4(0.5 * th, &trig);   /* step 1: theta0 / 2 exact, no turn to subtract */
-    int eligible[AVX_LANES], any = -1;
-    for (int l = 0; l < AVX_LANES; ++l) {
-        eligible[l] = l < lanes && trig.certain[l] && fabs(trig.cos_lead[l]) > 0x1p-500;
-        any = eligible[l] && any < 0 ? l : any;
-    }
-    if (any < 0) {
-        return 0;
-    }
-    /* from_rest_start: m = k^2 (at most 1), k' = c's leading double; a lane not taken runs a
-     * copy of one taken */
-    const V4 k = v4_abs(trig.sin_x), k2 = k * k;
-    V4 m = v4_pick((V4Mask)(k2 < 1.0), k2, v4_all(1.0)), kc = v4_abs(trig.cos_lead);
-    for (int l = 0; l < AVX_LANES; ++l) {
-        m[l] = eligible[l] ? m[l] : m[any];
-        kc[l] = eligible[l] ? kc[l] : kc[any];
-    }
-    /* settle_initial_angle: c < 0 (theta0 just past pi) moves th by a turn, s and c change sign */
-    const V4Mask past = (V4Mask)(trig.cos_lead < 0.0);
-    const V4Dd cosine = cos_sin_end_v4(&trig);
-    const V4Dd c = v4_pick_dd(past, v4_dd_neg(cosine), cosine);
-    const V4 s_hi = v4_pick(past, -trig.sin_x, trig.sin_x);
-    /* the chain on c's leading double, K and 1/K from its tails with c's low part */
-    ChainsV4 chains;
-    V4Dd K, inv_K;
-    LibrationV4 s;
-    chains_with_K_v4(AVX_LANES, m, kc, c.lo, &chains, &K, &inv_K, &s.bottom_scale);
-    /* from_rest_fields */
-    const V4Dd rho = v4_dd_mul((V4Dd){w0_hi, w0_lo}, inv_K);
-    const V4 u0 = v4_pick((V4Mask)(k == 0.0), v4_all(0.0), v4_pick((V4Mask)(s_hi < 0.0), -K.hi, K.hi));
-    s.theta_turns = v4_pick(past, v4_pick((V4Mask)(th > 0.0), v4_all(1.0), v4_all(-1.0)), v4_all(0.0));
-    s.t0 = v4_all(t0);
-    s.rho_hi = rho.hi;
-    s.rho_lo = rho.lo;
-    s.x0_hi = v4_pick((V4Mask)(u0 < 0.0), v4_all(-1.0), v4_pick((V4Mask)(u0 > 0.0), v4_all(1.0), v4_all(0.0)));
-    s.x0_lo = v4_all(0.0);
-    s.K_hi = K.hi;
-    s.bottom_m = chains.bottom_m;
-    s.sqrt_k1 = k / (1.0 + kc);
-    s.kc = kc;
-    s.omega_half = k * w0_hi;
-    s.levels = chains.levels;
-    s.most = chains.most;
-    s.landen_k = chains.landen_k;
-    s.landen_1pk = chains.landen_1pk;
-    s.landen_1mk = chains.landen_1mk;
-    V4 angle, om;
-    const V4Mask path = eval_libration_v4(&s, tv, &angle, &om);
-    int done = 0;
-    for (int l = 0; l < lanes; ++l) {
-        if (eligible[l] && path[l]) {
-            theta[l] = angle[l];
-            omega[l] = om[l];
-            done |= 1 << l;
-        }
-    }
-    return done;
-}
+/* The fma build (GCC on x86-64, the fma and AVX enabled) sets up and evaluates four new states
+ * at once in AVX vectors (once_avx.h): the same bits as the loop below. */
+#if defined(PENDULUM_DD_FMA) && defined(__GNUC__) && defined(__x86_64__)
+#define EXACT_ONCE_AVX 1
+#include "once_avx.h"
 #endif
 
 size_t pendulum_exact_once_gl_many(size_t n, const double *theta0, const double *omega0, const double *g,
@@ -1299,7 +1215,7 @@ size_t pendulum_exact_once_gl_many(size_t n, const double *theta0, const double 
     }
 #endif
     size_t refused = 0;
-#ifdef PENDULUM_DD_AVX
+#ifdef EXACT_ONCE_AVX
     double last_g = NAN, last_L = NAN;   /* sqrt(g / L) formed once for a run of one g and L */
     DoubleDouble last_w0 = {NAN, NAN};
     int w0_ok = 0;
@@ -1307,7 +1223,7 @@ size_t pendulum_exact_once_gl_many(size_t n, const double *theta0, const double 
     for (size_t i = 0; i < n; i += 4) {
         const int lanes = n - i < 4 ? (int)(n - i) : 4;
         int done = 0;
-#ifdef PENDULUM_DD_AVX
+#ifdef EXACT_ONCE_AVX
         /* the releases from rest of these four elements, in vectors */
         double th[4], times[4], th_out[4], om_out[4];
         DoubleDouble w0[4];

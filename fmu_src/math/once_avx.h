@@ -1,0 +1,579 @@
+/* once_avx.h: four new states set up and evaluated once, in AVX vectors, for
+ * pendulum_exact_once_gl_many in the fma build (exact_fma.c: GCC on x86-64, AVX and FMA enabled
+ * by its target pragma). Included at the end of exact.c there alone: that build compiles dd.c,
+ * elliptic.c and exact.c as one translation unit, and this code reads their tables and
+ * constants (dd.c's TABLE_64 and series, elliptic.c's BOTTOM_M and pi's parts).
+ *
+ * Each lane runs the scalar code's operations in their order, on GCC's vector of four doubles:
+ * +, -, *, / elementwise, each IEEE-rounded as the scalar operation, the correctly rounded
+ * vector square root, and the two-products by the fma as the fma build's scalar ones. So a lane
+ * has the scalar bits: dd_cos_sin_begin and _end (the cosine of theta0/2 and the double sine),
+ * elliptic_param_begin and _finish (the Landen chain, K and 1/K), the fields of
+ * init_from_rest, and eval_libration with its Landen steps and whole turns. Where the scalar
+ * code branches on a value, each lane computes what it needs of both sides and keeps its own
+ * (v4_pick, a blend); the table's rows are read lane by lane; a lane whose Landen chain has
+ * ended is carried along with its values frozen. test_exact_batch compares every output with
+ * the scalar set-up and evaluation. */
+#ifndef PENDULUM_ONCE_AVX_H
+#define PENDULUM_ONCE_AVX_H
+
+#include <immintrin.h>
+
+/* --- double-double operations on four lanes ----------------------------------------------- */
+
+typedef double V4 __attribute__((vector_size(32)));
+typedef long long V4Mask __attribute__((vector_size(32)));
+
+/* lanes to a vector */
+#define AVX_LANES 4
+
+static inline V4 v4_all(double x)
+{
+    const V4 v = {x, x, x, x};
+    return v;
+}
+
+/* where[l] ? yes[l] : no[l] */
+static inline V4 v4_pick(V4Mask where, V4 yes, V4 no)
+{
+    return (V4)_mm256_blendv_pd((__m256d)no, (__m256d)yes, (__m256d)where);
+}
+
+/* 1 in bit l for every lane l of the mask */
+static inline int v4_bits(V4Mask mask)
+{
+    return _mm256_movemask_pd((__m256d)mask);
+}
+
+typedef struct {
+    V4 hi, lo;
+} V4Dd;
+
+static inline V4Dd v4_two_prod(V4 a, V4 b)
+{
+    V4Dd r;
+    r.hi = a * b;
+    r.lo = (V4)_mm256_fmadd_pd((__m256d)a, (__m256d)b, (__m256d)(-r.hi));
+    return r;
+}
+
+static inline V4Dd v4_two_sum(V4 a, V4 b)
+{
+    V4Dd r;
+    r.hi = a + b;
+    const V4 b_virtual = r.hi - a;
+    r.lo = (a - (r.hi - b_virtual)) + (b - b_virtual);
+    return r;
+}
+
+static inline V4Dd v4_fast_two_sum(V4 a, V4 b)
+{
+    V4Dd r;
+    r.hi = a + b;
+    r.lo = b - (r.hi - a);
+    return r;
+}
+
+static inline V4Dd v4_dd_mul(V4Dd x, V4Dd y)
+{
+    V4Dd p = v4_two_prod(x.hi, y.hi);
+    p.lo += x.hi * y.lo + x.lo * y.hi;
+    return v4_fast_two_sum(p.hi, p.lo);
+}
+
+static inline V4Dd v4_dd_div(V4Dd x, V4Dd y)
+{
+    const V4 q1 = x.hi / y.hi;
+    const V4Dd p = v4_two_prod(q1, y.hi);
+    const V4 remainder = (((x.hi - p.hi) - p.lo) + x.lo) - q1 * y.lo;
+    return v4_fast_two_sum(q1, remainder / y.hi);
+}
+
+static inline V4Dd v4_pick_dd(V4Mask where, V4Dd yes, V4Dd no)
+{
+    V4Dd r;
+    r.hi = v4_pick(where, yes.hi, no.hi);
+    r.lo = v4_pick(where, yes.lo, no.lo);
+    return r;
+}
+
+/* dd_add_smaller of dd.c */
+static inline V4Dd v4_add_smaller(V4Dd x, V4Dd y)
+{
+    V4Dd s = v4_fast_two_sum(x.hi, y.hi);
+    s.lo += x.lo + y.lo;
+    return v4_fast_two_sum(s.hi, s.lo);
+}
+
+static inline V4Dd v4_dd_neg(V4Dd x)
+{
+    x.hi = -x.hi;
+    x.lo = -x.lo;
+    return x;
+}
+
+static inline V4 v4_abs(V4 x)
+{
+    return (V4)_mm256_andnot_pd(_mm256_set1_pd(-0.0), (__m256d)x);
+}
+
+/* --- dd_cos_sin_begin and _end on four lanes (dd.c) -------------------------------------- */
+
+/* What cos_sin_begin_v4 knows of four arguments x (dd_cos_sin_begin's DdCosSin, lane by
+ * lane): y = x - n pi/2, n in {-1, 0, 1}, the double sin x, the table point
+ * (sign, r, C, S) and the leading double of cos x with its certificate. */
+typedef struct {
+    V4Dd y;
+    V4 n;
+    V4 sin_x;
+    V4 sign;
+    V4Dd r, C, S;
+    V4 cos_lead;
+    V4Mask certain;
+} CosSinV4;
+
+/* horner_double on four lanes */
+static inline V4 v4_horner_double(const DoubleDouble *coef, V4 z)
+{
+    V4 tail = v4_all(coef[13].hi);
+    for (int j = 12; j >= 0; --j) {
+        tail = coef[j].hi + z * tail;
+    }
+    return tail;
+}
+
+/* sin_versine_small on four lanes */
+static inline void v4_sin_versine_small(V4Dd r, V4Dd *w, V4Dd *v)
+{
+    V4Dd r2 = v4_two_prod(r.hi, r.hi);
+    r2.lo += 2.0 * r.hi * r.lo;
+    const V4 z = r2.hi;
+    const V4 p_rest = z * z * (-0x1.a01a01a01a01ap-13 + z * (0x1.71de3a556c734p-19 - z * 0x1.ae64567f544e4p-26));
+    const V4 q_rest = z * z * (0x1.a01a01a01a01ap-16 - z * 0x1.27e4fb7789f5cp-22);
+    const V4Dd p2 = v4_dd_mul(r2, (V4Dd){v4_all(INV_5F_HI), v4_all(INV_5F_LO)});
+    const V4Dd q2 = v4_dd_mul(r2, (V4Dd){v4_all(-INV_6F_HI), v4_all(-INV_6F_LO)});
+    V4Dd P = v4_fast_two_sum(v4_all(-INV_3F_HI), p2.hi), Q = v4_fast_two_sum(v4_all(INV_4F_HI), q2.hi);
+    P.lo += (-INV_3F_LO + p2.lo) + p_rest;
+    Q.lo += (INV_4F_LO + q2.lo) + q_rest;
+    *w = v4_add_smaller(r, v4_dd_mul(v4_dd_mul(r, r2), P));
+    *v = v4_add_smaller((V4Dd){0.5 * r2.hi, 0.5 * r2.lo}, v4_dd_neg(v4_dd_mul(v4_dd_mul(r2, r2), Q)));
+}
+
+/* dd_cos_sin_begin on four arguments x + 0, |x| < 2 (reduce_quadrant's first branch), into
+ * a CosSinV4 */
+static inline void cos_sin_begin_v4(V4 xh, CosSinV4 *out)
+{
+    /* reduce_quadrant: n in {-1, 0, 1}, y = x - n pi/2 (y = x for n = 0) */
+    const V4 n = v4_pick((V4Mask)(xh > 0.5 * HALF_PI_HI), v4_all(1.0), v4_all(0.0))
+                 - v4_pick((V4Mask)(xh < -0.5 * HALF_PI_HI), v4_all(1.0), v4_all(0.0));
+    const V4Mask zero = (V4Mask)(n == 0.0);
+    const V4 head = xh - n * HALF_PI_HI;
+    const V4Dd rest = v4_two_sum(v4_all(0.0), -n * HALF_PI_LO);
+    V4Dd y = v4_two_sum(head, rest.hi);
+    y.lo += rest.lo - n * HALF_PI_LOLO;
+    y = v4_fast_two_sum(y.hi, y.lo);
+    y = v4_pick_dd(zero, (V4Dd){xh, v4_all(0.0)}, y);
+    /* quadrant_of(n): 0, 1, or 3 for n = -1; odd for n != 0; flip = -1 for quadrant 1 */
+    const V4Mask odd = ~zero, flip_minus = (V4Mask)(n > 0.0);
+    /* the double sin x: the series in double of sincos_reduced */
+    const V4 z = v4_dd_mul(y, y).hi;
+    const V4 even_sum = y.hi + y.hi * z * v4_horner_double(SIN_COEF, z);
+    const V4 odd_sum = 1.0 + z * v4_horner_double(COS_COEF, z);
+    const V4 other = v4_pick(odd, odd_sum, even_sum);
+    const V4 sin_x = v4_pick((V4Mask)(n < 0.0), -other, other);
+    /* table_point */
+    const V4 sign = v4_pick((V4Mask)(y.hi < 0.0), v4_all(-1.0), v4_all(1.0));
+    const V4Dd u = {sign * y.hi, sign * y.lo};
+    const V4 scaled = u.hi * 64.0;
+    const V4 whole = (V4)_mm256_round_pd((__m256d)scaled, _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC);
+    const V4 index = whole + v4_pick((V4Mask)(scaled - whole >= 0.5), v4_all(1.0), v4_all(0.0));
+    V4Dd C, S;
+    for (int l = 0; l < AVX_LANES; ++l) {
+        const double *row = TABLE_64[(int)index[l]];
+        C.hi[l] = row[0];
+        C.lo[l] = row[1];
+        S.hi[l] = row[2];
+        S.lo[l] = row[3];
+    }
+    const V4Dd r = v4_two_sum(u.hi - index * 0.015625, u.lo);
+    /* table_leading */
+    const V4Dd R2 = v4_two_prod(r.hi, r.hi);
+    const V4 zr = R2.hi;
+    const V4 w_rest = r.lo - r.hi * zr * (0x1.5555555555555p-3 - zr * (0x1.1111111111111p-7 - zr * 0x1.a01a01a01a01ap-13));
+    const V4 v_rest = (0.5 * R2.lo + r.hi * r.lo) - zr * zr * (0x1.5555555555555p-5 - zr * 0x1.6c16c16c16c17p-10);
+    const V4Dd first = v4_two_prod(v4_pick(odd, C.hi, -S.hi), r.hi);
+    const V4 base = v4_pick(odd, S.hi, C.hi), other_hi = v4_pick(odd, C.hi, -S.hi);
+    const V4 base_lo = v4_pick(odd, S.lo, C.lo), other_lo = v4_pick(odd, C.lo, -S.lo);
+    const V4Dd second = v4_two_prod(-base, 0.5 * zr);
+    const V4Dd A = v4_two_sum(base, first.hi), B = v4_two_sum(A.hi, second.hi);
+    const V4 rest_sum = ((A.lo + B.lo) + (first.lo + second.lo))
+                        + ((base_lo - base_lo * (0.5 * zr) - base * v_rest) + (other_hi * w_rest + other_lo * r.hi));
+    const V4Dd sum = v4_two_sum(B.hi, rest_sum);
+    const V4 bound = 0x1p-66 * v4_abs(sum.hi);
+    const V4 flip = v4_pick(flip_minus, v4_all(-1.0), v4_all(1.0));
+    out->y = y;
+    out->n = n;
+    out->sin_x = sin_x;
+    out->sign = sign;
+    out->r = r;
+    out->C = C;
+    out->S = S;
+    out->cos_lead = flip * v4_pick(odd, sign * sum.hi, sum.hi);
+    out->certain = (V4Mask)(sum.hi + (sum.lo + bound) == sum.hi) & (V4Mask)(sum.hi + (sum.lo - bound) == sum.hi);
+}
+
+/* dd_cos_sin_end of cos_sin_begin_v4's lanes: cos x in double-double */
+static inline V4Dd cos_sin_end_v4(const CosSinV4 *in)
+{
+    const V4Mask odd = (V4Mask)(in->n != 0.0);
+    const V4 flip = v4_pick((V4Mask)(in->n > 0.0), v4_all(-1.0), v4_all(1.0));
+    /* sincos_at: cos for even quadrants, sin for odd */
+    V4Dd w, v;
+    v4_sin_versine_small(in->r, &w, &v);
+    const V4Dd C = in->C, S = in->S;
+    const V4Dd cos_y = v4_add_smaller(C, v4_dd_neg(v4_add_smaller(v4_dd_mul(S, w), v4_dd_mul(C, v))));
+    const V4Dd sin_abs = v4_add_smaller(S, v4_add_smaller(v4_dd_mul(C, w), v4_dd_neg(v4_dd_mul(S, v))));
+    const V4Dd sin_y = {in->sign * sin_abs.hi, in->sign * sin_abs.lo};
+    const V4Dd value = v4_pick_dd(odd, sin_y, cos_y);
+    /* the certain leading double, or the value itself */
+    const V4 lead = in->cos_lead;
+    const V4Dd known = {lead, flip * ((value.hi - flip * lead) + value.lo)};
+    return v4_pick_dd(in->certain, known, (V4Dd){flip * value.hi, flip * value.lo});
+}
+
+/* --- elliptic_param_begin and _finish on four lanes (elliptic.c) ------------------------- */
+
+/* The Landen chains of four lanes, as the evaluation reads them: each level's factors (a
+ * lane's own up to its N, frozen values past it), N and m_N. */
+typedef struct {
+    V4 landen_k[ELLIPTIC_MAX_LEVELS], landen_1pk[ELLIPTIC_MAX_LEVELS], landen_1mk[ELLIPTIC_MAX_LEVELS];
+    V4 levels;    /* N as doubles */
+    int most;     /* the largest N */
+    V4 bottom_m;  /* m_N */
+} ChainsV4;
+
+/* elliptic_param_finish's running values on four lanes: the tail, the mean and its error */
+typedef struct {
+    V4 tail;
+    V4Dd mean;
+    V4 mean_error;
+} TailsV4;
+
+static inline TailsV4 tails_start_v4(V4 kc_lo)
+{
+    const TailsV4 t = {kc_lo, {v4_all(1.0), v4_all(0.0)}, v4_all(0.0)};
+    return t;
+}
+
+/* elliptic_param_finish's level n, with mean_times(&mean, &mean_error, one_plus / 2,
+ * tail_h / 2), on the lanes whose chain has that level (active); the others keep their values */
+static inline void tails_level_v4(TailsV4 *t, V4Mask active, V4 kc_n, V4 root_n, V4 one_plus_n, V4 kc_next)
+{
+    const V4 tail = t->tail;
+    const V4Dd mean = t->mean;
+    const V4 e_h = kc_n - (one_plus_n - 1.0);
+    const V4Dd root_sq = v4_two_prod(root_n, root_n);
+    const V4 e_s = (kc_n - root_sq.hi) - root_sq.lo;
+    const V4Dd product = v4_two_prod(kc_next, one_plus_n);
+    const V4 e_q = (2.0 * root_n - product.hi) - product.lo;
+    const V4 tail_h = e_h + tail;
+    const V4 f_hi = 0.5 * one_plus_n, f_lo = 0.5 * tail_h;
+    const V4Dd pr = v4_two_prod(mean.hi, f_hi), a = v4_two_prod(mean.hi, f_lo);
+    const V4Dd b = v4_two_prod(mean.lo, f_hi);
+    const V4Dd s1 = v4_two_sum(pr.lo, a.hi), s2 = v4_two_sum(s1.hi, b.hi);
+    const V4 error = t->mean_error * f_hi + (((s1.lo + s2.lo) + (a.lo + b.lo)) + mean.lo * f_lo);
+    const V4Dd next_mean = v4_fast_two_sum(pr.hi, s2.hi);
+    const V4 next_tail = ((root_n * e_q + (e_s + tail)) - root_n * kc_next * tail_h) / (root_n * one_plus_n);
+    t->mean_error = v4_pick(active, error, t->mean_error);
+    t->mean.hi = v4_pick(active, next_mean.hi, mean.hi);
+    t->mean.lo = v4_pick(active, next_mean.lo, mean.lo);
+    t->tail = v4_pick(active, next_tail, tail);
+}
+
+/* landen_K from the tails at the bottom (k'_N = kc_bottom), and elliptic_param_finish's
+ * bottom scale */
+static inline void tails_finish_v4(const TailsV4 *t, V4 kc_bottom, V4 bottom_m, V4Dd *K_out, V4Dd *inv_K,
+                                   V4 *bottom_scale)
+{
+    const V4Dd mean = t->mean;
+    const V4 mean_error = t->mean_error;
+    V4Dd A = v4_dd_div(v4_fast_two_sum(v4_all(HALF_PI_HI), v4_all(HALF_PI_LO)), mean);
+    V4Dd B = v4_dd_mul(mean, v4_fast_two_sum(v4_all(2.0 * INV_PI_HI), v4_all(2.0 * INV_PI_LO)));
+    A.lo -= A.hi * (A.hi * (mean_error * (2.0 * INV_PI_HI)));
+    B.lo += mean_error * (2.0 * INV_PI_HI);
+    const V4Dd d = v4_two_sum(1.0 - kc_bottom, -t->tail);
+    V4Dd d2 = v4_two_prod(d.hi, d.hi);
+    d2.lo += 2.0 * d.hi * d.lo;
+    const V4 cube = d.hi * d2.hi;
+    const V4Dd s2 = v4_two_prod(v4_all(0.3125), d2.hi);
+    V4Dd S = v4_fast_two_sum(0.5 * d.hi, s2.hi);
+    S.lo += (s2.lo + 0.3125 * d2.lo + 0.5 * d.lo) + cube * (7.0 / 32.0 + d.hi * (169.0 / 1024.0));
+    V4Dd T = v4_fast_two_sum(0.5 * d.hi, 0.0625 * d2.hi);
+    T.lo += (0.0625 * d2.lo + 0.5 * d.lo) + cube * (1.0 / 32.0 + d.hi * (21.0 / 1024.0));
+    const V4Dd AS = v4_two_prod(A.hi, S.hi), BT = v4_two_prod(B.hi, T.hi);
+    V4Dd K = v4_fast_two_sum(A.hi, AS.hi);
+    K.lo += A.lo + (AS.lo + (A.hi * S.lo + A.lo * S.hi));
+    V4Dd inverse = v4_fast_two_sum(B.hi, -BT.hi);
+    inverse.lo += B.lo - (BT.lo + (B.hi * T.lo + B.lo * T.hi));
+    *inv_K = v4_fast_two_sum(inverse.hi, inverse.lo);
+    *K_out = v4_fast_two_sum(K.hi, K.lo);
+    const V4Dd bottom_factor = {1.0 + bottom_m * (0.25 + bottom_m * (9.0 / 64.0)), v4_all(0.0)};
+    const V4Dd K_bottom = v4_dd_mul(v4_fast_two_sum(v4_all(HALF_PI_HI), v4_all(HALF_PI_LO)), bottom_factor);
+    *bottom_scale = v4_dd_mul(K_bottom, *inv_K).hi;
+}
+
+/* elliptic_param_begin and _finish on four lanes (m, kc, and k' = kc + kc_lo; the lanes from
+ * `lanes` on are carried frozen at their start) in one pass: each level's tail follows its
+ * level of the chain, so that the two chains of quotients overlap (the same operations on each
+ * lane, in another order). Writes the chain's levels to *c, K, 1/K and the bottom scale. */
+static inline void chains_with_K_v4(int lanes, V4 m, V4 kc, V4 kc_lo, ChainsV4 *c, V4Dd *K, V4Dd *inv_K,
+                                    V4 *bottom_scale)
+{
+    V4 kc_n = kc, m_n = m, levels = v4_all(0.0);
+    V4Mask going;
+    for (int l = 0; l < AVX_LANES; ++l) {
+        going[l] = l < lanes ? -1 : 0;
+    }
+    TailsV4 t = tails_start_v4(kc_lo);
+    int n = 0;
+    for (;; ++n) {
+        /* elliptic_param_begin's test: below the bottom, at least one level, at most 16 levels */
+        const V4Mask goes = going & ((V4Mask)(m_n > BOTTOM_M) | (V4Mask)(v4_all((double)n) == 0.0))
+                            & (V4Mask)(v4_all((double)n) < (double)ELLIPTIC_MAX_LEVELS);
+        levels = v4_pick(going & ~goes, v4_all((double)n), levels);   /* ends here: N = n */
+        going = goes;
+        if (v4_bits(going) == 0) {
+            break;
+        }
+        /* elliptic_param_begin's level on every lane, then elliptic_param_finish's */
+        const V4 kc_level = kc_n;
+        const V4 one_plus_kc = 1.0 + kc_n, half = 0.5 * one_plus_kc;
+        const V4 root_kc = (V4)_mm256_sqrt_pd((__m256d)kc_n);
+        const V4 kc_next = root_kc / half;
+        const V4Mask small = (V4Mask)(kc_n < 0.5);   /* k_next by one quotient of either form */
+        const V4 k_next = v4_pick(small, 1.0 - kc_n, m_n) / v4_pick(small, one_plus_kc, one_plus_kc * one_plus_kc);
+        c->landen_k[n] = k_next;
+        c->landen_1pk[n] = 1.0 + k_next;
+        c->landen_1mk[n] = kc_n / half;
+        kc_n = v4_pick(going, kc_next, kc_n);
+        m_n = v4_pick(going, k_next * k_next, m_n);
+        tails_level_v4(&t, going, kc_level, root_kc, one_plus_kc, kc_n);
+    }
+    c->most = n;
+    c->levels = levels;
+    c->bottom_m = m_n;
+    tails_finish_v4(&t, kc_n, m_n, K, inv_K, bottom_scale);
+}
+
+/* --- eval_libration on four lanes (exact.c) ---------------------------------------------- */
+
+/* elliptic_atan_series */
+static inline V4 v4_atan_series(V4 s)
+{
+    const V4 s2 = s * s, s4 = s2 * s2, s8 = s4 * s4;
+    const V4 g01 = -0x1.5555555555555p-2 + s * 0x1.9999999999953p-3;
+    const V4 g23 = -0x1.249249248d7eep-3 + s * 0x1.c71c71c304b68p-4;
+    const V4 g45 = -0x1.745d165df3f95p-4 + s * 0x1.3b1392d9e785cp-4;
+    const V4 g67 = -0x1.110e880a7a521p-4 + s * 0x1.e19a13b9fc6dfp-5;
+    const V4 g89 = -0x1.ac7a938b69c93p-5 + s * 0x1.74ddd408bb4c1p-5;
+    const V4 g1011 = -0x1.1b33b923aa954p-5 + s * 0x1.0ad36a455cafbp-6;
+    return ((g01 + s2 * g23) + s4 * (g45 + s2 * g67)) + s8 * (g89 + s2 * g1011);
+}
+
+/* elliptic_atan_unit */
+static inline V4 v4_atan_unit(V4 y, V4 x)
+{
+    const V4 a = v4_abs(y), b = x;
+    const V4 w1 = v4_pick((V4Mask)(a > ELLIPTIC_TAN_PI_8 * b), v4_all(1.0), v4_all(0.0)), w0 = 1.0 - w1;
+    const V4 t = (w0 * a + w1 * (a - b)) / (w0 * b + w1 * (a + b));
+    const V4 s = t * t;
+    const V4 g = v4_atan_series(s);
+    const V4 angle = w1 * ELLIPTIC_QUARTER_PI_HI + (w1 * ELLIPTIC_QUARTER_PI_LO + (t + t * s * g));
+    /* copysign(angle, y) */
+    const __m256d sign_bit = _mm256_set1_pd(-0.0);
+    return (V4)_mm256_or_pd(_mm256_andnot_pd(sign_bit, (__m256d)angle), _mm256_and_pd(sign_bit, (__m256d)y));
+}
+
+/* trig_series and trig_sincos_small */
+static inline void v4_sincos_small(V4 r, V4 *sin_r, V4 *cos_r)
+{
+    const double *c = TRIG_SIGNED_INVERSE_FACTORIAL;
+    const V4 z = r * r;
+    const V4 z2 = z * z, z4 = z2 * z2;
+    const V4 ps = ((c[3] + z * c[5]) + z2 * (c[7] + z * c[9])) + z4 * ((c[11] + z * c[13]) + z2 * (c[15] + z * c[17]));
+    const V4 pc = ((c[2] + z * c[4]) + z2 * (c[6] + z * c[8])) + z4 * ((c[10] + z * c[12]) + z2 * (c[14] + z * c[16]));
+    *sin_r = r + (r * z) * ps;
+    *cos_r = 1.0 + z * pc;
+}
+
+/* elliptic_landen_step with each lane's level factors, where `step` is set: the plain step,
+ * then for a chain of more than ELLIPTIC_LEVELS_WITHOUT_RESCALE levels (`long_chain`) the
+ * renormalisation once D passes ELLIPTIC_HOMOGENEOUS_RESCALE */
+static inline void v4_landen_step(V4Mask step, V4Mask long_chain, V4 kk, V4 one_plus_k, V4 one_minus_k, V4 *S,
+                                  V4 *C, V4 *E, V4 *D)
+{
+    const V4 d2 = *D * *D;
+    V4 up_S = one_plus_k * *S * *D, up_C = *C * *E;
+    V4 up_E = one_minus_k * d2 + kk * *C * *C, up_D = d2 + kk * *S * *S;
+    const V4Mask rescale = long_chain & (V4Mask)(up_D > ELLIPTIC_HOMOGENEOUS_RESCALE);
+    if (v4_bits(rescale) != 0) {   /* only chains of more than 7 levels */
+        const V4 inv = 1.0 / up_D;
+        up_S = v4_pick(rescale, up_S * inv, up_S);
+        up_C = v4_pick(rescale, up_C * inv, up_C);
+        up_E = v4_pick(rescale, up_E * inv, up_E);
+        up_D = v4_pick(rescale, v4_all(1.0), up_D);
+    }
+    *S = v4_pick(step, up_S, *S);
+    *C = v4_pick(step, up_C, *C);
+    *E = v4_pick(step, up_E, *E);
+    *D = v4_pick(step, up_D, *D);
+}
+
+/* What eval_libration reads of four librations, lane by lane; the level factors level by
+ * level (a lane's own up to its levels, any finite values beyond). */
+typedef struct {
+    V4 t0, rho_hi, rho_lo, x0_hi, x0_lo, K_hi, bottom_scale, bottom_m, sqrt_k1, kc, omega_half;
+    V4 theta_turns;   /* whole turns of theta0, |theta_turns| < 2^50 */
+    V4 levels;   /* N as doubles */
+    int most;    /* the largest N */
+    const V4 *landen_k, *landen_1pk, *landen_1mk;   /* [level] */
+} LibrationV4;
+
+/* eval_libration's operations at times tv: *theta and *omega for every lane, and a mask of
+ * the lanes on its common path (a phase below 2^50 quarter periods, a bottom argument within
+ * the series, tv != t0; the caller checks the rest). */
+static inline V4Mask eval_libration_v4(const LibrationV4 *s, V4 tv, V4 *theta, V4 *omega)
+{
+    /* phase_at and phase_near */
+    const V4Dd tau = v4_two_sum(tv, -s->t0);
+    const V4 x_hi = s->rho_hi * tau.hi;
+    const V4 x_lo = (V4)_mm256_fmadd_pd((__m256d)s->rho_hi, (__m256d)tau.hi, (__m256d)(-x_hi));
+    const V4 quarters = (x_hi + s->x0_hi + 0x1.8p52) - 0x1.8p52;
+    const V4 f = ((x_hi - quarters) + s->x0_hi) + (x_lo + (s->rho_hi * tau.lo + s->rho_lo * tau.hi) + s->x0_lo);
+    const V4 v = f * s->K_hi;
+    /* the quarter n mod 4 as eval_libration_lanes' exact weights */
+    const V4 r = quarters - 4.0 * ((0.25 * quarters + 0x1.8p52) - 0x1.8p52);
+    const V4 r2 = r * r;
+    const V4 odd = r2 * (4.0 - r2) / 3.0;
+    const V4 sign = 1.0 - 2.0 * (r2 * (r2 - 1.0) / 12.0 + odd * (1.0 - r) * 0.5);
+    const V4 z = v4_abs(v) * s->bottom_scale;
+    /* elliptic_landen_bottom, then the steps up to level 1 */
+    V4 sz, cz;
+    v4_sincos_small(z, &sz, &cz);
+    const V4 w = 0.25 * s->bottom_m * (z - sz * cz);
+    V4 S = sz - w * cz, C = cz + w * sz, E = 1.0 - 0.5 * s->bottom_m * sz * sz, D = v4_all(1.0);
+    const V4Mask long_chain = (V4Mask)(s->levels > (double)ELLIPTIC_LEVELS_WITHOUT_RESCALE);
+    for (int i = s->most - 1; i >= 1; --i) {
+        const V4Mask below = (V4Mask)(v4_all((double)i) < s->levels);   /* a step of this lane's chain */
+        v4_landen_step(below, long_chain, s->landen_k[i], s->landen_1pk[i], s->landen_1mk[i], &S, &C, &E, &D);
+    }
+    V4 S0 = S, C0 = C, E0 = E, D0 = D;
+    v4_landen_step(~(V4Mask){0, 0, 0, 0}, long_chain, s->landen_k[0], s->landen_1pk[0], s->landen_1mk[0], &S0, &C0,
+                   &E0, &D0);
+    const V4Mask negative = (V4Mask)(v < 0.0);   /* sn is odd, cn and dn are even */
+    S = v4_pick(negative, -S, S);
+    S0 = v4_pick(negative, -S0, S0);
+    /* libration_angle_omega */
+    const V4 even = 1.0 - odd;
+    const V4 y1 = even * S + odd * C, x1 = even * D + odd * E;
+    const V4 angle = 4.0 * v4_atan_unit(sign * s->sqrt_k1 * y1, x1);
+    /* add_half_turns(2 theta_turns, angle): half_turns_pi and plus_half_turns (the low part of
+     * the half turns is 0, and lo pi_hi with it), the angle alone without turns */
+    const V4 half_turns = 2.0 * s->theta_turns;
+    const V4Dd turn = v4_two_prod(half_turns, v4_all(PI_HI));
+    const V4 hi_pi_lo = half_turns * PI_LO, lo_pi_hi = v4_all(0.0 * PI_HI);
+    const V4 wound = turn.hi + (turn.lo + (hi_pi_lo + (lo_pi_hi + angle)));
+    *theta = v4_pick((V4Mask)(half_turns == 0.0), angle, wound);
+    const V4 cn_num = even * C0 - odd * (s->kc * S0), den = even * D0 + odd * E0;
+    *omega = 2.0 * (sign * s->omega_half * (cn_num / den));
+    return (V4Mask)(v4_abs(x_hi) < 0x1p50) & (V4Mask)(z <= ELLIPTIC_SERIES_Z_MAX) & (V4Mask)(tv != s->t0);
+}
+
+/* --- four releases from rest, set up and evaluated once ---------------------------------- */
+
+/* a and b the same double, bit for bit (+0 and -0 differ; NaN is no double of a set-up) */
+static int same_double(double a, double b)
+{
+    uint64_t x, y;
+    memcpy(&x, &a, sizeof x);
+    memcpy(&y, &b, sizeof y);
+    return x == y;
+}
+
+/* Up to four releases from rest (omega0 = 0, |theta0| <= 3.2, w0 accepted) set up at t0 and
+ * evaluated once each at t[l], all in vectors: init_from_rest's operations (the cosine begun,
+ * the chain, the cosine ended, K, the rates) and eval_libration's, without a set-up written.
+ * Returns the lanes done as bits; the others (a cosine whose leading double is not certain or
+ * within 2^-500 of 0, off eval_libration's path) are the caller's. */
+static int once_avx(int lanes, const double *theta0, const DoubleDouble *w0, double t0, const double *t,
+                    double *theta, double *omega)
+{
+    V4 th, w0_hi, w0_lo, tv;
+    for (int l = 0; l < AVX_LANES; ++l) {
+        const int from = l < lanes ? l : 0;
+        th[l] = theta0[from];
+        w0_hi[l] = w0[from].hi;
+        w0_lo[l] = w0[from].lo;
+        tv[l] = t[from];
+    }
+    CosSinV4 trig;
+    cos_sin_begin_v4(0.5 * th, &trig);   /* step 1: theta0 / 2 exact, no turn to subtract */
+    int eligible[AVX_LANES], any = -1;
+    for (int l = 0; l < AVX_LANES; ++l) {
+        eligible[l] = l < lanes && trig.certain[l] && fabs(trig.cos_lead[l]) > 0x1p-500;
+        any = eligible[l] && any < 0 ? l : any;
+    }
+    if (any < 0) {
+        return 0;
+    }
+    /* from_rest_start: m = k^2 (at most 1), k' = c's leading double; a lane not taken runs a
+     * copy of one taken */
+    const V4 k = v4_abs(trig.sin_x), k2 = k * k;
+    V4 m = v4_pick((V4Mask)(k2 < 1.0), k2, v4_all(1.0)), kc = v4_abs(trig.cos_lead);
+    for (int l = 0; l < AVX_LANES; ++l) {
+        m[l] = eligible[l] ? m[l] : m[any];
+        kc[l] = eligible[l] ? kc[l] : kc[any];
+    }
+    /* settle_initial_angle: c < 0 (theta0 just past pi) moves th by a turn, s and c change sign */
+    const V4Mask past = (V4Mask)(trig.cos_lead < 0.0);
+    const V4Dd cosine = cos_sin_end_v4(&trig);
+    const V4Dd c = v4_pick_dd(past, v4_dd_neg(cosine), cosine);
+    const V4 s_hi = v4_pick(past, -trig.sin_x, trig.sin_x);
+    /* the chain on c's leading double, K and 1/K from its tails with c's low part */
+    ChainsV4 chains;
+    V4Dd K, inv_K;
+    LibrationV4 s;
+    chains_with_K_v4(AVX_LANES, m, kc, c.lo, &chains, &K, &inv_K, &s.bottom_scale);
+    /* from_rest_fields */
+    const V4Dd rho = v4_dd_mul((V4Dd){w0_hi, w0_lo}, inv_K);
+    const V4 u0 = v4_pick((V4Mask)(k == 0.0), v4_all(0.0), v4_pick((V4Mask)(s_hi < 0.0), -K.hi, K.hi));
+    s.theta_turns = v4_pick(past, v4_pick((V4Mask)(th > 0.0), v4_all(1.0), v4_all(-1.0)), v4_all(0.0));
+    s.t0 = v4_all(t0);
+    s.rho_hi = rho.hi;
+    s.rho_lo = rho.lo;
+    s.x0_hi = v4_pick((V4Mask)(u0 < 0.0), v4_all(-1.0), v4_pick((V4Mask)(u0 > 0.0), v4_all(1.0), v4_all(0.0)));
+    s.x0_lo = v4_all(0.0);
+    s.K_hi = K.hi;
+    s.bottom_m = chains.bottom_m;
+    s.sqrt_k1 = k / (1.0 + kc);
+    s.kc = kc;
+    s.omega_half = k * w0_hi;
+    s.levels = chains.levels;
+    s.most = chains.most;
+    s.landen_k = chains.landen_k;
+    s.landen_1pk = chains.landen_1pk;
+    s.landen_1mk = chains.landen_1mk;
+    V4 angle, om;
+    const V4Mask path = eval_libration_v4(&s, tv, &angle, &om);
+    int done = 0;
+    for (int l = 0; l < lanes; ++l) {
+        if (eligible[l] && path[l]) {
+            theta[l] = angle[l];
+            omega[l] = om[l];
+            done |= 1 << l;
+        }
+    }
+    return done;
+}
+
+#endif
