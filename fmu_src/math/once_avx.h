@@ -9,7 +9,9 @@
  * vector square root, and the two-products by the fma as the fma build's scalar ones. So a lane
  * has the scalar bits: dd_cos_sin_begin and _end (the cosine of theta0/2 and the double sine),
  * elliptic_param_begin and _finish (the Landen chain, K and 1/K), the fields of
- * init_from_rest, and eval_libration with its Landen steps and whole turns. Where the scalar
+ * init_from_rest, and eval_any's libration (phase_near, the Landen pair,
+ * libration_angle_omega, add_half_turns: the roundings of pendulum_exact_eval, whose inline
+ * common case reaches them in fewer steps) with its whole turns. Where the scalar
  * code branches on a value, each lane computes what it needs of both sides and keeps its own
  * (v4_pick, a blend); the table's rows are read lane by lane; a lane whose Landen chain has
  * ended is carried along with its values frozen. test_exact_batch compares every output with
@@ -177,9 +179,14 @@ static inline void cos_sin_begin_v4(V4 xh, CosSinV4 *out)
     const V4Mask odd = ~zero, flip_minus = (V4Mask)(n > 0.0);
     /* the double sin x: the series in double of sincos_reduced */
     const V4 z = v4_dd_mul(y, y).hi;
-    const V4 even_sum = y.hi + y.hi * z * v4_horner_double(SIN_COEF, z);
-    const V4 odd_sum = 1.0 + z * v4_horner_double(COS_COEF, z);
-    const V4 other = v4_pick(odd, odd_sum, even_sum);
+    V4 other;
+    if (v4_bits(odd) == 0) {   /* the series a lane needs; both where the lanes differ */
+        other = y.hi + y.hi * z * v4_horner_double(SIN_COEF, z);
+    } else if (v4_bits(odd) == 0xF) {
+        other = 1.0 + z * v4_horner_double(COS_COEF, z);
+    } else {
+        other = v4_pick(odd, 1.0 + z * v4_horner_double(COS_COEF, z), y.hi + y.hi * z * v4_horner_double(SIN_COEF, z));
+    }
     const V4 sin_x = v4_pick((V4Mask)(n < 0.0), -other, other);
     /* table_point */
     const V4 sign = v4_pick((V4Mask)(y.hi < 0.0), v4_all(-1.0), v4_all(1.0));
@@ -231,10 +238,16 @@ static inline V4Dd cos_sin_end_v4(const CosSinV4 *in)
     V4Dd w, v;
     v4_sin_versine_small(in->r, &w, &v);
     const V4Dd C = in->C, S = in->S;
-    const V4Dd cos_y = v4_add_smaller(C, v4_dd_neg(v4_add_smaller(v4_dd_mul(S, w), v4_dd_mul(C, v))));
-    const V4Dd sin_abs = v4_add_smaller(S, v4_add_smaller(v4_dd_mul(C, w), v4_dd_neg(v4_dd_mul(S, v))));
-    const V4Dd sin_y = {in->sign * sin_abs.hi, in->sign * sin_abs.lo};
-    const V4Dd value = v4_pick_dd(odd, sin_y, cos_y);
+    V4Dd value = {v4_all(0.0), v4_all(0.0)}, sin_y = value;
+    if (v4_bits(odd) != 0xF) {   /* the sums a lane needs; both where the lanes differ */
+        value = v4_add_smaller(C, v4_dd_neg(v4_add_smaller(v4_dd_mul(S, w), v4_dd_mul(C, v))));   /* cos y */
+    }
+    if (v4_bits(odd) != 0) {
+        const V4Dd sin_abs = v4_add_smaller(S, v4_add_smaller(v4_dd_mul(C, w), v4_dd_neg(v4_dd_mul(S, v))));
+        sin_y.hi = in->sign * sin_abs.hi;
+        sin_y.lo = in->sign * sin_abs.lo;
+    }
+    value = v4_pick_dd(odd, sin_y, value);
     /* the certain leading double, or the value itself */
     const V4 lead = in->cos_lead;
     const V4Dd known = {lead, flip * ((value.hi - flip * lead) + value.lo)};
@@ -284,6 +297,12 @@ static inline void tails_level_v4(TailsV4 *t, V4Mask active, V4 kc_n, V4 root_n,
     const V4 error = t->mean_error * f_hi + (((s1.lo + s2.lo) + (a.lo + b.lo)) + mean.lo * f_lo);
     const V4Dd next_mean = v4_fast_two_sum(pr.hi, s2.hi);
     const V4 next_tail = ((root_n * e_q + (e_s + tail)) - root_n * kc_next * tail_h) / (root_n * one_plus_n);
+    if (v4_bits(active) == 0xF) {   /* every lane: no blends */
+        t->mean_error = error;
+        t->mean = next_mean;
+        t->tail = next_tail;
+        return;
+    }
     t->mean_error = v4_pick(active, error, t->mean_error);
     t->mean.hi = v4_pick(active, next_mean.hi, mean.hi);
     t->mean.lo = v4_pick(active, next_mean.lo, mean.lo);
@@ -365,7 +384,7 @@ static inline void chains_with_K_v4(int lanes, V4 m, V4 kc, V4 kc_lo, ChainsV4 *
     tails_finish_v4(&t, kc_n, m_n, K, inv_K, bottom_scale);
 }
 
-/* --- eval_libration on four lanes (exact.c) ---------------------------------------------- */
+/* --- eval_any's libration on four lanes (exact.c) ---------------------------------------- */
 
 /* elliptic_atan_series */
 static inline V4 v4_atan_series(V4 s)
@@ -423,13 +442,19 @@ static inline void v4_landen_step(V4Mask step, V4Mask long_chain, V4 kk, V4 one_
         up_E = v4_pick(rescale, up_E * inv, up_E);
         up_D = v4_pick(rescale, v4_all(1.0), up_D);
     }
-    *S = v4_pick(step, up_S, *S);
-    *C = v4_pick(step, up_C, *C);
-    *E = v4_pick(step, up_E, *E);
-    *D = v4_pick(step, up_D, *D);
+    if (v4_bits(step) != 0xF) {   /* a lane whose chain has no such level keeps its values */
+        up_S = v4_pick(step, up_S, *S);
+        up_C = v4_pick(step, up_C, *C);
+        up_E = v4_pick(step, up_E, *E);
+        up_D = v4_pick(step, up_D, *D);
+    }
+    *S = up_S;
+    *C = up_C;
+    *E = up_E;
+    *D = up_D;
 }
 
-/* What eval_libration reads of four librations, lane by lane; the level factors level by
+/* What the evaluation reads of four librations, lane by lane; the level factors level by
  * level (a lane's own up to its levels, any finite values beyond). */
 typedef struct {
     V4 t0, rho_hi, rho_lo, x0_hi, x0_lo, K_hi, bottom_scale, bottom_m, sqrt_k1, kc, omega_half;
@@ -439,9 +464,11 @@ typedef struct {
     const V4 *landen_k, *landen_1pk, *landen_1mk;   /* [level] */
 } LibrationV4;
 
-/* eval_libration's operations at times tv: *theta and *omega for every lane, and a mask of
- * the lanes on its common path (a phase below 2^50 quarter periods, a bottom argument within
- * the series, tv != t0; the caller checks the rest). */
+/* eval_any's operations for a libration at times tv: *theta and *omega for every lane, and a
+ * mask of the lanes on the common path (a phase below 2^50 quarter periods, a bottom argument
+ * within the series, tv != t0; the caller checks the rest). The phase's nearest integer by the
+ * shift where the fma build's phase_near rounds with rint: they differ only in the sign of a
+ * zero, which no output reads. */
 static inline V4Mask eval_libration_v4(const LibrationV4 *s, V4 tv, V4 *theta, V4 *omega)
 {
     /* phase_at and phase_near */
@@ -502,9 +529,9 @@ static int same_double(double a, double b)
 
 /* Up to four releases from rest (omega0 = 0, |theta0| <= 3.2, w0 accepted) set up at t0 and
  * evaluated once each at t[l], all in vectors: init_from_rest's operations (the cosine begun,
- * the chain, the cosine ended, K, the rates) and eval_libration's, without a set-up written.
+ * the chain, the cosine ended, K, the rates) and the evaluation's, without a set-up written.
  * Returns the lanes done as bits; the others (a cosine whose leading double is not certain or
- * within 2^-500 of 0, off eval_libration's path) are the caller's. */
+ * within 2^-500 of 0, off the evaluation's common path) are the caller's. */
 static int once_avx(int lanes, const double *theta0, const DoubleDouble *w0, double t0, const double *t,
                     double *theta, double *omega)
 {
