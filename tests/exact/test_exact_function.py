@@ -178,3 +178,24 @@ def test_a_state_per_point_is_the_fmus_theta_exact_bit_for_bit(fmu_path: Path) -
             port.initialize(theta0[i], omega0[i], length[i], gravity[i])
             fmu_theta, fmu_omega = port.evaluate(np.array([times[i]]))
         assert theta[i].tobytes() == fmu_theta[0].tobytes() and omega[i].tobytes() == fmu_omega[0].tobytes(), i
+
+
+def test_scalars_and_arrays_broadcast_to_the_same_bits() -> None:
+    """A scalar input goes to C as one value (stride 0), an array whole: every mix of the two,
+    2-D broadcasting, and runs of one state longer than the library's block of 256 give the
+    values of full arrays element by element."""
+    rng = np.random.default_rng(256)
+    theta0 = rng.uniform(-3.0, 3.0, 700)
+    times = rng.uniform(-50.0, 50.0, 700)
+    full = exact(theta0, np.full(700, 0.5), np.full(700, 1.5), np.full(700, 9.81), times)
+    mixed = exact(theta0, 0.5, 1.5, 9.81, times)
+    assert all(a.tobytes() == b.tobytes() for a, b in zip(full, mixed, strict=True))
+    # one state over 700 times as a stride-0 state: the one-state path's values
+    run = exact(np.full(700, 1.2), 0.0, 1.5, 9.81, times)
+    alone = exact(1.2, 0.0, 1.5, 9.81, times)
+    assert all(a.tobytes() == b.tobytes() for a, b in zip(run, alone, strict=True))
+    grid = exact(theta0[:30, None], 0.0, np.array([0.5, 1.0, 2.0]), 9.81, times[:30, None])
+    assert grid[0].shape == (30, 3)
+    for j, length in enumerate((0.5, 1.0, 2.0)):
+        column = exact(theta0[:30], 0.0, length, 9.81, times[:30])
+        assert grid[0][:, j].tobytes() == column[0].tobytes() and grid[1][:, j].tobytes() == column[1].tobytes()

@@ -55,8 +55,9 @@ static int same_inputs(const double *theta0, const double *omega0, const double 
            && same_bits(g[i], g[j]);
 }
 
-size_t pendulum_exact_many(size_t n, const double *theta0, const double *omega0, const double *L,
-                           const double *g, const double *t, double *theta, double *omega)
+/* pendulum_exact_many on contiguous arrays of n elements */
+static size_t many_contiguous(size_t n, const double *theta0, const double *omega0, const double *L, const double *g,
+                              const double *t, double *theta, double *omega)
 {
     size_t refused = 0;
     size_t start = 0;
@@ -85,6 +86,31 @@ size_t pendulum_exact_many(size_t n, const double *theta0, const double *omega0,
         refused += pendulum_exact_once_gl_many(end - start, theta0 + start, omega0 + start, g + start, L + start, 0.0,
                                                t + start, theta + start, omega + start);
         start = end;
+    }
+    return refused;
+}
+
+size_t pendulum_exact_many(size_t n, const double *theta0, const double *omega0, const double *L,
+                           const double *g, const double *t, const size_t *stride, double *theta, double *omega)
+{
+    const double *const input[5] = {theta0, omega0, L, g, t};
+    /* blocks of the inputs, contiguous: an array read where it is, a stride-0 input repeated
+     * once into a block of its own */
+    double repeated[5][PENDULUM_EXACT_BLOCK];
+    for (int k = 0; k < 5; ++k) {
+        for (size_t i = 0; stride[k] == 0 && i < PENDULUM_EXACT_BLOCK && i < n; ++i) {
+            repeated[k][i] = input[k][0];
+        }
+    }
+    size_t refused = 0;
+    for (size_t first = 0; first < n; first += PENDULUM_EXACT_BLOCK) {
+        const size_t count = n - first < PENDULUM_EXACT_BLOCK ? n - first : PENDULUM_EXACT_BLOCK;
+        const double *block[5];
+        for (int k = 0; k < 5; ++k) {
+            block[k] = stride[k] ? input[k] + first : repeated[k];
+        }
+        refused += many_contiguous(count, block[0], block[1], block[2], block[3], block[4], theta + first,
+                                   omega + first);
     }
     return refused;
 }

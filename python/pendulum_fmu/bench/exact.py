@@ -288,7 +288,7 @@ def wrapper_overhead(points: int, rounds: int) -> tuple[float, float, bool]:
     same = True
     for _ in range(rounds):
         start = time.process_time()
-        library.pendulum_exact_many(points, *arrays, theta, omega)
+        library.pendulum_exact_many(points, *arrays, np.ones(5, dtype=np.uintp), theta, omega)
         c_best = min(c_best, time.process_time() - start)
         start = time.process_time()
         values = exact(theta0, 0.0, 1.0, 1.0, times, workers=1)

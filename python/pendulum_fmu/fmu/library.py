@@ -32,7 +32,7 @@ from pendulum_fmu.fmu.build import DEFAULT_BUILD_DIR
 if TYPE_CHECKING:
     from _ctypes import CFuncPtr
 
-ABI = 1
+ABI = 2
 """The interface version this module speaks (``PENDULUM_EXACT_ABI`` in the C header)."""
 PACKAGE_LIB_DIR = Path(__file__).resolve().parents[1] / "lib"
 
@@ -132,7 +132,8 @@ def _library() -> ctypes.CDLL:
     library = load_library(library_path(), "pendulum_exact", ABI)
     pointer = np.ctypeslib.ndpointer(dtype=np.float64, flags="C_CONTIGUOUS")
     library.pendulum_exact_many.restype = ctypes.c_size_t
-    library.pendulum_exact_many.argtypes = [ctypes.c_size_t] + [pointer] * 7
+    strides = np.ctypeslib.ndpointer(dtype=np.uintp, flags="C_CONTIGUOUS")
+    library.pendulum_exact_many.argtypes = [ctypes.c_size_t] + [pointer] * 5 + [strides] + [pointer] * 2
     library.pendulum_exact_times.restype = ctypes.c_size_t
     library.pendulum_exact_times.argtypes = [ctypes.c_double] * 4 + [ctypes.c_size_t] + [pointer] * 3
     return library
@@ -269,15 +270,23 @@ def exact(theta0: ArrayLike, omega0: ArrayLike, L: ArrayLike, g: ArrayLike,
             _in_threads(lambda a, b: library.pendulum_exact_times(*values, b - a, times[a:b], theta[a:b], omega[a:b]),
                         times.size, threads)
         return theta.reshape(shape), omega.reshape(shape)
-    arrays = np.broadcast_arrays(*(np.asarray(x, dtype=np.float64) for x in (theta0, omega0, L, g, t)))
-    shape = arrays[0].shape
-    flat = [np.ascontiguousarray(a).reshape(-1) for a in arrays]
-    theta = np.empty(flat[0].size)
-    omega = np.empty(flat[0].size)
+    inputs = [*state, np.asarray(t, dtype=np.float64)]
+    shape = np.broadcast_shapes(*(x.shape for x in inputs))
+    # a single value goes to C as itself with stride 0, anything else broadcast to a full array
+    flat = [np.ascontiguousarray(x, dtype=np.float64).reshape(1) if x.size == 1
+            else np.ascontiguousarray(np.broadcast_to(x, shape), dtype=np.float64).reshape(-1) for x in inputs]
+    strides = np.array([0 if x.size == 1 else 1 for x in flat], dtype=np.uintp)
+    theta = np.empty(shape).reshape(-1)
+    omega = np.empty(shape).reshape(-1)
+
+    def part(x: np.ndarray, a: int, b: int) -> np.ndarray:
+        return x if x.size == 1 else x[a:b]
+
     threads = thread_count(theta.size, workers)
     if threads == 1:
-        library.pendulum_exact_many(theta.size, *flat, theta, omega)
+        library.pendulum_exact_many(theta.size, *flat, strides, theta, omega)
     else:
-        _in_threads(lambda a, b: library.pendulum_exact_many(b - a, *(x[a:b] for x in flat), theta[a:b], omega[a:b]),
+        _in_threads(lambda a, b: library.pendulum_exact_many(b - a, *(part(x, a, b) for x in flat), strides,
+                                                             theta[a:b], omega[a:b]),
                     theta.size, threads)
     return theta.reshape(shape), omega.reshape(shape)
