@@ -1206,6 +1206,12 @@ void pendulum_exact_eval_many(const PendulumExact *ex, size_t n, const double *t
 #include "once_avx.h"
 #endif
 
+/* pendulum_exact_once_gl_many takes its elements this many at a time: one vector's lanes */
+#define ONCE_BLOCK 4
+#if defined(EXACT_ONCE_AVX) && AVX_LANES != ONCE_BLOCK
+#error "a block of pendulum_exact_once_gl_many is one vector of once_avx.h"
+#endif
+
 size_t pendulum_exact_once_gl_many(size_t n, const double *theta0, const double *omega0, const double *g,
                                    const double *L, double t0, const double *t, double *theta, double *omega)
 {
@@ -1219,15 +1225,16 @@ size_t pendulum_exact_once_gl_many(size_t n, const double *theta0, const double 
     double last_g = NAN, last_L = NAN;   /* sqrt(g / L) formed once for a run of one g and L */
     DoubleDouble last_w0 = {NAN, NAN};
     int w0_ok = 0;
+    const int t0_ok = isfinite(t0);
 #endif
-    for (size_t i = 0; i < n; i += 4) {
-        const int lanes = n - i < 4 ? (int)(n - i) : 4;
+    for (size_t i = 0; i < n; i += ONCE_BLOCK) {
+        const int lanes = n - i < ONCE_BLOCK ? (int)(n - i) : ONCE_BLOCK;
         int done = 0;
 #ifdef EXACT_ONCE_AVX
-        /* the releases from rest of these four elements, in vectors */
-        double th[4], times[4], th_out[4], om_out[4];
-        DoubleDouble w0[4];
-        int taken = 0, at[4];
+        /* the releases from rest of these elements, in vectors */
+        double th[ONCE_BLOCK], times[ONCE_BLOCK], th_out[ONCE_BLOCK], om_out[ONCE_BLOCK];
+        DoubleDouble w0[ONCE_BLOCK];
+        int taken = 0, at[ONCE_BLOCK];
         for (int l = 0; l < lanes; ++l) {
             const size_t j = i + (size_t)l;
             if (!(same_double(g[j], last_g) && same_double(L[j], last_L))) {
@@ -1235,7 +1242,7 @@ size_t pendulum_exact_once_gl_many(size_t n, const double *theta0, const double 
                 last_L = L[j];
                 w0_ok = w0_of_gl(g[j], L[j], &last_w0) == 0;
             }
-            if (w0_ok && omega0[j] == 0.0 && fabs(theta0[j]) <= 3.2 && isfinite(t0)) {
+            if (w0_ok && t0_ok && omega0[j] == 0.0 && fabs(theta0[j]) <= 3.2) {
                 th[taken] = theta0[j];
                 times[taken] = t[j];
                 w0[taken] = last_w0;

@@ -26,8 +26,9 @@
 typedef double V4 __attribute__((vector_size(32)));
 typedef long long V4Mask __attribute__((vector_size(32)));
 
-/* lanes to a vector */
+/* lanes to a vector, and the mask of every lane */
 #define AVX_LANES 4
+#define V4_EVERY ((V4Mask){-1, -1, -1, -1})
 
 static inline V4 v4_all(double x)
 {
@@ -341,18 +342,14 @@ static inline void tails_finish_v4(const TailsV4 *t, V4 kc_bottom, V4 bottom_m, 
     *bottom_scale = v4_dd_mul(K_bottom, *inv_K).hi;
 }
 
-/* elliptic_param_begin and _finish on four lanes (m, kc, and k' = kc + kc_lo; the lanes from
- * `lanes` on are carried frozen at their start) in one pass: each level's tail follows its
+/* elliptic_param_begin and _finish on four lanes (m, kc, and k' = kc + kc_lo) in one pass: each
+ * level's tail follows its
  * level of the chain, so that the two chains of quotients overlap (the same operations on each
  * lane, in another order). Writes the chain's levels to *c, K, 1/K and the bottom scale. */
-static inline void chains_with_K_v4(int lanes, V4 m, V4 kc, V4 kc_lo, ChainsV4 *c, V4Dd *K, V4Dd *inv_K,
-                                    V4 *bottom_scale)
+static inline void chains_with_K_v4(V4 m, V4 kc, V4 kc_lo, ChainsV4 *c, V4Dd *K, V4Dd *inv_K, V4 *bottom_scale)
 {
     V4 kc_n = kc, m_n = m, levels = v4_all(0.0);
-    V4Mask going;
-    for (int l = 0; l < AVX_LANES; ++l) {
-        going[l] = l < lanes ? -1 : 0;
-    }
+    V4Mask going = V4_EVERY;
     TailsV4 t = tails_start_v4(kc_lo);
     int n = 0;
     for (;; ++n) {
@@ -495,7 +492,7 @@ static inline V4Mask eval_libration_v4(const LibrationV4 *s, V4 tv, V4 *theta, V
         v4_landen_step(below, long_chain, s->landen_k[i], s->landen_1pk[i], s->landen_1mk[i], &S, &C, &E, &D);
     }
     V4 S0 = S, C0 = C, E0 = E, D0 = D;
-    v4_landen_step(~(V4Mask){0, 0, 0, 0}, long_chain, s->landen_k[0], s->landen_1pk[0], s->landen_1mk[0], &S0, &C0,
+    v4_landen_step(V4_EVERY, long_chain, s->landen_k[0], s->landen_1pk[0], s->landen_1mk[0], &S0, &C0,
                    &E0, &D0);
     const V4Mask negative = (V4Mask)(v < 0.0);   /* sn is odd, cn and dn are even */
     S = v4_pick(negative, -S, S);
@@ -570,7 +567,7 @@ static int once_avx(int lanes, const double *theta0, const DoubleDouble *w0, dou
     ChainsV4 chains;
     V4Dd K, inv_K;
     LibrationV4 s;
-    chains_with_K_v4(AVX_LANES, m, kc, c.lo, &chains, &K, &inv_K, &s.bottom_scale);
+    chains_with_K_v4(m, kc, c.lo, &chains, &K, &inv_K, &s.bottom_scale);
     /* from_rest_fields */
     const V4Dd rho = v4_dd_mul((V4Dd){w0_hi, w0_lo}, inv_K);
     const V4 u0 = v4_pick((V4Mask)(k == 0.0), v4_all(0.0), v4_pick((V4Mask)(s_hi < 0.0), -K.hi, K.hi));

@@ -50,8 +50,8 @@
 enum { KIND_EVAL, KIND_BATCH, KIND_GSL, KIND_INIT, KIND_GSL_INIT, KIND_ONCE };
 static const char *const KIND_NAMES[KINDS] = {"eval", "batch", "gsl", "init", "gsl_init", "once"};
 
-/* once sets up and evaluates this many new states per call */
-#define MANY_BLOCK 64
+/* the once kind hands pendulum_exact_once_gl_many this many new states a call */
+#define ONCE_CALL 64
 
 /* Processor time of this process (C clock(): CPU time on POSIX), not wall time: the machine
  * may be shared, and time spent waiting for a core is not the code's. */
@@ -140,9 +140,9 @@ static double time_kind(int kind, Case *c)
 #endif
     }
     case KIND_ONCE: {
-        double theta0[MANY_BLOCK], zeros[MANY_BLOCK], ones[MANY_BLOCK];
-        for (long first = 0; first < n; first += MANY_BLOCK) {
-            const long count = n - first < MANY_BLOCK ? n - first : MANY_BLOCK;
+        double theta0[ONCE_CALL], zeros[ONCE_CALL], ones[ONCE_CALL];
+        for (long first = 0; first < n; first += ONCE_CALL) {
+            const long count = n - first < ONCE_CALL ? n - first : ONCE_CALL;
             for (long j = 0; j < count; ++j) {
                 theta0[j] = c->theta0 * (1.0 + 1e-9 * (double)((first + j) & 1023));
                 zeros[j] = 0.0;
