@@ -98,6 +98,28 @@ def test_bench_solvers_without_driver_looks_for_no_program(fmu_path: Path, tmp_p
     assert "bash scripts/bench.sh solvers" in err and not (tmp_path / "bench" / "report.md").exists()
 
 
+@pytest.mark.parametrize(("peers", "named"), [("Radau,BDF", "BDF"), ("dop853,", None), (",", "none given"),
+                                              ("radau", "radau")])
+def test_bench_solvers_names_an_unknown_peer_in_one_line(fmu_path: Path, tmp_path: Path, peers: str,
+                                                        named: str | None, capsys: pytest.CaptureFixture[str]) -> None:
+    """``--peers`` takes the peers' own names (case matters: scipy's Radau, Hairer's dop853):
+    an unknown one or none is one line naming it and the choices, exit 2, before any run."""
+    from pendulum_fmu.bench.workprecision.peers import PEERS
+
+    driver = tmp_path / "driver"
+    driver.write_text("#!/bin/sh\nexit 1\n")
+    driver.chmod(0o755)
+    code = main(["bench", "solvers", "--quick", "--fmu", str(fmu_path), "--driver", str(driver), "--peers", peers,
+                 "--out", str(tmp_path / "bench")])
+    err = capsys.readouterr().err
+    if named is None:   # a trailing comma is no peer more: the run starts, and a driver that lists no run fails it
+        assert code == 1 and "argument --peers" not in err and "printed no run (exit 1)" in err, err
+        return
+    assert code == 2 and len(err.splitlines()) == 1, err
+    assert err.startswith("pendulum-fmu bench solvers: error: argument --peers:") and f"({named})" in err, err
+    assert err.rstrip().endswith(", ".join(PEERS)) and not (tmp_path / "bench").exists(), err
+
+
 def test_an_untimed_column_is_a_dash_not_nan() -> None:
     assert both(float("nan"), float("nan"), 1.0, 1.0) == "-"
     assert both(3.0, 4.0, 1.5, 2.0) == "  2.00 | 2.00  "

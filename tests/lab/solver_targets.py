@@ -34,7 +34,7 @@ import numpy as np
 from fmpy import extract, read_model_description, simulate_fmu
 from scipy.integrate import solve_ivp
 
-from pendulum_fmu.bench.solvers import Study, run_study
+from pendulum_fmu.bench.solvers import PEERS, Study, run_study
 from pendulum_fmu.bench.workprecision.analysis import LEVELS, Point, against_dop853, cost_at, curve
 from pendulum_fmu.bench.workprecision.cdriver import Floor
 from pendulum_fmu.bench.workprecision.problems import Case, cases, exact_theta
@@ -320,7 +320,7 @@ def main(argv: list[str] | None = None) -> int:
     if not problems or any(p not in ("P1", "P2", "P3") for p in problems):
         parser.error(f"--problems must name P1, P2 and/or P3, got {args.problems!r}")
     study = run_study(args.fmu, args.driver, args.out, problems, args.budget, args.p3_periods, args.points,
-                      not args.no_peers, args.quick, log=print)
+                      () if args.no_peers else PEERS, args.quick, log=print)
     verdicts = judge(study, args.fmu, args.quick, not args.no_peers)
     section = markdown(verdicts)
     with (args.out / "report.md").open("a") as report:

@@ -29,7 +29,7 @@ from __future__ import annotations
 import math
 import shutil
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Collection
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -45,10 +45,10 @@ from pendulum_fmu.bench.workprecision.analysis import (
     log_slope,
 )
 from pendulum_fmu.bench.workprecision.cdriver import Floor, run_driver, shared_library
+from pendulum_fmu.bench.workprecision.peers import PEERS, SOLVE_IVP_METHODS
 from pendulum_fmu.bench.workprecision.problems import Grid, cases, make_grid
 from pendulum_fmu.bench.workprecision.report import cost_table, energy_table, plot_problem, write_csv
 from pendulum_fmu.bench.workprecision.runs import (
-    SOLVE_IVP_METHODS,
     Run,
     run_fmu_cs,
     run_fmu_me,
@@ -100,7 +100,8 @@ def _skipped(grid: Grid, runner: str, method: str, tol: float, budget: float) ->
 
 
 def python_runs(unzipped: Path, grid: Grid, tols_fmu: tuple[float, ...], tols_peer: tuple[float, ...],
-                euler: tuple[int, ...], budget: Budget, peers: bool, hints: dict[tuple[str, str, float], float],
+                euler: tuple[int, ...], budget: Budget, peers: Collection[str],
+                hints: dict[tuple[str, str, float], float],
                 log: Callable[[str], None]) -> list[Run]:
     """Every Python run of one case: the FMU's solvers through fmpy, then the peers.
 
@@ -116,8 +117,8 @@ def python_runs(unzipped: Path, grid: Grid, tols_fmu: tuple[float, ...], tols_pe
         Euler steps per output interval.
     budget : Budget
         Time budget of a run.
-    peers : bool
-        Also run the peers.
+    peers : collection of str
+        The peers to run, some of :data:`PEERS`.
     hints : dict
         (runner, method, tol) -> a predicted wall time for a first run (from P1 for P3).
     log : callable
@@ -131,10 +132,9 @@ def python_runs(unzipped: Path, grid: Grid, tols_fmu: tuple[float, ...], tols_pe
     case = grid.case
     key = (case.problem, case.amplitude_deg)
     jobs: list[tuple[str, str, float]] = [("fmpy", s, t) for s in CS_SOLVERS for t in tols_fmu]
-    if peers:
-        jobs += [("scipy", m, t) for m in (*SOLVE_IVP_METHODS, "dop853") for t in tols_peer]
-        jobs += [("fmpy-me", "cvode", t) for t in tols_fmu]
-        jobs += [("fmpy-me", "euler", float(k)) for k in euler]
+    jobs += [("scipy", m, t) for m in (*SOLVE_IVP_METHODS, "dop853") if m in peers for t in tols_peer]
+    jobs += [("fmpy-me", "cvode", t) for t in tols_fmu if "cvode" in peers]
+    jobs += [("fmpy-me", "euler", float(k)) for k in euler if "euler" in peers]
     runs = []
     for runner, method, tol in jobs:
         if not budget.allows(key, method + runner, hints.get((runner, method, tol))):
@@ -215,7 +215,7 @@ class Study:
 
 
 def run_study(fmu: Path, driver: Path, out: Path, problems: list[str], budget_s: float = 30.0,
-              p3_periods: float = 10_000.0, points: int = 50, peers: bool = True, quick: bool = False,
+              p3_periods: float = 10_000.0, points: int = 50, peers: Collection[str] = PEERS, quick: bool = False,
               log: Callable[[str], None] = lambda line: None) -> Study:
     """Run the study and write its files.
 
@@ -235,8 +235,8 @@ def run_study(fmu: Path, driver: Path, out: Path, problems: list[str], budget_s:
         Length of P3 in periods.
     points : int
         Output points a period.
-    peers : bool
-        Also run the peers (else only the FMU's solvers).
+    peers : collection of str
+        The peers to run beside the FMU's solvers, some of :data:`PEERS` (none: only the FMU's).
     quick : bool
         A smoke run: tolerances 1e-4 and 1e-8, P3 at most 100 periods.
     log : callable

@@ -122,7 +122,7 @@ def run_driver(driver: Path, library: Path, problems: list[str], tols: list[floa
     Raises
     ------
     RuntimeError
-        If the driver cannot run the FMU (exit status 2).
+        If the driver cannot run the FMU (exit status 2), dies, or prints no run.
     """
     command = [str(driver), str(library), "--problems", ",".join(problems),
                "--tols", ",".join(f"{t:g}" for t in tols), "--p3-periods", f"{p3_periods:g}",
@@ -130,6 +130,11 @@ def run_driver(driver: Path, library: Path, problems: list[str], tols: list[floa
     if repeat is not None:
         command += ["--repeat", str(repeat)]
     completed = subprocess.run(command, capture_output=True, text=True, check=False)
-    if completed.returncode == 2:
-        raise RuntimeError(f"{' '.join(command)} failed:\n{completed.stderr}")
-    return parse(completed.stdout)
+    # exit 1 is a run that failed, listed with its status; anything else but 0 is the driver's own
+    # failure (bad usage, a signal), and so is a run of the driver that lists no run at all
+    if completed.returncode not in (0, 1):
+        raise RuntimeError(f"{' '.join(command)} failed (exit {completed.returncode}):\n{completed.stderr}")
+    runs, floors = parse(completed.stdout)
+    if not runs:
+        raise RuntimeError(f"{' '.join(command)} printed no run (exit {completed.returncode}):\n{completed.stderr}")
+    return runs, floors

@@ -35,9 +35,6 @@ from scipy.integrate import ode, solve_ivp
 from pendulum_fmu.bench.workprecision.problems import Grid, energy_errors
 from pendulum_fmu.spec import CS_SOLVERS
 
-SOLVE_IVP_METHODS: tuple[str, ...] = ("RK45", "DOP853", "LSODA", "Radau")
-"""The scipy ``solve_ivp`` peers."""
-
 
 @dataclass
 class Run:
@@ -187,7 +184,7 @@ def run_solve_ivp(grid: Grid, method: str, rtol: float, atol: float | None = Non
     grid : Grid
         Case and output grid.
     method : str
-        One of :data:`SOLVE_IVP_METHODS`.
+        One of :data:`pendulum_fmu.bench.workprecision.peers.SOLVE_IVP_METHODS`.
     rtol : float
         Relative tolerance.
     atol : float, optional

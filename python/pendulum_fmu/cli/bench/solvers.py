@@ -7,6 +7,7 @@ import os
 import sys
 from pathlib import Path
 
+from pendulum_fmu.bench.workprecision.peers import PEERS
 from pendulum_fmu.cli.arguments import plain_text
 from pendulum_fmu.cli.extras import module_docstring
 
@@ -20,12 +21,14 @@ examples:
   bash scripts/bench.sh solvers --out out/bench    # the full study, about 6 min on 2 cores
                                                    # (the script also judges the project's targets)
   pendulum-fmu bench solvers --driver build/tests/c/bench_solvers --problems P1 --no-peers
+  pendulum-fmu bench solvers --driver build/tests/c/bench_solvers --problems P1 --peers DOP853,dop853
 """
 NO_DRIVER = ("the study times the FMU's solvers with the C driver tests/c/bench_solvers, a test program of the "
              "repository that the package does not carry: run bash scripts/bench.sh solvers in a source checkout, "
              "or give --driver")
 """The one line without ``--driver``: the package carries no test program and looks for none."""
 PROBLEMS = ("P1", "P2", "P3")
+
 
 
 def configure(parser: argparse.ArgumentParser) -> None:
@@ -44,7 +47,10 @@ def configure(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--p3-periods", type=float, default=10_000.0,
                         help="length of P3 in periods (default: 10000.0)")
     parser.add_argument("--points", type=int, default=50, help="output points a period (default: 50)")
-    parser.add_argument("--no-peers", action="store_true", help="only the FMU's solvers")
+    chosen = parser.add_mutually_exclusive_group()
+    chosen.add_argument("--peers", default=",".join(PEERS), metavar="NAMES",
+                        help=f"comma-separated peers to run beside the FMU's solvers (default: all, {','.join(PEERS)})")
+    chosen.add_argument("--no-peers", action="store_true", help="only the FMU's solvers")
     parser.add_argument("--quick", action="store_true",
                         help="a smoke run: tolerances 1e-4 and 1e-8, P3 at most 100 periods")
 
@@ -61,6 +67,12 @@ def run(args: argparse.Namespace) -> int:
     problems = [p.strip() for p in args.problems.split(",") if p.strip()]
     if not problems or any(p not in PROBLEMS for p in problems):
         print(f"bench solvers: --problems must name P1, P2 and/or P3, got {args.problems!r}", file=sys.stderr)
+        return 2
+    peers = [] if args.no_peers else [p.strip() for p in args.peers.split(",") if p.strip()]
+    unknown = [p for p in peers if p not in PEERS]
+    if unknown or not (peers or args.no_peers):
+        print(f"pendulum-fmu bench solvers: error: argument --peers: {args.peers!r} names no peer or an unknown one "
+              f"({', '.join(unknown) or 'none given'}); the peers are {', '.join(PEERS)}", file=sys.stderr)
         return 2
     try:
         fmu = locate_fmu(args.fmu)
@@ -84,7 +96,7 @@ def run(args: argparse.Namespace) -> int:
         return 2
     try:
         study = run_study(fmu, driver, args.out, problems, args.budget, args.p3_periods, args.points,
-                          not args.no_peers, args.quick, log=print)
+                          peers, args.quick, log=print)
     except SimulationError as error:
         print(f"pendulum-fmu bench solvers: error: {error}", file=sys.stderr)
         return 1
