@@ -171,8 +171,8 @@ def test_solver_evaluation_ratio_is_the_printed_one(fmu_path: Path, tmp_path: Pa
     assert held == "test"
     low, high = re.findall(NUMBER, figure)[:2]
     done = subprocess.run([sys.executable, "-m", "pendulum_fmu", "bench", "solvers", "--fmu", str(fmu_path),
-                           "--driver", str(driver), "--problems", "P1", "--peers", "DOP853,dop853", "--out", str(tmp_path)], cwd=REPO,
-                          capture_output=True, text=True, timeout=1200, check=False)
+                           "--driver", str(driver), "--problems", "P1", "--peers", "DOP853,dop853",
+                           "--out", str(tmp_path)], cwd=REPO, capture_output=True, text=True, timeout=1200, check=False)
     printed = done.stdout
     # The counts do not depend on the machine; the command judges no target (the lab does:
     # tests/lab/solver_targets.py), so it exits 0 when every run ran.
