@@ -184,10 +184,13 @@ def run_master(master: Master, H: float, stop: float, problem: InitialValueProbl
     return Coupled(times, rows[:, 0], rows[:, 1], rows[:, 2], rows[:, 3], rows[:, 4], seconds, iterations)
 
 
+ROW_REFERENCES = [THETA, OMEGA, THETA_EXACT, OMEGA_EXACT]
+"""Body's outputs of a row, read in one call."""
+
+
 def _outputs(pair: Pair, alpha: float) -> tuple[float, ...]:
-    body = pair.body
-    return (pair.get(body, THETA), pair.get(body, OMEGA), alpha, pair.get(body, THETA_EXACT),
-            pair.get(body, OMEGA_EXACT), 0.0)
+    theta, omega, theta_exact, omega_exact = pair.get_all(pair.body, ROW_REFERENCES)
+    return theta, omega, alpha, theta_exact, omega_exact, 0.0
 
 
 def _feed_gravity(pair: Pair, coupling: str) -> None:

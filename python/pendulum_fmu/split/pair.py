@@ -79,6 +79,10 @@ class Pair:
         """One real value."""
         return float((fmu.getFloat64 if self.v3 else fmu.getReal)([vr])[0])
 
+    def get_all(self, fmu: Any, vrs: list[int]) -> list[float]:
+        """Several real values in one call (a master's rows: a quarter of the calls of one a value)."""
+        return [float(v) for v in (fmu.getFloat64 if self.v3 else fmu.getReal)(vrs)]
+
     def set(self, fmu: Any, vr: int, value: float) -> None:
         """Set one real value."""
         (fmu.setFloat64 if self.v3 else fmu.setReal)([vr], [float(value)])
