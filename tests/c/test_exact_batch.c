@@ -5,8 +5,11 @@
  * initial angles, rotations, the separatrix, rest; times at t0 exactly, negative, far (past
  * 2^50 and 2^60 quarter periods), NaN and infinite, in blocks that mix them, and counts that
  * are not a multiple of the lane count; for the new states, arrays that mix every kind of
- * state, refused inputs and special times. Prints one summary line; exit status 0 iff every
- * check passed. */
+ * state, refused inputs and special times, and arrays of moving starts (librations of every
+ * amplitude and speed, next to the separatrix window's edge, k and m1 tiny, any g and L).
+ * A copy of the fma build counts the lanes its vectors did: releases from rest and moving
+ * librations must run there, not only agree. Prints one summary line; exit status 0 iff
+ * every check passed. */
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
