@@ -623,13 +623,11 @@ ONCE_STAGE OnceInputsV4 once_inputs_v4(int lanes, const double *theta0, const do
     return in;
 }
 
-/* A lane not taken runs a copy of lane `any` (taken), so that no loop of the set-up runs
- * longer for it */
-ONCE_STAGE void copy_taken(V4 *v, const int *taken, int any)
+/* v on the lanes taken, lane `any`'s value (a lane taken) on the others: a lane not taken
+ * runs a copy, so that no loop of the set-up runs longer for it */
+ONCE_STAGE V4 copy_taken(V4 v, V4Mask taken, int any)
 {
-    for (int l = 0; l < AVX_LANES; ++l) {
-        (*v)[l] = taken[l] ? (*v)[l] : (*v)[any];
-    }
+    return v4_pick(taken, v, v4_all(v[any]));
 }
 
 /* set_libration_scales's fields (k, k' = kc, K from the chain, w0) and t0; the rates, the
@@ -651,7 +649,7 @@ ONCE_STAGE void libration_scales_v4(LibrationV4 *s, const ChainsV4 *c, V4 k, V4 
 
 /* The librations s evaluated at tv; writes the lanes taken that are on the evaluation's
  * common path and returns them as bits */
-ONCE_STAGE int eval_taken_v4(const LibrationV4 *s, V4 tv, int lanes, const int *taken, double *theta, double *omega)
+ONCE_STAGE int eval_taken_v4(const LibrationV4 *s, V4 tv, int lanes, V4Mask taken, double *theta, double *omega)
 {
     V4 angle, om;
     const V4Mask path = eval_libration_v4(s, tv, &angle, &om);
@@ -677,9 +675,10 @@ ONCE_STAGE int once_avx(int lanes, const double *theta0, const DoubleDouble *w0,
     const OnceInputsV4 in = once_inputs_v4(lanes, theta0, NULL, w0, t);
     CosSinV4 trig;
     cos_sin_begin_v4(0.5 * in.th, &trig);   /* step 1: theta0 / 2 exact, no turn to subtract */
-    int taken[AVX_LANES], any = -1;
+    V4Mask taken;
+    int any = -1;
     for (int l = 0; l < AVX_LANES; ++l) {
-        taken[l] = l < lanes && trig.certain[l] && fabs(trig.cos_lead[l]) > 0x1p-500;
+        taken[l] = -(l < lanes && trig.certain[l] && fabs(trig.cos_lead[l]) > 0x1p-500);
         any = taken[l] && any < 0 ? l : any;
     }
     if (any < 0) {
@@ -688,8 +687,8 @@ ONCE_STAGE int once_avx(int lanes, const double *theta0, const DoubleDouble *w0,
     /* from_rest_start: m = k^2 (at most 1), k' = c's leading double */
     const V4 k = v4_abs(trig.sin_x), k2 = k * k;
     V4 m = v4_pick((V4Mask)(k2 < 1.0), k2, v4_all(1.0)), kc = v4_abs(trig.cos_lead);
-    copy_taken(&m, taken, any);
-    copy_taken(&kc, taken, any);
+    m = copy_taken(m, taken, any);
+    kc = copy_taken(kc, taken, any);
     /* settle_initial_angle: c < 0 (theta0 just past pi) moves th by a turn, s and c change sign */
     const V4Mask past = (V4Mask)(trig.cos_lead < 0.0);
     const V4Dd cosine = cos_sin_end_v4(&trig);
@@ -763,22 +762,23 @@ static int once_moving_avx(int lanes, const double *theta0, const double *omega0
     const V4 q_k = q.hi / k;
     V4 rf_x = q_k * q_k, rf_y = c.hi * c.hi;
     V4Dd m1_sum = v4_two_sum(m1.hi, m1.lo);
-    int taken[AVX_LANES], any = -1;
+    V4Mask taken;
+    int any = -1;
     for (int l = 0; l < AVX_LANES; ++l) {
         /* a libration (gap > 0 outside the fine window, m1 > 0, accepted) in the vectors' range */
-        taken[l] = l < lanes && in_range[l] && !(fabs(gap.hi[l]) < 0x1p-30 * hs_n[l]) && gap.hi[l] > 0.0
+        taken[l] = -(l < lanes && in_range[l] && !(fabs(gap.hi[l]) < 0x1p-30 * hs_n[l]) && gap.hi[l] > 0.0
                    && m1.hi[l] > 0.0 && elliptic_param_acceptable(m[l], m1.hi[l], m1.lo[l]) && k[l] != 0.0
-                   && m1_sum.hi[l] >= 0x1p-900 && rf_y[l] > 0.0;
+                   && m1_sum.hi[l] >= 0x1p-900 && rf_y[l] > 0.0);
         any = taken[l] && any < 0 ? l : any;
     }
     if (any < 0) {
         return 0;
     }
-    copy_taken(&m, taken, any);
-    copy_taken(&m1_sum.hi, taken, any);
-    copy_taken(&m1_sum.lo, taken, any);
-    copy_taken(&rf_x, taken, any);
-    copy_taken(&rf_y, taken, any);
+    m = copy_taken(m, taken, any);
+    m1_sum.hi = copy_taken(m1_sum.hi, taken, any);
+    m1_sum.lo = copy_taken(m1_sum.lo, taken, any);
+    rf_x = copy_taken(rf_x, taken, any);
+    rf_y = copy_taken(rf_y, taken, any);
     const V4Dd kc = v4_dd_sqrt(m1_sum);
     ChainsV4 chains;
     V4Dd K, inv_K;
