@@ -290,8 +290,9 @@ static void check_once(void)
 
 /* A moving start of kind `kind` for w0 = sqrt(g/L): librations of every amplitude and speed
  * (small, large, q next to c, next to locate_separatrix's fine window 2^-30 on either side,
- * k tiny, m1 tiny, theta0 just past pi, omega0 of a few ulps), a few rotations and
- * separatrices among them; both signs of theta0 and omega0 */
+ * k tiny, m1 tiny, theta0 just past pi, omega0 of a few ulps), a few rotations,
+ * separatrices and refused speeds (huge, infinite, NaN) among them; both signs of theta0 and
+ * omega0 */
 static void draw_moving(int kind, double w0, double *theta0, double *omega0)
 {
     const double sign_th = uniform() < 0.5 ? -1.0 : 1.0, sign_om = uniform() < 0.5 ? -1.0 : 1.0;
@@ -311,12 +312,13 @@ static void draw_moving(int kind, double w0, double *theta0, double *omega0)
     case 2: speed = edge * (1.0 - pow(10.0, -1.0 - 7.0 * uniform())); break;   /* q next to c */
     case 3: speed = edge / (1.0 + 0x1p-30 * (0.25 + 3.75 * uniform())); break;   /* the fine window's edge */
     case 4: speed = uniform() < 0.2 ? 0.0 : w0 * pow(10.0, -5.0 - 295.0 * uniform()); break;
-    case 7: speed = (const double[]){0x1p-1074, 0x1p-1073, 1e-300, 1e-20}[(int)(uniform() * 4)]; break;
+    case 7: speed = (const double[]){0x1p-1074, 0x1p-1073, 1e-300, 1e-20, 1.7e308, INFINITY, NAN}[(int)(uniform() * 7)];
+        break;
     case 8: speed = uniform() < 0.2 ? edge : edge * (1.0 + pow(10.0, -8.0 * uniform())); break;   /* rotation */
     default: break;
     }
     *theta0 = th;
-    *omega0 = sign_om * (speed > 0.0 ? speed : 0x1p-1074);
+    *omega0 = sign_om * (speed == 0.0 ? 0x1p-1074 : speed);
 }
 
 /* A moving libration that the vectors must take: |theta0| <= 3.2, m1 clear of the fine
