@@ -28,8 +28,9 @@
 typedef double V4 __attribute__((vector_size(32)));
 typedef long long V4Mask __attribute__((vector_size(32)));
 
-/* a stage that both kinds of block use, inlined in each: GCC put such stages out of line,
- * and a release from rest took 10-20 % longer (bench_exact's once kind) */
+/* a stage inlined where it is used: left to GCC, the stages both kinds of block share and the
+ * block of releases from rest went out of line, and a release from rest took 10-20 % longer
+ * (bench_exact's once kind) */
 #define ONCE_STAGE static inline __attribute__((always_inline))
 
 /* lanes to a vector, and the mask of every lane */
@@ -670,7 +671,7 @@ ONCE_STAGE int eval_taken_v4(const LibrationV4 *s, V4 tv, int lanes, V4Mask take
  * Returns the lanes done as bits; the others (a cosine whose leading double is not certain or
  * within 2^-500 of 0, off the evaluation's common path) are the caller's. */
 ONCE_STAGE int once_avx(int lanes, const double *theta0, const DoubleDouble *w0, double t0, const double *t,
-                    double *theta, double *omega)
+                        double *theta, double *omega)
 {
     const OnceInputsV4 in = once_inputs_v4(lanes, theta0, NULL, w0, t);
     CosSinV4 trig;
