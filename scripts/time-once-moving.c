@@ -19,6 +19,7 @@
 #define STATES 100000
 #define ROUNDS 7
 #define CALL 64
+#define PI 3.141592653589793
 
 static double theta0[STATES], omega0[STATES], ones[STATES], times[STATES], theta[STATES], omega[STATES];
 
@@ -67,13 +68,13 @@ int main(void)
         x ^= x << 13;
         x ^= x >> 7;
         x ^= x << 17;
-        times[j] = (double)(x >> 11) * 0x1p-53 * 50.0 * 2.0 * M_PI;
+        times[j] = (double)(x >> 11) * 0x1p-53 * 50.0 * 2.0 * PI;
         ones[j] = 1.0;
     }
     double sum = 0.0;
     for (size_t c = 0; c < sizeof cases / sizeof cases[0]; ++c) {
         for (int j = 0; j < STATES; ++j) {
-            theta0[j] = cases[c][0] * (M_PI / 180.0) * (1.0 + 1e-9 * (double)(j & 1023));
+            theta0[j] = cases[c][0] * (PI / 180.0) * (1.0 + 1e-9 * (double)(j & 1023));
             omega0[j] = cases[c][1];
         }
         double ns[2][ROUNDS];
