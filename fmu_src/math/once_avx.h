@@ -780,6 +780,8 @@ static int once_moving_avx(int lanes, const double *theta0, const double *omega0
     m1_sum.lo = copy_taken(m1_sum.lo, taken, any);
     rf_x = copy_taken(rf_x, taken, any);
     rf_y = copy_taken(rf_y, taken, any);
+    /* F first: its roots wait on nothing of the chain, whose roots then follow them */
+    const V4 f = (v4_abs(s_hi) / k) * rf_v4(rf_x, rf_y, v4_all(1.0));
     const V4Dd kc = v4_dd_sqrt(m1_sum);
     ChainsV4 chains;
     V4Dd K, inv_K;
@@ -787,7 +789,6 @@ static int once_moving_avx(int lanes, const double *theta0, const double *omega0
     chains_with_K_v4(m, kc.hi, kc.lo, &chains, &K, &inv_K, &s.bottom_scale);
     libration_scales_v4(&s, &chains, k, kc.hi, in.w0_hi, K.hi, t0);
     /* u0 = F, or 2K - F for omega0 < 0 (F(pi - phi) = 2K - F(phi)), with the sign of s */
-    const V4 f = (v4_abs(s_hi) / k) * rf_v4(rf_x, rf_y, v4_all(1.0));
     const V4 base = v4_pick((V4Mask)(in.om >= 0.0), f, (2.0 * K.hi - f) + 2.0 * K.lo);
     const V4 u0 = v4_pick((V4Mask)(s_hi < 0.0), -base, base);
     /* set_quarter_rates: rho = (w_n / K) 2^e, x0 = u0 / K */
