@@ -1199,8 +1199,9 @@ void pendulum_exact_eval_many(const PendulumExact *ex, size_t n, const double *t
     }
 }
 
-/* The fma build (GCC on x86-64, the fma and AVX enabled) sets up and evaluates four new states
- * at once in AVX vectors (once_avx.h): the same bits as the loop below. */
+/* The fma build (GCC on x86-64, the fma and AVX enabled) sets up and evaluates four releases
+ * from rest, or four moving librations, at once in AVX vectors (once_avx.h): the same bits as
+ * once_scalar below. */
 #if defined(PENDULUM_DD_FMA) && defined(__GNUC__) && defined(__x86_64__)
 #define EXACT_ONCE_AVX 1
 #include "once_avx.h"
@@ -1210,6 +1211,85 @@ void pendulum_exact_eval_many(const PendulumExact *ex, size_t n, const double *t
 #define ONCE_BLOCK 4
 #if defined(EXACT_ONCE_AVX) && AVX_LANES != ONCE_BLOCK
 #error "a block of pendulum_exact_once_gl_many is one vector of once_avx.h"
+#endif
+
+/* One element of pendulum_exact_once_gl_many by pendulum_exact_init_gl and _eval; returns 1
+ * where it is refused (inputs or time), else 0 */
+static size_t once_scalar(double theta0, double omega0, double g, double L, double t0, double t, double *theta,
+                          double *omega)
+{
+    PendulumExact ex;
+    if (pendulum_exact_init_gl(&ex, theta0, omega0, g, L, t0) != 0) {
+        *theta = *omega = NAN;
+        return 1;
+    }
+    pendulum_exact_eval(&ex, t, theta, omega);
+    return !pendulum_exact_resolvable(&ex, t);
+}
+
+#ifdef EXACT_ONCE_AVX
+/* sqrt(g / L) in double-double for the last g and L seen, formed again only for another g or L
+ * (a run of elements with one g and L forms it once) */
+typedef struct {
+    double g, L;
+    DoubleDouble w0;
+    int ok;   /* w0_of_gl accepted g and L */
+} OnceRate;
+
+static inline int once_rate_ok(OnceRate *r, double g, double L)
+{
+    if (!(same_double(g, r->g) && same_double(L, r->L))) {
+        r->g = g;
+        r->L = L;
+        r->ok = w0_of_gl(g, L, &r->w0) == 0;
+    }
+    return r->ok;
+}
+
+/* An element for the vectors of once_moving_avx: a moving start, |theta0| <= 3.2, g and L
+ * accepted (w0 in *r), t0 finite */
+static inline int once_moving(OnceRate *r, double theta0, double omega0, double g, double L, double t0)
+{
+    return omega0 != 0.0 && fabs(theta0) <= 3.2 && isfinite(t0) && once_rate_ok(r, g, L);
+}
+
+/* The moving starts of the n elements (once_moving), four at a time in vectors
+ * (once_moving_avx), those it leaves one by one (once_scalar); returns the count of refused
+ * elements among them. The caller's loop over the releases from rest leaves them here: in it,
+ * the moving starts' code cost those releases a tenth of their time (bench_exact's once kind). */
+__attribute__((noinline)) static size_t once_moving_all(size_t n, const double *theta0, const double *omega0,
+                                                        const double *g, const double *L, double t0,
+                                                        const double *t, double *theta, double *omega)
+{
+    OnceRate rate = {NAN, NAN, {NAN, NAN}, 0};
+    size_t refused = 0, j = 0;
+    while (j < n) {
+        double th[ONCE_BLOCK], om[ONCE_BLOCK], times[ONCE_BLOCK], th_out[ONCE_BLOCK], om_out[ONCE_BLOCK];
+        DoubleDouble w0[ONCE_BLOCK];
+        size_t at[ONCE_BLOCK];
+        int taken = 0;
+        for (; j < n && taken < ONCE_BLOCK; ++j) {
+            if (once_moving(&rate, theta0[j], omega0[j], g[j], L[j], t0)) {
+                th[taken] = theta0[j];
+                om[taken] = omega0[j];
+                times[taken] = t[j];
+                w0[taken] = rate.w0;
+                at[taken++] = j;
+            }
+        }
+        const int done = taken > 0 ? once_moving_avx(taken, th, om, w0, t0, times, th_out, om_out) : 0;
+        for (int l = 0; l < taken; ++l) {
+            const size_t k = at[l];
+            if (done & (1 << l)) {
+                theta[k] = th_out[l];
+                omega[k] = om_out[l];
+            } else {
+                refused += once_scalar(theta0[k], omega0[k], g[k], L[k], t0, t[k], &theta[k], &omega[k]);
+            }
+        }
+    }
+    return refused;
+}
 #endif
 
 size_t pendulum_exact_once_gl_many(size_t n, const double *theta0, const double *omega0, const double *g,
@@ -1222,31 +1302,31 @@ size_t pendulum_exact_once_gl_many(size_t n, const double *theta0, const double 
 #endif
     size_t refused = 0;
 #ifdef EXACT_ONCE_AVX
-    double last_g = NAN, last_L = NAN;   /* sqrt(g / L) formed once for a run of one g and L */
-    DoubleDouble last_w0 = {NAN, NAN};
-    int w0_ok = 0;
+    OnceRate rate = {NAN, NAN, {NAN, NAN}, 0};
     const int t0_ok = isfinite(t0);
+    int moving = 0;   /* any moving start for once_moving_all */
 #endif
     for (size_t i = 0; i < n; i += ONCE_BLOCK) {
         const int lanes = n - i < ONCE_BLOCK ? (int)(n - i) : ONCE_BLOCK;
         int done = 0;
 #ifdef EXACT_ONCE_AVX
-        /* the releases from rest of these elements, in vectors */
+        /* the releases from rest of these elements in vectors; the moving starts are left to
+         * once_moving_all (as done) */
         double th[ONCE_BLOCK], times[ONCE_BLOCK], th_out[ONCE_BLOCK], om_out[ONCE_BLOCK];
         DoubleDouble w0[ONCE_BLOCK];
         int taken = 0, at[ONCE_BLOCK];
         for (int l = 0; l < lanes; ++l) {
             const size_t j = i + (size_t)l;
-            if (!(same_double(g[j], last_g) && same_double(L[j], last_L))) {
-                last_g = g[j];
-                last_L = L[j];
-                w0_ok = w0_of_gl(g[j], L[j], &last_w0) == 0;
-            }
-            if (w0_ok && t0_ok && omega0[j] == 0.0 && fabs(theta0[j]) <= 3.2) {
-                th[taken] = theta0[j];
-                times[taken] = t[j];
-                w0[taken] = last_w0;
-                at[taken++] = l;
+            if (once_rate_ok(&rate, g[j], L[j]) && t0_ok && fabs(theta0[j]) <= 3.2) {
+                if (omega0[j] == 0.0) {
+                    th[taken] = theta0[j];
+                    times[taken] = t[j];
+                    w0[taken] = rate.w0;
+                    at[taken++] = l;
+                } else {
+                    done |= 1 << l;
+                    moving = 1;
+                }
             }
         }
         const int taken_done = taken > 0 ? once_avx(taken, th, w0, t0, times, th_out, om_out) : 0;
@@ -1260,19 +1340,16 @@ size_t pendulum_exact_once_gl_many(size_t n, const double *theta0, const double 
 #endif
         for (int l = 0; l < lanes; ++l) {
             const size_t j = i + (size_t)l;
-            if (done & (1 << l)) {
-                continue;
-            }
-            PendulumExact ex;
-            if (pendulum_exact_init_gl(&ex, theta0[j], omega0[j], g[j], L[j], t0) == 0) {
-                pendulum_exact_eval(&ex, t[j], &theta[j], &omega[j]);
-                refused += !pendulum_exact_resolvable(&ex, t[j]);
-            } else {
-                theta[j] = omega[j] = NAN;
-                refused += 1;
+            if (!(done & (1 << l))) {
+                refused += once_scalar(theta0[j], omega0[j], g[j], L[j], t0, t[j], &theta[j], &omega[j]);
             }
         }
     }
+#ifdef EXACT_ONCE_AVX
+    if (moving) {
+        refused += once_moving_all(n, theta0, omega0, g, L, t0, t, theta, omega);
+    }
+#endif
     return refused;
 }
 

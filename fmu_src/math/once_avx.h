@@ -9,7 +9,9 @@
  * vector square root, and the two-products by the fma as the fma build's scalar ones. So a lane
  * has the scalar bits: dd_cos_sin_begin and _end (the cosine of theta0/2 and the double sine),
  * elliptic_param_begin and _finish (the Landen chain, K and 1/K), the fields of
- * init_from_rest, and eval_any's libration (phase_near, the Landen pair,
+ * init_from_rest (once_avx) or, for a moving libration, of exact_init_dd's general path
+ * (once_moving_avx: the scaled rates, q, m1, dd_sqrt, elliptic_RF, the initial phase; glibc's
+ * hypot called lane by lane), and eval_any's libration (phase_near, the Landen pair,
  * libration_angle_omega, add_half_turns: the roundings of pendulum_exact_eval, whose inline
  * common case reaches them in fewer steps) with its whole turns. Where the scalar
  * code branches on a value, each lane computes what it needs of both sides and keeps its own
@@ -25,6 +27,11 @@
 
 typedef double V4 __attribute__((vector_size(32)));
 typedef long long V4Mask __attribute__((vector_size(32)));
+
+/* a stage inlined where it is used: left to GCC, the stages both kinds of block share and the
+ * block of releases from rest went out of line, and a release from rest took 10-20 % longer
+ * (bench_exact's once kind) */
+#define ONCE_STAGE static inline __attribute__((always_inline))
 
 /* lanes to a vector, and the mask of every lane */
 #define AVX_LANES 4
@@ -77,6 +84,18 @@ static inline V4Dd v4_fast_two_sum(V4 a, V4 b)
     return r;
 }
 
+/* dd_add of dd.h: the sums of the high and of the low parts, each error-free, two
+ * renormalisations */
+static inline V4Dd v4_dd_add(V4Dd x, V4Dd y)
+{
+    V4Dd s = v4_two_sum(x.hi, y.hi);
+    const V4Dd t = v4_two_sum(x.lo, y.lo);
+    s.lo += t.hi;
+    s = v4_fast_two_sum(s.hi, s.lo);
+    s.lo += t.lo;
+    return v4_fast_two_sum(s.hi, s.lo);
+}
+
 static inline V4Dd v4_dd_mul(V4Dd x, V4Dd y)
 {
     V4Dd p = v4_two_prod(x.hi, y.hi);
@@ -118,6 +137,25 @@ static inline V4Dd v4_dd_neg(V4Dd x)
 static inline V4 v4_abs(V4 x)
 {
     return (V4)_mm256_andnot_pd(_mm256_set1_pd(-0.0), (__m256d)x);
+}
+
+/* the larger of a and b, neither NaN (fmax) */
+static inline V4 v4_max(V4 a, V4 b)
+{
+    return (V4)_mm256_max_pd((__m256d)a, (__m256d)b);
+}
+
+static inline V4 v4_sqrt(V4 x)
+{
+    return (V4)_mm256_sqrt_pd((__m256d)x);
+}
+
+/* dd_sqrt of dd.h for x.hi in [2^-900, inf): s = sqrt(x.hi), sqrt(x) = s + (x - s^2) / (2 s) */
+static inline V4Dd v4_dd_sqrt(V4Dd x)
+{
+    const V4 s = v4_sqrt(x.hi);
+    const V4Dd sq = v4_two_prod(s, s);
+    return v4_fast_two_sum(s, (((x.hi - sq.hi) - sq.lo) + x.lo) / (2.0 * s));
 }
 
 /* --- dd_cos_sin_begin and _end on four lanes (dd.c) -------------------------------------- */
@@ -164,7 +202,7 @@ static inline void v4_sin_versine_small(V4Dd r, V4Dd *w, V4Dd *v)
 
 /* dd_cos_sin_begin on four arguments x + 0, |x| < 2 (reduce_quadrant's first branch), into
  * a CosSinV4 */
-static inline void cos_sin_begin_v4(V4 xh, CosSinV4 *out)
+ONCE_STAGE void cos_sin_begin_v4(V4 xh, CosSinV4 *out)
 {
     /* reduce_quadrant: n in {-1, 0, 1}, y = x - n pi/2 (y = x for n = 0) */
     const V4 n = v4_pick((V4Mask)(xh > 0.5 * HALF_PI_HI), v4_all(1.0), v4_all(0.0))
@@ -231,7 +269,7 @@ static inline void cos_sin_begin_v4(V4 xh, CosSinV4 *out)
 }
 
 /* dd_cos_sin_end of cos_sin_begin_v4's lanes: cos x in double-double */
-static inline V4Dd cos_sin_end_v4(const CosSinV4 *in)
+ONCE_STAGE V4Dd cos_sin_end_v4(const CosSinV4 *in)
 {
     const V4Mask odd = (V4Mask)(in->n != 0.0);
     const V4 flip = v4_pick((V4Mask)(in->n > 0.0), v4_all(-1.0), v4_all(1.0));
@@ -346,7 +384,7 @@ static inline void tails_finish_v4(const TailsV4 *t, V4 kc_bottom, V4 bottom_m, 
  * level's tail follows its
  * level of the chain, so that the two chains of quotients overlap (the same operations on each
  * lane, in another order). Writes the chain's levels to *c, K, 1/K and the bottom scale. */
-static inline void chains_with_K_v4(V4 m, V4 kc, V4 kc_lo, ChainsV4 *c, V4Dd *K, V4Dd *inv_K, V4 *bottom_scale)
+ONCE_STAGE void chains_with_K_v4(V4 m, V4 kc, V4 kc_lo, ChainsV4 *c, V4Dd *K, V4Dd *inv_K, V4 *bottom_scale)
 {
     V4 kc_n = kc, m_n = m, levels = v4_all(0.0);
     V4Mask going = V4_EVERY;
@@ -364,7 +402,7 @@ static inline void chains_with_K_v4(V4 m, V4 kc, V4 kc_lo, ChainsV4 *c, V4Dd *K,
         /* elliptic_param_begin's level on every lane, then elliptic_param_finish's */
         const V4 kc_level = kc_n;
         const V4 one_plus_kc = 1.0 + kc_n, half = 0.5 * one_plus_kc;
-        const V4 root_kc = (V4)_mm256_sqrt_pd((__m256d)kc_n);
+        const V4 root_kc = v4_sqrt(kc_n);
         const V4 kc_next = root_kc / half;
         const V4Mask small = (V4Mask)(kc_n < 0.5);   /* k_next by one quotient of either form */
         const V4 k_next = v4_pick(small, 1.0 - kc_n, m_n) / v4_pick(small, one_plus_kc, one_plus_kc * one_plus_kc);
@@ -379,6 +417,42 @@ static inline void chains_with_K_v4(V4 m, V4 kc, V4 kc_lo, ChainsV4 *c, V4Dd *K,
     c->levels = levels;
     c->bottom_m = m_n;
     tails_finish_v4(&t, kc_n, m_n, K, inv_K, bottom_scale);
+}
+
+/* --- elliptic_RF on four lanes (elliptic.c) ---------------------------------------------- */
+
+/* elliptic_RF(x, y, z) for finite x, y, z >= 0 of which at most one is 0 (its duplication
+ * and series): the duplication theorem (DLMF 19.26.18) until 4^-n spread0 < 0.004 A_n, each
+ * lane stopping at its own step (a lane that has stopped keeps its A_n and 4^-n), then
+ * DLMF 19.36.1's series in X = 1 - x_n / A_n, Y, Z. */
+static inline V4 rf_v4(V4 x, V4 y, V4 z)
+{
+    const V4 x0 = x, y0 = y;
+    const V4 mean0 = (x + y + z) / 3.0;
+    const V4 spread0 = v4_max(v4_abs(mean0 - x), v4_max(v4_abs(mean0 - y), v4_abs(mean0 - z)));
+    V4 mean = mean0, pow4 = v4_all(1.0);   /* pow4 = 4^-n */
+    V4Mask going = V4_EVERY;
+    for (int i = 0; i < 200; ++i) {
+        going &= (V4Mask)(pow4 * spread0 >= 0.004 * mean);
+        if (v4_bits(going) == 0) {
+            break;
+        }
+        const V4 sx = v4_sqrt(x), sy = v4_sqrt(y), sz = v4_sqrt(z);
+        const V4 lambda = sx * sy + sy * sz + sz * sx;
+        x = 0.25 * (x + lambda);   /* read no more once its lane has stopped */
+        y = 0.25 * (y + lambda);
+        z = 0.25 * (z + lambda);
+        mean = v4_pick(going, 0.25 * (mean + lambda), mean);
+        pow4 = v4_pick(going, pow4 * 0.25, pow4);
+    }
+    const V4 X = (mean0 - x0) * pow4 / mean;
+    const V4 Y = (mean0 - y0) * pow4 / mean;
+    const V4 Z = -(X + Y);
+    const V4 E2 = X * Y - Z * Z;
+    const V4 E3 = X * Y * Z;
+    const V4 series = 1.0 - E2 / 10.0 + E3 / 14.0 + E2 * E2 / 24.0 - 3.0 * E2 * E3 / 44.0
+                      - 5.0 * E2 * E2 * E2 / 208.0 + 3.0 * E3 * E3 / 104.0 + E2 * E2 * E3 / 16.0;
+    return series / v4_sqrt(mean);
 }
 
 /* --- eval_any's libration on four lanes (exact.c) ---------------------------------------- */
@@ -466,7 +540,7 @@ typedef struct {
  * within the series, tv != t0; the caller checks the rest). The phase's nearest integer by the
  * shift where the fma build's phase_near rounds with rint: they differ only in the sign of a
  * zero, which no output reads. */
-static inline V4Mask eval_libration_v4(const LibrationV4 *s, V4 tv, V4 *theta, V4 *omega)
+ONCE_STAGE V4Mask eval_libration_v4(const LibrationV4 *s, V4 tv, V4 *theta, V4 *omega)
 {
     /* phase_at and phase_near */
     const V4Dd tau = v4_two_sum(tv, -s->t0);
@@ -513,7 +587,7 @@ static inline V4Mask eval_libration_v4(const LibrationV4 *s, V4 tv, V4 *theta, V
     return (V4Mask)(v4_abs(x_hi) < 0x1p50) & (V4Mask)(z <= ELLIPTIC_SERIES_Z_MAX) & (V4Mask)(tv != s->t0);
 }
 
-/* --- four releases from rest, set up and evaluated once ---------------------------------- */
+/* --- new states set up and evaluated once ------------------------------------------------ */
 
 /* a and b the same double, bit for bit (+0 and -0 differ; NaN is no double of a set-up) */
 static int same_double(double a, double b)
@@ -524,40 +598,98 @@ static int same_double(double a, double b)
     return x == y;
 }
 
+/* test_exact_batch counts the lanes each kind of block did through this; nothing here */
+#ifndef ONCE_AVX_TALLY
+#define ONCE_AVX_TALLY(kind, done) ((void)0)
+#endif
+
+/* A block's elements as lanes (a lane past `lanes` repeats element 0; omega0 NULL: 0) */
+typedef struct {
+    V4 th, om, w0_hi, w0_lo, tv;
+} OnceInputsV4;
+
+ONCE_STAGE OnceInputsV4 once_inputs_v4(int lanes, const double *theta0, const double *omega0,
+                                       const DoubleDouble *w0, const double *t)
+{
+    V4 th, om, w0_hi, w0_lo, tv;
+    for (int l = 0; l < AVX_LANES; ++l) {
+        const int from = l < lanes ? l : 0;
+        th[l] = theta0[from];
+        om[l] = omega0 != NULL ? omega0[from] : 0.0;
+        w0_hi[l] = w0[from].hi;
+        w0_lo[l] = w0[from].lo;
+        tv[l] = t[from];
+    }
+    const OnceInputsV4 in = {th, om, w0_hi, w0_lo, tv};
+    return in;
+}
+
+/* v on the lanes taken, lane `any`'s value (a lane taken) on the others: a lane not taken
+ * runs a copy, so that no loop of the set-up runs longer for it */
+ONCE_STAGE V4 copy_taken(V4 v, V4Mask taken, int any)
+{
+    return v4_pick(taken, v, v4_all(v[any]));
+}
+
+/* set_libration_scales's fields (k, k' = kc, K from the chain, w0) and t0; the rates, the
+ * initial phase and the turns are the caller's */
+ONCE_STAGE void libration_scales_v4(LibrationV4 *s, const ChainsV4 *c, V4 k, V4 kc, V4 w0_hi, V4 K_hi, double t0)
+{
+    s->t0 = v4_all(t0);
+    s->K_hi = K_hi;
+    s->bottom_m = c->bottom_m;
+    s->sqrt_k1 = k / (1.0 + kc);
+    s->kc = kc;
+    s->omega_half = k * w0_hi;
+    s->levels = c->levels;
+    s->most = c->most;
+    s->landen_k = c->landen_k;
+    s->landen_1pk = c->landen_1pk;
+    s->landen_1mk = c->landen_1mk;
+}
+
+/* The librations s evaluated at tv; writes the lanes taken that are on the evaluation's
+ * common path and returns them as bits */
+ONCE_STAGE int eval_taken_v4(const LibrationV4 *s, V4 tv, int lanes, V4Mask taken, double *theta, double *omega)
+{
+    V4 angle, om;
+    const V4Mask path = eval_libration_v4(s, tv, &angle, &om);
+    int done = 0;
+    for (int l = 0; l < lanes; ++l) {
+        if (taken[l] && path[l]) {
+            theta[l] = angle[l];
+            omega[l] = om[l];
+            done |= 1 << l;
+        }
+    }
+    return done;
+}
+
 /* Up to four releases from rest (omega0 = 0, |theta0| <= 3.2, w0 accepted) set up at t0 and
  * evaluated once each at t[l], all in vectors: init_from_rest's operations (the cosine begun,
  * the chain, the cosine ended, K, the rates) and the evaluation's, without a set-up written.
  * Returns the lanes done as bits; the others (a cosine whose leading double is not certain or
  * within 2^-500 of 0, off the evaluation's common path) are the caller's. */
-static int once_avx(int lanes, const double *theta0, const DoubleDouble *w0, double t0, const double *t,
-                    double *theta, double *omega)
+ONCE_STAGE int once_avx(int lanes, const double *theta0, const DoubleDouble *w0, double t0, const double *t,
+                        double *theta, double *omega)
 {
-    V4 th, w0_hi, w0_lo, tv;
-    for (int l = 0; l < AVX_LANES; ++l) {
-        const int from = l < lanes ? l : 0;
-        th[l] = theta0[from];
-        w0_hi[l] = w0[from].hi;
-        w0_lo[l] = w0[from].lo;
-        tv[l] = t[from];
-    }
+    const OnceInputsV4 in = once_inputs_v4(lanes, theta0, NULL, w0, t);
     CosSinV4 trig;
-    cos_sin_begin_v4(0.5 * th, &trig);   /* step 1: theta0 / 2 exact, no turn to subtract */
-    int eligible[AVX_LANES], any = -1;
+    cos_sin_begin_v4(0.5 * in.th, &trig);   /* step 1: theta0 / 2 exact, no turn to subtract */
+    V4Mask taken;
+    int any = -1;
     for (int l = 0; l < AVX_LANES; ++l) {
-        eligible[l] = l < lanes && trig.certain[l] && fabs(trig.cos_lead[l]) > 0x1p-500;
-        any = eligible[l] && any < 0 ? l : any;
+        taken[l] = -(l < lanes && trig.certain[l] && fabs(trig.cos_lead[l]) > 0x1p-500);
+        any = taken[l] && any < 0 ? l : any;
     }
     if (any < 0) {
         return 0;
     }
-    /* from_rest_start: m = k^2 (at most 1), k' = c's leading double; a lane not taken runs a
-     * copy of one taken */
+    /* from_rest_start: m = k^2 (at most 1), k' = c's leading double */
     const V4 k = v4_abs(trig.sin_x), k2 = k * k;
     V4 m = v4_pick((V4Mask)(k2 < 1.0), k2, v4_all(1.0)), kc = v4_abs(trig.cos_lead);
-    for (int l = 0; l < AVX_LANES; ++l) {
-        m[l] = eligible[l] ? m[l] : m[any];
-        kc[l] = eligible[l] ? kc[l] : kc[any];
-    }
+    m = copy_taken(m, taken, any);
+    kc = copy_taken(kc, taken, any);
     /* settle_initial_angle: c < 0 (theta0 just past pi) moves th by a turn, s and c change sign */
     const V4Mask past = (V4Mask)(trig.cos_lead < 0.0);
     const V4Dd cosine = cos_sin_end_v4(&trig);
@@ -568,35 +700,106 @@ static int once_avx(int lanes, const double *theta0, const DoubleDouble *w0, dou
     V4Dd K, inv_K;
     LibrationV4 s;
     chains_with_K_v4(m, kc, c.lo, &chains, &K, &inv_K, &s.bottom_scale);
-    /* from_rest_fields */
-    const V4Dd rho = v4_dd_mul((V4Dd){w0_hi, w0_lo}, inv_K);
+    /* from_rest_fields: rho = w0 / K, u0 = +-K (0 at the bottom), x0 = +-1 */
+    libration_scales_v4(&s, &chains, k, kc, in.w0_hi, K.hi, t0);
+    const V4Dd rho = v4_dd_mul((V4Dd){in.w0_hi, in.w0_lo}, inv_K);
     const V4 u0 = v4_pick((V4Mask)(k == 0.0), v4_all(0.0), v4_pick((V4Mask)(s_hi < 0.0), -K.hi, K.hi));
-    s.theta_turns = v4_pick(past, v4_pick((V4Mask)(th > 0.0), v4_all(1.0), v4_all(-1.0)), v4_all(0.0));
-    s.t0 = v4_all(t0);
+    s.theta_turns = v4_pick(past, v4_pick((V4Mask)(in.th > 0.0), v4_all(1.0), v4_all(-1.0)), v4_all(0.0));
     s.rho_hi = rho.hi;
     s.rho_lo = rho.lo;
     s.x0_hi = v4_pick((V4Mask)(u0 < 0.0), v4_all(-1.0), v4_pick((V4Mask)(u0 > 0.0), v4_all(1.0), v4_all(0.0)));
     s.x0_lo = v4_all(0.0);
-    s.K_hi = K.hi;
-    s.bottom_m = chains.bottom_m;
-    s.sqrt_k1 = k / (1.0 + kc);
-    s.kc = kc;
-    s.omega_half = k * w0_hi;
-    s.levels = chains.levels;
-    s.most = chains.most;
-    s.landen_k = chains.landen_k;
-    s.landen_1pk = chains.landen_1pk;
-    s.landen_1mk = chains.landen_1mk;
-    V4 angle, om;
-    const V4Mask path = eval_libration_v4(&s, tv, &angle, &om);
-    int done = 0;
-    for (int l = 0; l < lanes; ++l) {
-        if (eligible[l] && path[l]) {
-            theta[l] = angle[l];
-            omega[l] = om[l];
-            done |= 1 << l;
-        }
+    const int done = eval_taken_v4(&s, in.tv, lanes, taken, theta, omega);
+    ONCE_AVX_TALLY(rest, done);
+    return done;
+}
+
+/* Up to four moving starts (omega0 != 0, |theta0| <= 3.2, w0 accepted) set up at t0 and
+ * evaluated once each at t[l], in vectors: exact_init_dd's general path for a libration
+ * (finish_initial_angle, locate_separatrix, libration_parameter, init_libration,
+ * set_quarter_rates) and the evaluation, without a set-up written. Returns the lanes done as
+ * bits; the others are the caller's: rotations, the separatrix and locate_separatrix's fine
+ * window next to it, parameters elliptic_param_acceptable refuses, k = 0, and the rare lanes
+ * outside the vectors' range (a power of two of the rates beyond 2^+-1000, m1 below 2^-900,
+ * where dd_scalbn and dd_sqrt take other paths), and times off the evaluation's common path. */
+static int once_moving_avx(int lanes, const double *theta0, const double *omega0, const DoubleDouble *w0, double t0,
+                           const double *t, double *theta, double *omega)
+{
+    const OnceInputsV4 in = once_inputs_v4(lanes, theta0, omega0, w0, t);
+    CosSinV4 trig;
+    cos_sin_begin_v4(0.5 * in.th, &trig);   /* step 1: theta0 / 2 exact, no turn to subtract */
+    /* finish_initial_angle: c < 0 moves th by a turn, s and c change sign (its c = -0 with
+     * th < 0 is no libration: gap = -hs_n) */
+    const V4Dd cosine = cos_sin_end_v4(&trig);
+    const V4Mask past = (V4Mask)(cosine.hi < 0.0);
+    const V4Dd c = v4_pick_dd(past, v4_dd_neg(cosine), cosine);
+    const V4 s_hi = v4_pick(past, -trig.sin_x, trig.sin_x);
+    /* locate_separatrix: w_n = w0 2^-e, hs_n = (|omega0|/2) 2^-e for e the exponent of the
+     * larger; gap = c w_n - hs_n, the sign of m1 */
+    const V4 half_speed = 0.5 * v4_abs(in.om);
+    V4 down, up;
+    int in_range[AVX_LANES];
+    for (int l = 0; l < AVX_LANES; ++l) {
+        const int e = dd_frexp_exponent(larger(in.w0_hi[l], half_speed[l]));
+        in_range[l] = e >= -1000 && e <= 1000;   /* dd_scalbn's product by 2^-e and 2^e */
+        down[l] = in_range[l] ? dd_scalbn(1.0, -e) : 1.0;
+        up[l] = in_range[l] ? dd_scalbn(1.0, e) : 1.0;
     }
+    const V4Dd w_n = {in.w0_hi * down, in.w0_lo * down};
+    const V4 hs_n = half_speed * down;
+    const V4Dd gap = v4_dd_add(v4_dd_mul(c, w_n), (V4Dd){-hs_n, v4_all(-0.0)});   /* dd_sub */
+    /* libration_parameter: q = hs_n / w_n, m1 = (c - q)(c + q) = (gap / w_n)(c + q),
+     * k = hypot(s, q), m = min(k^2, 1) */
+    const V4Dd q = v4_dd_div((V4Dd){hs_n, v4_all(0.0)}, w_n);
+    const V4Dd m1 = v4_dd_mul(v4_dd_div(gap, w_n), v4_dd_add(c, q));
+    V4 k;
+    for (int l = 0; l < AVX_LANES; ++l) {
+        k[l] = hypot(s_hi[l], q.hi[l]);
+    }
+    const V4 k2 = k * k;
+    V4 m = v4_pick((V4Mask)(k2 < 1.0), k2, v4_all(1.0));
+    /* init_libration: F(|phi0| | m) = (|s|/k) R_F((q/k)^2, c^2, 1); elliptic_param_init_root:
+     * m1 = TwoSum(m1), k' = sqrt(m1) */
+    const V4 q_k = q.hi / k;
+    V4 rf_x = q_k * q_k, rf_y = c.hi * c.hi;
+    V4Dd m1_sum = v4_two_sum(m1.hi, m1.lo);
+    V4Mask taken;
+    int any = -1;
+    for (int l = 0; l < AVX_LANES; ++l) {
+        /* a libration (gap > 0 outside the fine window, m1 > 0, accepted) in the vectors' range */
+        taken[l] = -(l < lanes && in_range[l] && !(fabs(gap.hi[l]) < 0x1p-30 * hs_n[l]) && gap.hi[l] > 0.0
+                   && m1.hi[l] > 0.0 && elliptic_param_acceptable(m[l], m1.hi[l], m1.lo[l]) && k[l] != 0.0
+                   && m1_sum.hi[l] >= 0x1p-900 && rf_y[l] > 0.0);
+        any = taken[l] && any < 0 ? l : any;
+    }
+    if (any < 0) {
+        return 0;
+    }
+    m = copy_taken(m, taken, any);
+    m1_sum.hi = copy_taken(m1_sum.hi, taken, any);
+    m1_sum.lo = copy_taken(m1_sum.lo, taken, any);
+    rf_x = copy_taken(rf_x, taken, any);
+    rf_y = copy_taken(rf_y, taken, any);
+    /* F first: its roots wait on nothing of the chain, whose roots then follow them */
+    const V4 f = (v4_abs(s_hi) / k) * rf_v4(rf_x, rf_y, v4_all(1.0));
+    const V4Dd kc = v4_dd_sqrt(m1_sum);
+    ChainsV4 chains;
+    V4Dd K, inv_K;
+    LibrationV4 s;
+    chains_with_K_v4(m, kc.hi, kc.lo, &chains, &K, &inv_K, &s.bottom_scale);
+    libration_scales_v4(&s, &chains, k, kc.hi, in.w0_hi, K.hi, t0);
+    /* u0 = F, or 2K - F for omega0 < 0 (F(pi - phi) = 2K - F(phi)), with the sign of s */
+    const V4 base = v4_pick((V4Mask)(in.om >= 0.0), f, (2.0 * K.hi - f) + 2.0 * K.lo);
+    const V4 u0 = v4_pick((V4Mask)(s_hi < 0.0), -base, base);
+    /* set_quarter_rates: rho = (w_n / K) 2^e, x0 = u0 / K */
+    const V4Dd rho = v4_dd_mul(w_n, inv_K), x0 = v4_dd_mul((V4Dd){u0, v4_all(0.0)}, inv_K);
+    s.rho_hi = rho.hi * up;
+    s.rho_lo = rho.lo * up;
+    s.x0_hi = x0.hi;
+    s.x0_lo = x0.lo;
+    s.theta_turns = v4_pick(past, v4_pick((V4Mask)(in.th > 0.0), v4_all(1.0), v4_all(-1.0)), v4_all(0.0));
+    const int done = eval_taken_v4(&s, in.tv, lanes, taken, theta, omega);
+    ONCE_AVX_TALLY(moving, done);
     return done;
 }
 

@@ -5,15 +5,70 @@
  * initial angles, rotations, the separatrix, rest; times at t0 exactly, negative, far (past
  * 2^50 and 2^60 quarter periods), NaN and infinite, in blocks that mix them, and counts that
  * are not a multiple of the lane count; for the new states, arrays that mix every kind of
- * state, refused inputs and special times. Prints one summary line; exit status 0 iff every
- * check passed. */
+ * state, refused inputs and special times, and arrays of moving starts (librations of every
+ * amplitude and speed, next to the separatrix window's edge, k and m1 tiny, any g and L).
+ * A copy of the fma build counts the lanes its vectors did: releases from rest and moving
+ * librations must run there, not only agree. Prints one summary line; exit status 0 iff
+ * every check passed. */
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <string.h>
 
-#include "check.h"
+#include "exact_fma.h"
+
+/* The fma build once more (exact_fma.c, as the core compiles it), its entry points renamed
+ * *_tallied and the lanes its vector blocks did counted (ONCE_AVX_TALLY of once_avx.h): the
+ * moving librations must not only agree with the scalar set-up but run in the vectors. */
+#ifdef PENDULUM_EXACT_FMA_BUILD
+#define EXACT_TALLIED 1
+static long tally_rest, tally_moving;
+#define ONCE_AVX_TALLY(kind, done) (tally_##kind += __builtin_popcount((unsigned)(done)))
+#define dd_sincos_fma dd_sincos_tallied
+#define dd_cos_sin_fma dd_cos_sin_tallied
+#define dd_cos_sin_begin_fma dd_cos_sin_begin_tallied
+#define dd_cos_sin_end_fma dd_cos_sin_end_tallied
+#define dd_sin_fma dd_sin_tallied
+#define elliptic_RF_fma elliptic_RF_tallied
+#define elliptic_param_init_fma elliptic_param_init_tallied
+#define elliptic_param_init_root_fma elliptic_param_init_root_tallied
+#define elliptic_param_begin_fma elliptic_param_begin_tallied
+#define elliptic_param_finish_fma elliptic_param_finish_tallied
+#define elliptic_quarter_of_fma elliptic_quarter_of_tallied
+#define pendulum_exact_init_fma pendulum_exact_init_tallied
+#define pendulum_exact_init_gl_fma pendulum_exact_init_gl_tallied
+#define pendulum_exact_same_fma pendulum_exact_same_tallied
+#define pendulum_exact_resolvable_fma pendulum_exact_resolvable_tallied
+#define pendulum_exact_eval_fma pendulum_exact_eval_tallied
+#define pendulum_exact_sin_cos_fma pendulum_exact_sin_cos_tallied
+#define pendulum_exact_eval_many_fma pendulum_exact_eval_many_tallied
+#define pendulum_exact_once_gl_many_fma pendulum_exact_once_gl_many_tallied
+#define pendulum_exact_qualitative_miss_fma pendulum_exact_qualitative_miss_tallied
+#define pendulum_exact_period_fma pendulum_exact_period_tallied
+#pragma GCC push_options
+#include "exact_fma.c"
+#pragma GCC pop_options
+/* the test's own calls go to the core */
+#undef pendulum_exact_init
+#undef pendulum_exact_init_gl
+#undef pendulum_exact_resolvable
+#undef pendulum_exact_eval
+#undef pendulum_exact_eval_many
+#undef pendulum_exact_once_gl_many
+#undef pendulum_exact_period
+int pendulum_exact_init(PendulumExact *ex, double theta0, double omega0, double w0, double t0);
+int pendulum_exact_init_gl(PendulumExact *ex, double theta0, double omega0, double g, double L, double t0);
+int pendulum_exact_resolvable(const PendulumExact *ex, double t);
+void pendulum_exact_eval(const PendulumExact *ex, double t, double *theta, double *omega);
+void pendulum_exact_eval_many(const PendulumExact *ex, size_t n, const double *t, double *theta, double *omega);
+size_t pendulum_exact_once_gl_many(size_t n, const double *theta0, const double *omega0, const double *g,
+                                   const double *L, double t0, const double *t, double *theta, double *omega);
+double pendulum_exact_period(const PendulumExact *ex);
+#else
 #include "exact.h"
+#endif
+
+#include "check.h"
 
 #define PI 3.14159265358979323846
 #define MAX_POINTS 203
@@ -99,6 +154,48 @@ static void check_state(double theta0, double omega0, double w0, double t0, cons
     }
 }
 
+/* One array of new states for pendulum_exact_once_gl_many */
+typedef struct {
+    size_t n;
+    const double *theta0, *omega0, *g, *L;
+    double t0;
+    const double *t;
+} Once;
+
+typedef size_t OnceFunction(size_t n, const double *theta0, const double *omega0, const double *g, const double *L,
+                            double t0, const double *t, double *theta, double *omega);
+
+/* `once` over the array a against pendulum_exact_init_gl, _eval and _resolvable, element by
+ * element: returns the number of elements whose outputs differ (the first is printed), counts
+ * a wrong number of refused elements in *wrong_counts and the refused inputs in *refusals */
+static int compare_once(OnceFunction *once, const Once *a, int *wrong_counts, int *refusals)
+{
+    double theta[40], omega[40];
+    const size_t refused = once(a->n, a->theta0, a->omega0, a->g, a->L, a->t0, a->t, theta, omega);
+    size_t expected_refused = 0;
+    int differences = 0;
+    for (size_t i = 0; i < a->n; ++i) {
+        PendulumExact ex;
+        double th = NAN, om = NAN;
+        if (pendulum_exact_init_gl(&ex, a->theta0[i], a->omega0[i], a->g[i], a->L[i], a->t0) == 0) {
+            pendulum_exact_eval(&ex, a->t[i], &th, &om);
+            expected_refused += !pendulum_exact_resolvable(&ex, a->t[i]);
+        } else {
+            expected_refused += 1;
+            *refusals += 1;
+        }
+        if (!same_bits(th, theta[i]) || !same_bits(om, omega[i])) {
+            if (differences++ == 0) {
+                check(0, "once: theta0 = %a, omega0 = %a, g = %a, L = %a, t0 = %a at t = %.17g: (%.17g, %.17g), "
+                      "scalar (%.17g, %.17g)", a->theta0[i], a->omega0[i], a->g[i], a->L[i], a->t0, a->t[i], theta[i],
+                      omega[i], th, om);
+            }
+        }
+    }
+    *wrong_counts += refused != expected_refused;
+    return differences;
+}
+
 /* pendulum_exact_once_gl_many against pendulum_exact_init_gl, _eval and _resolvable, element
  * by element: arrays of 1 to 40 releases from rest (most: every amplitude, near the top, past
  * pi, tiny), moving starts, refused inputs, runs of one g and L, special times. */
@@ -107,7 +204,7 @@ static void check_once(void)
     int differences = 0, points = 0, refusals = 0, wrong_counts = 0;
     for (int round = 0; round < 4000; ++round) {
         const size_t n = 1 + (size_t)(uniform() * 40);
-        double theta0[40], omega0[40], g[40], L[40], t[40], theta[40], omega[40];
+        double theta0[40], omega0[40], g[40], L[40], t[40];
         const double t0 = uniform() < 0.6 ? 0.0 : 3.0 * (2.0 * uniform() - 1.0);
         for (size_t i = 0; i < n; ++i) {
             g[i] = 0.5 + 20.0 * uniform();
@@ -140,27 +237,14 @@ static void check_once(void)
                 t[i] = special[(int)(uniform() * 5)];
             }
         }
-        const size_t refused = pendulum_exact_once_gl_many(n, theta0, omega0, g, L, t0, t, theta, omega);
-        size_t expected_refused = 0;
-        for (size_t i = 0; i < n; ++i) {
-            PendulumExact ex;
-            double th = NAN, om = NAN;
-            if (pendulum_exact_init_gl(&ex, theta0[i], omega0[i], g[i], L[i], t0) == 0) {
-                pendulum_exact_eval(&ex, t[i], &th, &om);
-                expected_refused += !pendulum_exact_resolvable(&ex, t[i]);
-            } else {
-                expected_refused += 1;
-                refusals++;
-            }
-            points++;
-            if (!same_bits(th, theta[i]) || !same_bits(om, omega[i])) {
-                if (differences++ == 0) {
-                    check(0, "once: theta0 = %.17g, omega0 = %.17g, g = %.17g, L = %.17g at t = %.17g: (%.17g, %.17g), "
-                          "scalar (%.17g, %.17g)", theta0[i], omega0[i], g[i], L[i], t[i], theta[i], omega[i], th, om);
-                }
-            }
+        const Once arrays = {n, theta0, omega0, g, L, t0, t};
+        differences += compare_once(pendulum_exact_once_gl_many, &arrays, &wrong_counts, &refusals);
+#ifdef EXACT_TALLIED
+        if (__builtin_cpu_supports("fma")) {
+            differences += compare_once(pendulum_exact_once_gl_many_tallied, &arrays, &wrong_counts, &refusals);
         }
-        wrong_counts += refused != expected_refused;
+#endif
+        points += (int)n;
     }
     /* releases from the edges of the set-up's cases: theta0 / 2 on the table's points i/64 and
      * half-way between them (ties of the nearest point), next to the quadrant's bound pi/4,
@@ -193,13 +277,128 @@ static void check_once(void)
         }
     }
     check(differences == 0, "once_gl_many: %d of %d outputs differ from the set-up and evaluation", differences, points);
+#ifdef EXACT_TALLIED
+    /* about 60 % of the random states are releases from rest with |theta0| <= 3.2 */
+    check(!__builtin_cpu_supports("fma") || tally_rest > points / 2,
+          "once_gl_many: the vectors did %ld releases from rest of %d states", tally_rest, points);
+    printf("once_gl_many: %ld of %d states released from rest in vectors\n", tally_rest, points);
+#endif
     check(wrong_counts == 0, "once_gl_many: %d arrays with a wrong count of refused elements", wrong_counts);
     check(refusals > 1000, "once_gl_many: %d refused inputs drawn", refusals);
+}
+
+
+/* A moving start of kind `kind` for w0 = sqrt(g/L): librations of every amplitude and speed
+ * (small, large, q next to c, next to locate_separatrix's fine window 2^-30 on either side,
+ * k tiny, m1 tiny, theta0 just past pi, omega0 of a few ulps), a few rotations,
+ * separatrices and refused speeds (huge, infinite, NaN) among them; both signs of theta0 and
+ * omega0 */
+static void draw_moving(int kind, double w0, double *theta0, double *omega0)
+{
+    const double sign_th = uniform() < 0.5 ? -1.0 : 1.0, sign_om = uniform() < 0.5 ? -1.0 : 1.0;
+    double th = (2.0 * uniform() - 1.0) * PI;
+    switch (kind) {
+    case 0: th = 0.2 * th; break;                                              /* small */
+    case 4: th = uniform() < 0.1 ? sign_th * 0.0 : th * pow(10.0, -5.0 - 295.0 * uniform()); break;   /* k tiny */
+    case 5: th = sign_th * PI * (1.0 - pow(10.0, -4.0 - 11.0 * uniform())); break;   /* m1 tiny */
+    case 6: th = sign_th * (PI + 0.058 * uniform()); break;                     /* just past pi */
+    case 9: th = sign_th * (2.5 + 0.64 * uniform()); break;                     /* near the top */
+    default: break;
+    }
+    const double edge = 2.0 * w0 * fabs(cos(0.5 * th));   /* the separatrix speed */
+    double speed = uniform() * edge;
+    switch (kind) {
+    case 0: speed = 0.2 * uniform() * edge; break;
+    case 2: speed = edge * (1.0 - pow(10.0, -1.0 - 7.0 * uniform())); break;   /* q next to c */
+    case 3: speed = edge / (1.0 + 0x1p-30 * (0.25 + 3.75 * uniform())); break;   /* the fine window's edge */
+    case 4: speed = uniform() < 0.2 ? 0.0 : w0 * pow(10.0, -5.0 - 295.0 * uniform()); break;
+    case 7: speed = (const double[]){0x1p-1074, 0x1p-1073, 1e-300, 1e-20, 1.7e308, INFINITY, NAN}[(int)(uniform() * 7)];
+        break;
+    case 8: speed = uniform() < 0.2 ? edge : edge * (1.0 + pow(10.0, -8.0 * uniform())); break;   /* rotation */
+    default: break;
+    }
+    *theta0 = th;
+    *omega0 = sign_om * (speed == 0.0 ? 0x1p-1074 : speed);
+}
+
+/* A moving libration that the vectors must take: |theta0| <= 3.2, m1 clear of the fine
+ * window (|c/q - 1| above 2^-28 in double, which is within 1e-15 of the set-up's), omega0
+ * not of a few ulps, a time on the evaluation's common path */
+static int vector_libration(const PendulumExact *ex, double theta0, double omega0, double w0, double t)
+{
+    const double c = fabs(cos(0.5 * theta0)), q = 0.5 * fabs(omega0) / w0;
+    return ex->regime == PENDULUM_LIBRATION && fabs(theta0) <= 3.2 && fabs(omega0) > 1e-290 && fabs(c / q - 1.0) > 0x1p-28
+           && t != ex->t0 && fabs(ex->rho_hi * (t - ex->t0)) < 0x1p49;
+}
+
+/* pendulum_exact_once_gl_many over arrays of moving starts, mostly librations of every kind
+ * (draw_moving), any g and L (runs of one, and beyond 2^+-400 where w0_of_gl scales), t0 = 0
+ * or not, special times: the core's and the tallied copy's bits equal the scalar set-up's,
+ * and the copy's vectors did every moving libration they must take. */
+static void check_once_moving(void)
+{
+    int differences = 0, points = 0, refusals = 0, wrong_counts = 0;
+    long must = 0, librations = 0;
+#ifdef EXACT_TALLIED
+    tally_moving = 0;
+#endif
+    for (int round = 0; round < 3000; ++round) {
+        const size_t n = 1 + (size_t)(uniform() * 40);
+        double theta0[40], omega0[40], g[40], L[40], t[40];
+        const double t0 = uniform() < 0.5 ? 0.0 : 5.0 * (2.0 * uniform() - 1.0);
+        for (size_t i = 0; i < n; ++i) {
+            g[i] = pow(10.0, 6.0 * uniform() - 3.0);
+            L[i] = pow(10.0, 6.0 * uniform() - 3.0);
+            if (uniform() < 0.03) {
+                g[i] = ldexp(g[i], uniform() < 0.5 ? 450 : -450);
+            }
+            if (i > 0 && uniform() < 0.5) {
+                g[i] = g[i - 1];
+                L[i] = L[i - 1];
+            }
+            const double w0 = sqrt(g[i] / L[i]), period = 2.0 * PI / w0;
+            draw_moving((int)(uniform() * 10), w0, &theta0[i], &omega0[i]);
+            t[i] = t0 + (2.0 * uniform() - 1.0) * (uniform() < 0.5 ? 3.0 : 1e6) * period;
+            if (uniform() < 0.03) {
+                const double special[] = {t0, NAN, INFINITY, t0 + 0x1p52 * period};
+                t[i] = special[(int)(uniform() * 4)];
+            }
+            PendulumExact ex;
+            if (pendulum_exact_init_gl(&ex, theta0[i], omega0[i], g[i], L[i], t0) == 0) {
+                must += vector_libration(&ex, theta0[i], omega0[i], w0, t[i]);
+                librations += ex.regime == PENDULUM_LIBRATION;
+            }
+        }
+        const Once arrays = {n, theta0, omega0, g, L, t0, t};
+        differences += compare_once(pendulum_exact_once_gl_many, &arrays, &wrong_counts, &refusals);
+#ifdef EXACT_TALLIED
+        if (__builtin_cpu_supports("fma")) {
+            differences += compare_once(pendulum_exact_once_gl_many_tallied, &arrays, &wrong_counts, &refusals);
+        }
+#endif
+        points += (int)n;
+    }
+    check(differences == 0, "once_gl_many, moving: %d outputs differ from the set-up and evaluation (%d states)",
+          differences, points);
+    check(wrong_counts == 0, "once_gl_many, moving: %d arrays with a wrong count of refused elements", wrong_counts);
+    check(must > points / 2, "once_gl_many, moving: %ld of %d states moving librations for the vectors", must, points);
+#ifdef EXACT_TALLIED
+    if (__builtin_cpu_supports("fma")) {
+        check(tally_moving >= must && tally_moving <= librations,
+              "once_gl_many, moving: the vectors did %ld moving librations, at least %ld and at most %ld expected",
+              tally_moving, must, librations);
+        printf("once_gl_many, moving: %ld of %d states in vectors (%ld required, %ld librations)\n", tally_moving,
+               points, must, librations);
+        return;
+    }
+#endif
+    printf("once_gl_many, moving: no fma build here, the vector path not counted\n");
 }
 
 int main(void)
 {
     check_once();
+    check_once_moving();
     /* librations from rest, few levels (the lock-step path) and near the top (many levels) */
     const double amplitudes_deg[] = {1e-6, 0.5, 10.0, 45.0, 90.0, 135.0, 170.0, 179.0, 179.9999, 180.0 - 1e-9,
                                      180.0 - 1e-12, 180.0};
