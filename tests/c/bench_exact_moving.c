@@ -1,13 +1,11 @@
-/* time-once-moving.c: new moving librations set up and evaluated once, in a batch
+/* bench_exact_moving.c: new moving librations set up and evaluated once, in a batch
  * (pendulum_exact_once_gl_many, 64 states a call, as exact() hands them over) against one at a
  * time (pendulum_exact_init_gl + pendulum_exact_eval), ns per state; a release from rest as
  * the batch's reference. g = L = 1; 100,000 states per case, theta0 (1 + 1e-9 j) around the
  * case's angle, times uniform over 50 periods of w0 = 1. Processor time (clock()), the two
  * kinds alternated in 7 rounds; prints the best and the median round.
  *
- * Build and run from the checkout, against the core library of a build:
- *   gcc -O2 -Ifmu_src/math scripts/time-once-moving.c build/libpendulum_core.a -lm -o build/time-once-moving
- *   build/time-once-moving
+ * Built with the tests (bash scripts/build-fmu.sh): build/tests/c/bench_exact_moving
  * (docs/speed-exact.md: old and new builds alternated, the load average stated). */
 #include <math.h>
 #include <stdio.h>
