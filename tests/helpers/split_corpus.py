@@ -21,6 +21,8 @@ when the judge was settled). ``python tests/helpers/split_corpus.py`` prints the
 from __future__ import annotations
 
 import math
+import multiprocessing
+import os
 import random
 import sys
 from dataclasses import dataclass, field
@@ -327,6 +329,13 @@ def judge(case: Case) -> Outcome:
     return Outcome(case, status, verdict.summary, kinds)
 
 
+def judge_all(cases: list[Case]) -> list[Outcome]:
+    """The judge's verdicts on the cases, in order, in a process per core (the judge re-runs
+    reference masters, single-threaded: a part takes a minute and a half in one process)."""
+    with multiprocessing.get_context("fork").Pool(min(len(cases), os.cpu_count() or 1) or 1) as pool:
+        return pool.map(judge, cases, chunksize=2)
+
+
 def table(outcomes: dict[str, list[Outcome]]) -> list[str]:
     """The counts per part, Markdown."""
     lines = ["| part | honest | honest failed | misidentified | wrong | wrong passed | wrong causes |",
@@ -345,7 +354,7 @@ def main(folder: str) -> int:
     """Generate and judge both parts under ``folder``; print the misses and the table."""
     outcomes = {}
     for part in SEEDS:
-        outcomes[part] = [judge(c) for c in generate(Path(folder) / part, part)]
+        outcomes[part] = judge_all(generate(Path(folder) / part, part))
         for o in outcomes[part]:
             if o.status != "ok":
                 print(f"{part} {o.case.path.name} {o.status}: expected {o.case.kind}/{o.case.reproduces}; "

@@ -21,7 +21,7 @@ pytestmark = pytest.mark.slow  # about 80 s for both parts; test_split_judge.py 
 @pytest.fixture(scope="module")
 def judged(tmp_path_factory: pytest.TempPathFactory) -> dict[str, list[corpus.Outcome]]:
     root = tmp_path_factory.mktemp("split_corpus")
-    return {part: [corpus.judge(case) for case in corpus.generate(root / part, part)] for part in corpus.SEEDS}
+    return {part: corpus.judge_all(corpus.generate(root / part, part)) for part in corpus.SEEDS}
 
 
 def test_the_corpus_holds_every_kind(judged: dict[str, list[corpus.Outcome]]) -> None:
