@@ -22,16 +22,16 @@ run_step "$CMAKE_STAGES" bash scripts/build-fmu.sh
 export PENDULUM_FMU="$ROOT/build/Pendulum.fmu"
 if [ "$fast" = 1 ]; then
     echo "== C tests, fast: all but the libFuzzer run (ctest -LE slow)"
-    ctest --test-dir build --output-on-failure -LE slow
+    ctest --test-dir build --output-on-failure --parallel "$jobs" -LE slow
     echo "== Python tests, fast: not the slow ones nor the external engines (bash scripts/test.sh runs them)"
     exec python -m pytest -m "not slow and not engines" "$@"
 fi
-ctest --test-dir build --output-on-failure
+ctest --test-dir build --output-on-failure --parallel "$jobs"
 echo "== C tests (AddressSanitizer + UndefinedBehaviorSanitizer)"
 say "building build-sanitize/ (Debug, ASan + UBSan; minutes the first time) ..."
 run_step "$CMAKE_STAGES" cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Debug -DPENDULUM_SANITIZE=ON
 run_step "$CMAKE_STAGES" cmake --build build-sanitize --parallel "$jobs"
-ctest --test-dir build-sanitize --output-on-failure
+ctest --test-dir build-sanitize --output-on-failure --parallel "$jobs"
 echo "== valgrind memcheck of the FMI harness"
 harnesses=(test_fmi_api test_fmi_threads test_fmi3_api test_fmi_conformance test_fmi3_conformance test_split_states)
 if ! command -v valgrind > /dev/null; then
