@@ -160,15 +160,20 @@ static inline V4Dd v4_dd_sqrt(V4Dd x)
 
 /* --- dd_cos_sin_begin and _end on four lanes (dd.c) -------------------------------------- */
 
+/* table_point's DdTablePoint on four lanes: y = sign (a + r), a the table point, C, S = cos a, sin a */
+typedef struct {
+    V4 sign;
+    V4Dd r, C, S;
+} TablePointV4;
+
 /* What cos_sin_begin_v4 knows of four arguments x (dd_cos_sin_begin's DdCosSin, lane by
- * lane): y = x - n pi/2, n in {-1, 0, 1}, the double sin x, the table point
- * (sign, r, C, S) and the leading double of cos x with its certificate. */
+ * lane): y = x - n pi/2, n in {-1, 0, 1}, the double sin x, the table point and the leading
+ * double of cos x with its certificate. */
 typedef struct {
     V4Dd y;
     V4 n;
     V4 sin_x;
-    V4 sign;
-    V4Dd r, C, S;
+    TablePointV4 point;
     V4 cos_lead;
     V4Mask certain;
 } CosSinV4;
@@ -200,22 +205,70 @@ static inline void v4_sin_versine_small(V4Dd r, V4Dd *w, V4Dd *v)
     *v = v4_add_smaller((V4Dd){0.5 * r2.hi, 0.5 * r2.lo}, v4_dd_neg(v4_dd_mul(v4_dd_mul(r2, r2), Q)));
 }
 
+/* reduce_quadrant's first branch on four arguments x, |x.hi| < 2: n in {-1, 0, 1},
+ * y = x - n pi/2 (y = x for n = 0) */
+ONCE_STAGE V4Dd reduce_quadrant_v4(V4Dd x, V4 *quadrants)
+{
+    const V4 n = v4_pick((V4Mask)(x.hi > 0.5 * HALF_PI_HI), v4_all(1.0), v4_all(0.0))
+                 - v4_pick((V4Mask)(x.hi < -0.5 * HALF_PI_HI), v4_all(1.0), v4_all(0.0));
+    const V4 head = x.hi - n * HALF_PI_HI;
+    const V4Dd rest = v4_two_sum(x.lo, -n * HALF_PI_LO);
+    V4Dd y = v4_two_sum(head, rest.hi);
+    y.lo += rest.lo - n * HALF_PI_LOLO;
+    y = v4_fast_two_sum(y.hi, y.lo);
+    *quadrants = n;
+    return v4_pick_dd((V4Mask)(n == 0.0), x, y);
+}
+
+/* table_point of four y, |y| <= pi/4 + small: i = nearest(64 |y|), ties up, its row read
+ * lane by lane, r = |y| - i/64 */
+ONCE_STAGE TablePointV4 table_point_v4(V4Dd y)
+{
+    TablePointV4 t;
+    t.sign = v4_pick((V4Mask)(y.hi < 0.0), v4_all(-1.0), v4_all(1.0));
+    const V4Dd u = {t.sign * y.hi, t.sign * y.lo};
+    const V4 scaled = u.hi * 64.0;
+    const V4 whole = (V4)_mm256_round_pd((__m256d)scaled, _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC);
+    const V4 index = whole + v4_pick((V4Mask)(scaled - whole >= 0.5), v4_all(1.0), v4_all(0.0));
+    const double *row[AVX_LANES];
+    for (int l = 0; l < AVX_LANES; ++l) {
+        row[l] = TABLE_64[(int)index[l]];
+    }
+    t.C.hi = (V4){row[0][0], row[1][0], row[2][0], row[3][0]};
+    t.C.lo = (V4){row[0][1], row[1][1], row[2][1], row[3][1]};
+    t.S.hi = (V4){row[0][2], row[1][2], row[2][2], row[3][2]};
+    t.S.lo = (V4){row[0][3], row[1][3], row[2][3], row[3][3]};
+    t.r = v4_two_sum(u.hi - index * 0.015625, u.lo);
+    return t;
+}
+
+/* sincos_at on four lanes: cos y where `cosine` is set, sin y elsewhere, by the addition
+ * theorems cos(a + r) = C - (S w + C v), sin(a + r) = S + (C w - S v) */
+ONCE_STAGE V4Dd table_sincos_v4(const TablePointV4 *t, V4Mask cosine)
+{
+    V4Dd w, v;
+    v4_sin_versine_small(t->r, &w, &v);
+    const V4Dd C = t->C, S = t->S;
+    V4Dd cos_y = {v4_all(0.0), v4_all(0.0)}, sin_y = cos_y;
+    if (v4_bits(cosine) != 0) {   /* the sums a lane needs; both where the lanes differ */
+        cos_y = v4_add_smaller(C, v4_dd_neg(v4_add_smaller(v4_dd_mul(S, w), v4_dd_mul(C, v))));
+    }
+    if (v4_bits(cosine) != 0xF) {
+        const V4Dd sin_abs = v4_add_smaller(S, v4_add_smaller(v4_dd_mul(C, w), v4_dd_neg(v4_dd_mul(S, v))));
+        sin_y.hi = t->sign * sin_abs.hi;
+        sin_y.lo = t->sign * sin_abs.lo;
+    }
+    return v4_pick_dd(cosine, cos_y, sin_y);
+}
+
 /* dd_cos_sin_begin on four arguments x + 0, |x| < 2 (reduce_quadrant's first branch), into
  * a CosSinV4 */
 ONCE_STAGE void cos_sin_begin_v4(V4 xh, CosSinV4 *out)
 {
-    /* reduce_quadrant: n in {-1, 0, 1}, y = x - n pi/2 (y = x for n = 0) */
-    const V4 n = v4_pick((V4Mask)(xh > 0.5 * HALF_PI_HI), v4_all(1.0), v4_all(0.0))
-                 - v4_pick((V4Mask)(xh < -0.5 * HALF_PI_HI), v4_all(1.0), v4_all(0.0));
-    const V4Mask zero = (V4Mask)(n == 0.0);
-    const V4 head = xh - n * HALF_PI_HI;
-    const V4Dd rest = v4_two_sum(v4_all(0.0), -n * HALF_PI_LO);
-    V4Dd y = v4_two_sum(head, rest.hi);
-    y.lo += rest.lo - n * HALF_PI_LOLO;
-    y = v4_fast_two_sum(y.hi, y.lo);
-    y = v4_pick_dd(zero, (V4Dd){xh, v4_all(0.0)}, y);
+    V4 n;
+    const V4Dd y = reduce_quadrant_v4((V4Dd){xh, v4_all(0.0)}, &n);
     /* quadrant_of(n): 0, 1, or 3 for n = -1; odd for n != 0; flip = -1 for quadrant 1 */
-    const V4Mask odd = ~zero, flip_minus = (V4Mask)(n > 0.0);
+    const V4Mask odd = (V4Mask)(n != 0.0), flip_minus = (V4Mask)(n > 0.0);
     /* the double sin x: the series in double of sincos_reduced */
     const V4 z = v4_dd_mul(y, y).hi;
     V4 other;
@@ -227,21 +280,9 @@ ONCE_STAGE void cos_sin_begin_v4(V4 xh, CosSinV4 *out)
         other = v4_pick(odd, 1.0 + z * v4_horner_double(COS_COEF, z), y.hi + y.hi * z * v4_horner_double(SIN_COEF, z));
     }
     const V4 sin_x = v4_pick((V4Mask)(n < 0.0), -other, other);
-    /* table_point */
-    const V4 sign = v4_pick((V4Mask)(y.hi < 0.0), v4_all(-1.0), v4_all(1.0));
-    const V4Dd u = {sign * y.hi, sign * y.lo};
-    const V4 scaled = u.hi * 64.0;
-    const V4 whole = (V4)_mm256_round_pd((__m256d)scaled, _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC);
-    const V4 index = whole + v4_pick((V4Mask)(scaled - whole >= 0.5), v4_all(1.0), v4_all(0.0));
-    V4Dd C, S;
-    for (int l = 0; l < AVX_LANES; ++l) {
-        const double *row = TABLE_64[(int)index[l]];
-        C.hi[l] = row[0];
-        C.lo[l] = row[1];
-        S.hi[l] = row[2];
-        S.lo[l] = row[3];
-    }
-    const V4Dd r = v4_two_sum(u.hi - index * 0.015625, u.lo);
+    const TablePointV4 point = table_point_v4(y);
+    const V4 sign = point.sign;
+    const V4Dd r = point.r, C = point.C, S = point.S;
     /* table_leading */
     const V4Dd R2 = v4_two_prod(r.hi, r.hi);
     const V4 zr = R2.hi;
@@ -260,10 +301,7 @@ ONCE_STAGE void cos_sin_begin_v4(V4 xh, CosSinV4 *out)
     out->y = y;
     out->n = n;
     out->sin_x = sin_x;
-    out->sign = sign;
-    out->r = r;
-    out->C = C;
-    out->S = S;
+    out->point = point;
     out->cos_lead = flip * v4_pick(odd, sign * sum.hi, sum.hi);
     out->certain = (V4Mask)(sum.hi + (sum.lo + bound) == sum.hi) & (V4Mask)(sum.hi + (sum.lo - bound) == sum.hi);
 }
@@ -274,23 +312,21 @@ ONCE_STAGE V4Dd cos_sin_end_v4(const CosSinV4 *in)
     const V4Mask odd = (V4Mask)(in->n != 0.0);
     const V4 flip = v4_pick((V4Mask)(in->n > 0.0), v4_all(-1.0), v4_all(1.0));
     /* sincos_at: cos for even quadrants, sin for odd */
-    V4Dd w, v;
-    v4_sin_versine_small(in->r, &w, &v);
-    const V4Dd C = in->C, S = in->S;
-    V4Dd value = {v4_all(0.0), v4_all(0.0)}, sin_y = value;
-    if (v4_bits(odd) != 0xF) {   /* the sums a lane needs; both where the lanes differ */
-        value = v4_add_smaller(C, v4_dd_neg(v4_add_smaller(v4_dd_mul(S, w), v4_dd_mul(C, v))));   /* cos y */
-    }
-    if (v4_bits(odd) != 0) {
-        const V4Dd sin_abs = v4_add_smaller(S, v4_add_smaller(v4_dd_mul(C, w), v4_dd_neg(v4_dd_mul(S, v))));
-        sin_y.hi = in->sign * sin_abs.hi;
-        sin_y.lo = in->sign * sin_abs.lo;
-    }
-    value = v4_pick_dd(odd, sin_y, value);
+    const V4Dd value = table_sincos_v4(&in->point, ~odd);
     /* the certain leading double, or the value itself */
     const V4 lead = in->cos_lead;
     const V4Dd known = {lead, flip * ((value.hi - flip * lead) + value.lo)};
     return v4_pick_dd(in->certain, known, (V4Dd){flip * value.hi, flip * value.lo});
+}
+
+/* dd_sin of four x, |x.hi| < 2: sin y, cos y (n = 1) or -cos y (n = -1) of the table point
+ * of y = x - n pi/2 */
+ONCE_STAGE V4Dd dd_sin_v4(V4Dd x)
+{
+    V4 n;
+    const TablePointV4 point = table_point_v4(reduce_quadrant_v4(x, &n));
+    const V4Dd value = table_sincos_v4(&point, (V4Mask)(n != 0.0));
+    return v4_pick_dd((V4Mask)(n < 0.0), v4_dd_neg(value), value);
 }
 
 /* --- elliptic_param_begin and _finish on four lanes (elliptic.c) ------------------------- */
