@@ -319,14 +319,20 @@ ONCE_STAGE V4Dd cos_sin_end_v4(const CosSinV4 *in)
     return v4_pick_dd(in->certain, known, (V4Dd){flip * value.hi, flip * value.lo});
 }
 
-/* dd_sin of four x, |x.hi| < 2: sin y, cos y (n = 1) or -cos y (n = -1) of the table point
- * of y = x - n pi/2 */
+/* dd_sin's value from the table point of y = x - n pi/2: sin y, cos y (n = 1) or -cos y
+ * (n = -1) */
+ONCE_STAGE V4Dd sin_at_point_v4(const TablePointV4 *point, V4 n)
+{
+    const V4Dd value = table_sincos_v4(point, (V4Mask)(n != 0.0));
+    return v4_pick_dd((V4Mask)(n < 0.0), v4_dd_neg(value), value);
+}
+
+/* dd_sin of four x, |x.hi| < 2 */
 ONCE_STAGE V4Dd dd_sin_v4(V4Dd x)
 {
     V4 n;
     const TablePointV4 point = table_point_v4(reduce_quadrant_v4(x, &n));
-    const V4Dd value = table_sincos_v4(&point, (V4Mask)(n != 0.0));
-    return v4_pick_dd((V4Mask)(n < 0.0), v4_dd_neg(value), value);
+    return sin_at_point_v4(&point, n);
 }
 
 /* --- elliptic_param_begin and _finish on four lanes (elliptic.c) ------------------------- */
@@ -506,6 +512,13 @@ static inline V4 v4_atan_series(V4 s)
     return ((g01 + s2 * g23) + s4 * (g45 + s2 * g67)) + s8 * (g89 + s2 * g1011);
 }
 
+/* copysign(x, y) */
+static inline V4 v4_copysign(V4 x, V4 y)
+{
+    const __m256d sign_bit = _mm256_set1_pd(-0.0);
+    return (V4)_mm256_or_pd(_mm256_andnot_pd(sign_bit, (__m256d)x), _mm256_and_pd(sign_bit, (__m256d)y));
+}
+
 /* elliptic_atan_unit */
 static inline V4 v4_atan_unit(V4 y, V4 x)
 {
@@ -515,9 +528,24 @@ static inline V4 v4_atan_unit(V4 y, V4 x)
     const V4 s = t * t;
     const V4 g = v4_atan_series(s);
     const V4 angle = w1 * ELLIPTIC_QUARTER_PI_HI + (w1 * ELLIPTIC_QUARTER_PI_LO + (t + t * s * g));
-    /* copysign(angle, y) */
-    const __m256d sign_bit = _mm256_set1_pd(-0.0);
-    return (V4)_mm256_or_pd(_mm256_andnot_pd(sign_bit, (__m256d)angle), _mm256_and_pd(sign_bit, (__m256d)y));
+    return v4_copysign(angle, y);
+}
+
+/* elliptic_atan_ratio: its three sectors by exact 0/1 weights, as the scalar code */
+static inline V4 v4_atan_ratio(V4 y, V4 x)
+{
+    const V4 a = v4_abs(y), b = x;
+    const V4 w3 = v4_pick((V4Mask)(a > ELLIPTIC_TAN_3PI_8 * b), v4_all(1.0), v4_all(0.0));
+    const V4 w1 = v4_pick((V4Mask)(a > ELLIPTIC_TAN_PI_8 * b), v4_all(1.0), v4_all(0.0)) - w3;
+    const V4 w0 = 1.0 - w1 - w3;
+    const V4 num = w0 * a + w1 * (a - b) - w3 * b;
+    const V4 den = w0 * b + w1 * (a + b) + w3 * a;
+    const V4 base_hi = w1 * ELLIPTIC_QUARTER_PI_HI + w3 * (2.0 * ELLIPTIC_QUARTER_PI_HI);
+    const V4 base_lo = w1 * ELLIPTIC_QUARTER_PI_LO + w3 * (2.0 * ELLIPTIC_QUARTER_PI_LO);
+    const V4 t = num / den;
+    const V4 s = t * t;
+    const V4 g = v4_atan_series(s);
+    return v4_copysign(base_hi + (base_lo + (t + t * s * g)), y);
 }
 
 /* trig_series and trig_sincos_small */
@@ -561,22 +589,71 @@ static inline void v4_landen_step(V4Mask step, V4Mask long_chain, V4 kk, V4 one_
     *D = up_D;
 }
 
-/* What the evaluation reads of four librations, lane by lane; the level factors level by
- * level (a lane's own up to its levels, any finite values beyond). */
+/* What the evaluation reads of four librations or rotations, lane by lane; the level factors
+ * level by level (a lane's own up to its levels, any finite values beyond). */
 typedef struct {
     V4 t0, rho_hi, rho_lo, x0_hi, x0_lo, K_hi, bottom_scale, bottom_m, sqrt_k1, kc, omega_half;
     V4 theta_turns;   /* whole turns of theta0, |theta_turns| < 2^50 */
+    V4Mask rotation;  /* the lanes of a rotation (the others librate) */
+    V4 direction;     /* a rotation's sign of omega0 */
     V4 levels;   /* N as doubles */
     int most;    /* the largest N */
     const V4 *landen_k, *landen_1pk, *landen_1mk;   /* [level] */
-} LibrationV4;
+} MotionV4;
 
-/* eval_any's operations for a libration at times tv: *theta and *omega for every lane, and a
- * mask of the lanes on the common path (a phase below 2^50 quarter periods, a bottom argument
- * within the series, tv != t0; the caller checks the rest). The phase's nearest integer by the
- * shift where the fma build's phase_near rounds with rint: they differ only in the sign of a
- * zero, which no output reads. */
-ONCE_STAGE V4Mask eval_libration_v4(const LibrationV4 *s, V4 tv, V4 *theta, V4 *omega)
+/* Homogeneous coordinates of sn, cn, dn on four lanes (EllipticHomogeneous) */
+typedef struct {
+    V4 S, C, E, D;
+} HomogeneousV4;
+
+/* add_half_turns(half_turns, angle): half_turns_pi and plus_half_turns, the angle alone
+ * where the half turns are 0 */
+static inline V4 v4_add_half_turns(V4Dd half_turns, V4 angle)
+{
+    const V4Dd turn = v4_two_prod(half_turns.hi, v4_all(PI_HI));
+    const V4 hi_pi_lo = half_turns.hi * PI_LO, lo_pi_hi = half_turns.lo * PI_HI;
+    const V4 wound = turn.hi + (turn.lo + (hi_pi_lo + (lo_pi_hi + angle)));
+    return v4_pick((V4Mask)(half_turns.hi == 0.0) & (V4Mask)(half_turns.lo == 0.0), angle, wound);
+}
+
+/* libration_angle_omega from levels 1 (h1) and 0 (h0), the quarter's weights odd and sign,
+ * and add_half_turns(2 theta_turns, angle) */
+ONCE_STAGE void libration_outputs_v4(const MotionV4 *s, V4 odd, V4 sign, HomogeneousV4 h1, HomogeneousV4 h0,
+                                     V4 *theta, V4 *omega)
+{
+    const V4 even = 1.0 - odd;
+    const V4 y1 = even * h1.S + odd * h1.C, x1 = even * h1.D + odd * h1.E;
+    const V4 angle = 4.0 * v4_atan_unit(sign * s->sqrt_k1 * y1, x1);
+    *theta = v4_add_half_turns((V4Dd){2.0 * s->theta_turns, v4_all(0.0)}, angle);
+    const V4 cn_num = even * h0.C - odd * (s->kc * h0.S), den = even * h0.D + odd * h0.E;
+    *omega = 2.0 * (sign * s->omega_half * (cn_num / den));
+}
+
+/* eval_any's rotation from level 0 (h0) and the quarter n (odd: its weight): am(nK + r) -
+ * n pi/2 = atan(sn r / cn r) (n even), atan(k' sn r / cn r) (n odd); theta = 2 pi j +
+ * direction (n pi + 2 delta), omega = 2 sqrt(m) w0 dn(nK + r), the winding direction n added
+ * to the half turns 2 j in double-double */
+ONCE_STAGE void rotation_outputs_v4(const MotionV4 *s, V4 quarters, V4 odd, HomogeneousV4 h0, V4 *theta,
+                                    V4 *omega)
+{
+    const V4 even = 1.0 - odd;
+    const V4 delta = v4_atan_ratio((even + odd * s->kc) * h0.S, h0.C);
+    const V4 dn_num = even * h0.E + odd * (s->kc * h0.D), den = even * h0.D + odd * h0.E;
+    const V4Mask backwards = (V4Mask)(s->direction < 0.0);
+    const V4Dd winding = {v4_pick(backwards, -quarters, quarters), v4_pick(backwards, v4_all(-0.0), v4_all(0.0))};
+    const V4 angle = 2.0 * s->direction * delta;
+    *omega = 2.0 * (s->direction * s->omega_half * (dn_num / den));
+    *theta = v4_add_half_turns(v4_dd_add((V4Dd){2.0 * s->theta_turns, v4_all(0.0)}, winding), angle);
+}
+
+/* eval_any's operations for a libration or rotation at times tv: *theta and *omega for every
+ * lane, and a mask of the lanes on the common path (a phase below 2^50 quarter periods, a
+ * bottom argument within the series, tv != t0; the caller checks the rest). The phase's
+ * nearest integer by the shift where the fma build's phase_near rounds with rint: they differ
+ * only in the sign of a zero, which no output reads (nor the half turns, a sum with it). The
+ * Landen levels are the same for both motions (elliptic_sncndn_homogeneous_pair's, and
+ * elliptic_sncndn_homogeneous's level 0); the outputs of each are formed where a lane has it. */
+ONCE_STAGE V4Mask eval_motion_v4(const MotionV4 *s, V4 tv, V4 *theta, V4 *omega)
 {
     /* phase_at and phase_near */
     const V4Dd tau = v4_two_sum(tv, -s->t0);
@@ -605,21 +682,17 @@ ONCE_STAGE V4Mask eval_libration_v4(const LibrationV4 *s, V4 tv, V4 *theta, V4 *
     v4_landen_step(V4_EVERY, long_chain, s->landen_k[0], s->landen_1pk[0], s->landen_1mk[0], &S0, &C0,
                    &E0, &D0);
     const V4Mask negative = (V4Mask)(v < 0.0);   /* sn is odd, cn and dn are even */
-    S = v4_pick(negative, -S, S);
-    S0 = v4_pick(negative, -S0, S0);
-    /* libration_angle_omega */
-    const V4 even = 1.0 - odd;
-    const V4 y1 = even * S + odd * C, x1 = even * D + odd * E;
-    const V4 angle = 4.0 * v4_atan_unit(sign * s->sqrt_k1 * y1, x1);
-    /* add_half_turns(2 theta_turns, angle): half_turns_pi and plus_half_turns (the low part of
-     * the half turns is 0, and lo pi_hi with it), the angle alone without turns */
-    const V4 half_turns = 2.0 * s->theta_turns;
-    const V4Dd turn = v4_two_prod(half_turns, v4_all(PI_HI));
-    const V4 hi_pi_lo = half_turns * PI_LO, lo_pi_hi = v4_all(0.0 * PI_HI);
-    const V4 wound = turn.hi + (turn.lo + (hi_pi_lo + (lo_pi_hi + angle)));
-    *theta = v4_pick((V4Mask)(half_turns == 0.0), angle, wound);
-    const V4 cn_num = even * C0 - odd * (s->kc * S0), den = even * D0 + odd * E0;
-    *omega = 2.0 * (sign * s->omega_half * (cn_num / den));
+    const HomogeneousV4 h1 = {v4_pick(negative, -S, S), C, E, D}, h0 = {v4_pick(negative, -S0, S0), C0, E0, D0};
+    const int rotating = v4_bits(s->rotation);
+    V4 lib_theta = v4_all(0.0), lib_omega = lib_theta, rot_theta = lib_theta, rot_omega = lib_theta;
+    if (rotating != 0xF) {
+        libration_outputs_v4(s, odd, sign, h1, h0, &lib_theta, &lib_omega);
+    }
+    if (rotating != 0) {
+        rotation_outputs_v4(s, quarters, odd, h0, &rot_theta, &rot_omega);
+    }
+    *theta = v4_pick(s->rotation, rot_theta, lib_theta);
+    *omega = v4_pick(s->rotation, rot_omega, lib_omega);
     return (V4Mask)(v4_abs(x_hi) < 0x1p50) & (V4Mask)(z <= ELLIPTIC_SERIES_Z_MAX) & (V4Mask)(tv != s->t0);
 }
 
@@ -669,7 +742,7 @@ ONCE_STAGE V4 copy_taken(V4 v, V4Mask taken, int any)
 
 /* set_libration_scales's fields (k, k' = kc, K from the chain, w0) and t0; the rates, the
  * initial phase and the turns are the caller's */
-ONCE_STAGE void libration_scales_v4(LibrationV4 *s, const ChainsV4 *c, V4 k, V4 kc, V4 w0_hi, V4 K_hi, double t0)
+ONCE_STAGE void libration_scales_v4(MotionV4 *s, const ChainsV4 *c, V4 k, V4 kc, V4 w0_hi, V4 K_hi, double t0)
 {
     s->t0 = v4_all(t0);
     s->K_hi = K_hi;
@@ -677,6 +750,8 @@ ONCE_STAGE void libration_scales_v4(LibrationV4 *s, const ChainsV4 *c, V4 k, V4 
     s->sqrt_k1 = k / (1.0 + kc);
     s->kc = kc;
     s->omega_half = k * w0_hi;
+    s->rotation = (V4Mask){0, 0, 0, 0};
+    s->direction = v4_all(1.0);
     s->levels = c->levels;
     s->most = c->most;
     s->landen_k = c->landen_k;
@@ -686,10 +761,10 @@ ONCE_STAGE void libration_scales_v4(LibrationV4 *s, const ChainsV4 *c, V4 k, V4 
 
 /* The librations s evaluated at tv; writes the lanes taken that are on the evaluation's
  * common path and returns them as bits */
-ONCE_STAGE int eval_taken_v4(const LibrationV4 *s, V4 tv, int lanes, V4Mask taken, double *theta, double *omega)
+ONCE_STAGE int eval_taken_v4(const MotionV4 *s, V4 tv, int lanes, V4Mask taken, double *theta, double *omega)
 {
     V4 angle, om;
-    const V4Mask path = eval_libration_v4(s, tv, &angle, &om);
+    const V4Mask path = eval_motion_v4(s, tv, &angle, &om);
     int done = 0;
     for (int l = 0; l < lanes; ++l) {
         if (taken[l] && path[l]) {
@@ -734,7 +809,7 @@ ONCE_STAGE int once_avx(int lanes, const double *theta0, const DoubleDouble *w0,
     /* the chain on c's leading double, K and 1/K from its tails with c's low part */
     ChainsV4 chains;
     V4Dd K, inv_K;
-    LibrationV4 s;
+    MotionV4 s;
     chains_with_K_v4(m, kc, c.lo, &chains, &K, &inv_K, &s.bottom_scale);
     /* from_rest_fields: rho = w0 / K, u0 = +-K (0 at the bottom), x0 = +-1 */
     libration_scales_v4(&s, &chains, k, kc, in.w0_hi, K.hi, t0);
@@ -750,14 +825,114 @@ ONCE_STAGE int once_avx(int lanes, const double *theta0, const DoubleDouble *w0,
     return done;
 }
 
+/* A moving start's parameter on four lanes, libration_parameter's or rotation_parameter's
+ * (the fine window left out), and what the initial phase needs of it */
+typedef struct {
+    V4 m;            /* the parameter of the Jacobi functions (mu = 1/m for a rotation) */
+    V4Dd m1;         /* its complement */
+    V4 rf_x, rf_y;   /* the first two arguments of R_F for F(phi0) (the third is 1) */
+    V4 factor;       /* F(phi0) = factor R_F: |s|/k (libration), direction s (rotation) */
+    V4Mask ok;       /* the parameter accepted (elliptic_param_acceptable), R_F's x or y > 0 */
+} ParameterV4;
+
+/* elliptic_param_acceptable lane by lane, as a mask */
+static inline V4Mask acceptable_v4(V4 m, V4Dd m1)
+{
+    V4Mask ok;
+    for (int l = 0; l < AVX_LANES; ++l) {
+        ok[l] = -(long long)elliptic_param_acceptable(m[l], m1.hi[l], m1.lo[l]);
+    }
+    return ok;
+}
+
+/* libration_parameter for gap > 0: q = hs_n / w_n, m1 = (gap / w_n)(c + q), k = hypot(s, q)
+ * (glibc's, lane by lane), m = min(k^2, 1); init_libration's F(|phi0| | m) = (|s|/k)
+ * R_F((q/k)^2, c^2, 1) (DLMF 19.25.5, scaled) */
+ONCE_STAGE ParameterV4 libration_parameter_v4(V4Dd c, V4 s_hi, V4Dd w_n, V4 hs_n, V4Dd gap, V4 *k_out)
+{
+    ParameterV4 p;
+    const V4Dd q = v4_dd_div((V4Dd){hs_n, v4_all(0.0)}, w_n);
+    p.m1 = v4_dd_mul(v4_dd_div(gap, w_n), v4_dd_add(c, q));
+    V4 k;
+    for (int l = 0; l < AVX_LANES; ++l) {
+        k[l] = hypot(s_hi[l], q.hi[l]);
+    }
+    const V4 k2 = k * k;
+    p.m = v4_pick((V4Mask)(k2 < 1.0), k2, v4_all(1.0));
+    const V4 q_k = q.hi / k;
+    p.rf_x = q_k * q_k;
+    p.rf_y = c.hi * c.hi;
+    p.factor = v4_abs(s_hi) / k;
+    p.ok = (V4Mask)(gap.hi > 0.0) & (V4Mask)(p.m1.hi > 0.0) & acceptable_v4(p.m, p.m1) & (V4Mask)(k != 0.0)
+           & (V4Mask)(p.rf_y > 0.0);
+    *k_out = k;
+    return p;
+}
+
+/* subtract_turns(x, j): x - j (2 pi), 2 pi in three parts, the two leading products exact */
+static inline V4Dd v4_subtract_turns(V4Dd x, V4 j)
+{
+    x = v4_dd_add(x, v4_dd_neg(v4_two_prod(j, v4_all(2.0 * PI_HI))));
+    x = v4_dd_add(x, v4_dd_neg(v4_two_prod(j, v4_all(2.0 * PI_LO))));
+    return v4_dd_add(x, (V4Dd){-j * 2.0 * PI_LOLO, v4_all(0.0)});
+}
+
+/* rotation_parameter for gap < 0 outside the fine window: s = sin(th/2) in double-double
+ * (dd_sin; th moved by a turn where `past`, finish_initial_angle), rho = s w_n / hs_n,
+ * 1 + rho^2, mu1 = (1 - gamma)(1 + gamma)/(1 + rho^2) with 1 - gamma = -gap / hs_n and
+ * gamma = c w_n / hs_n, mu = min((w_n / hs_n)^2 / (1 + rho^2), 1); init_rotation's
+ * v0 = F(th/2 | mu) = direction s R_F(c^2, 1/(1 + rho^2), 1) (DLMF 19.25.5) */
+ONCE_STAGE ParameterV4 rotation_parameter_v4(const CosSinV4 *trig, V4 th, V4Mask past, V4Dd c, V4Dd c_w, V4Dd w_n,
+                                             V4 hs_n, V4Dd gap, V4 direction, V4Dd *one_plus_rho2)
+{
+    ParameterV4 p;
+    V4Dd s;
+    if (v4_bits(past) == 0) {   /* th/2 = theta0/2: dd_cos_sin_begin's reduction and table point */
+        s = sin_at_point_v4(&trig->point, trig->n);
+    } else {
+        const V4 shift = v4_pick((V4Mask)(th > 0.0), v4_all(1.0), v4_all(-1.0));
+        const V4Dd moved = v4_pick_dd(past, v4_subtract_turns((V4Dd){th, v4_all(0.0)}, shift),
+                                      (V4Dd){th, v4_all(0.0)});
+        s = dd_sin_v4((V4Dd){0.5 * moved.hi, 0.5 * moved.lo});
+    }
+    const V4Dd hs = {hs_n, v4_all(0.0)};
+    const V4Dd rho = v4_dd_div(v4_dd_mul(s, w_n), hs);
+    const V4Dd opr2 = v4_dd_add((V4Dd){v4_all(1.0), v4_all(0.0)}, v4_dd_mul(rho, rho));
+    const V4Dd one_minus_gamma = v4_dd_div(v4_dd_neg(gap), hs), gamma = v4_dd_div(c_w, hs);
+    p.m1 = v4_dd_div(v4_dd_mul(one_minus_gamma, v4_dd_add((V4Dd){v4_all(1.0), v4_all(0.0)}, gamma)), opr2);
+    const V4 w_hs = w_n.hi / hs_n, mu = w_hs * w_hs / opr2.hi;
+    p.m = v4_pick((V4Mask)(mu < 1.0), mu, v4_all(1.0));
+    p.rf_x = c.hi * c.hi;
+    p.rf_y = 1.0 / opr2.hi;
+    p.factor = direction * s.hi;
+    p.ok = (V4Mask)(gap.hi < 0.0) & acceptable_v4(p.m, p.m1) & (V4Mask)(p.rf_x > 0.0);
+    *one_plus_rho2 = opr2;
+    return p;
+}
+
+static inline ParameterV4 pick_parameter(V4Mask where, ParameterV4 yes, ParameterV4 no)
+{
+    ParameterV4 p;
+    p.m = v4_pick(where, yes.m, no.m);
+    p.m1 = v4_pick_dd(where, yes.m1, no.m1);
+    p.rf_x = v4_pick(where, yes.rf_x, no.rf_x);
+    p.rf_y = v4_pick(where, yes.rf_y, no.rf_y);
+    p.factor = v4_pick(where, yes.factor, no.factor);
+    p.ok = (where & yes.ok) | (~where & no.ok);
+    return p;
+}
+
 /* Up to four moving starts (omega0 != 0, |theta0| <= 3.2, w0 accepted) set up at t0 and
- * evaluated once each at t[l], in vectors: exact_init_dd's general path for a libration
- * (finish_initial_angle, locate_separatrix, libration_parameter, init_libration,
- * set_quarter_rates) and the evaluation, without a set-up written. Returns the lanes done as
- * bits; the others are the caller's: rotations, the separatrix and locate_separatrix's fine
- * window next to it, parameters elliptic_param_acceptable refuses, k = 0, and the rare lanes
- * outside the vectors' range (a power of two of the rates beyond 2^+-1000, m1 below 2^-900,
- * where dd_scalbn and dd_sqrt take other paths), and times off the evaluation's common path. */
+ * evaluated once each at t[l], in vectors: exact_init_dd's general path for a libration or a
+ * rotation (finish_initial_angle, locate_separatrix, libration_parameter or
+ * rotation_parameter, init_libration or init_rotation, set_quarter_rates) and the
+ * evaluation, without a set-up written. The two kinds share the chain, K, R_F, the rates and
+ * the Landen levels; what is a kind's own is formed where a lane has that kind. Returns the
+ * lanes done as bits; the others are the caller's: the separatrix and locate_separatrix's
+ * fine window next to it, parameters elliptic_param_acceptable refuses, k = 0, and the rare
+ * lanes outside the vectors' range (a power of two of the rates beyond 2^+-1000, m1 below
+ * 2^-900, where dd_scalbn and dd_sqrt take other paths), and times off the evaluation's
+ * common path. */
 static int once_moving_avx(int lanes, const double *theta0, const double *omega0, const DoubleDouble *w0, double t0,
                            const double *t, double *theta, double *omega)
 {
@@ -765,7 +940,7 @@ static int once_moving_avx(int lanes, const double *theta0, const double *omega0
     CosSinV4 trig;
     cos_sin_begin_v4(0.5 * in.th, &trig);   /* step 1: theta0 / 2 exact, no turn to subtract */
     /* finish_initial_angle: c < 0 moves th by a turn, s and c change sign (its c = -0 with
-     * th < 0 is no libration: gap = -hs_n) */
+     * th < 0 is taken by neither kind: gap = -hs_n, c^2 = 0) */
     const V4Dd cosine = cos_sin_end_v4(&trig);
     const V4Mask past = (V4Mask)(cosine.hi < 0.0);
     const V4Dd c = v4_pick_dd(past, v4_dd_neg(cosine), cosine);
@@ -774,68 +949,80 @@ static int once_moving_avx(int lanes, const double *theta0, const double *omega0
      * larger; gap = c w_n - hs_n, the sign of m1 */
     const V4 half_speed = 0.5 * v4_abs(in.om);
     V4 down, up;
-    int in_range[AVX_LANES];
+    V4Mask in_range;
     for (int l = 0; l < AVX_LANES; ++l) {
         const int e = dd_frexp_exponent(larger(in.w0_hi[l], half_speed[l]));
-        in_range[l] = e >= -1000 && e <= 1000;   /* dd_scalbn's product by 2^-e and 2^e */
+        in_range[l] = -(long long)(l < lanes && e >= -1000 && e <= 1000);   /* dd_scalbn's 2^-e and 2^e */
         down[l] = in_range[l] ? dd_scalbn(1.0, -e) : 1.0;
         up[l] = in_range[l] ? dd_scalbn(1.0, e) : 1.0;
     }
     const V4Dd w_n = {in.w0_hi * down, in.w0_lo * down};
     const V4 hs_n = half_speed * down;
-    const V4Dd gap = v4_dd_add(v4_dd_mul(c, w_n), (V4Dd){-hs_n, v4_all(-0.0)});   /* dd_sub */
-    /* libration_parameter: q = hs_n / w_n, m1 = (c - q)(c + q) = (gap / w_n)(c + q),
-     * k = hypot(s, q), m = min(k^2, 1) */
-    const V4Dd q = v4_dd_div((V4Dd){hs_n, v4_all(0.0)}, w_n);
-    const V4Dd m1 = v4_dd_mul(v4_dd_div(gap, w_n), v4_dd_add(c, q));
-    V4 k;
-    for (int l = 0; l < AVX_LANES; ++l) {
-        k[l] = hypot(s_hi[l], q.hi[l]);
+    const V4Dd c_w = v4_dd_mul(c, w_n);
+    const V4Dd gap = v4_dd_add(c_w, (V4Dd){-hs_n, v4_all(-0.0)});   /* dd_sub */
+    const V4Mask outside = in_range & ~(V4Mask)(v4_abs(gap.hi) < 0x1p-30 * hs_n);   /* the fine window */
+    const V4Mask rotation = outside & (V4Mask)(gap.hi < 0.0);
+    const int rotating = v4_bits(rotation), librating = v4_bits(outside & (V4Mask)(gap.hi > 0.0));
+    if (rotating == 0 && librating == 0) {
+        return 0;
     }
-    const V4 k2 = k * k;
-    V4 m = v4_pick((V4Mask)(k2 < 1.0), k2, v4_all(1.0));
-    /* init_libration: F(|phi0| | m) = (|s|/k) R_F((q/k)^2, c^2, 1); elliptic_param_init_root:
-     * m1 = TwoSum(m1), k' = sqrt(m1) */
-    const V4 q_k = q.hi / k;
-    V4 rf_x = q_k * q_k, rf_y = c.hi * c.hi;
-    V4Dd m1_sum = v4_two_sum(m1.hi, m1.lo);
-    V4Mask taken;
+    /* each kind's parameter where a lane has it */
+    const V4 direction = v4_pick((V4Mask)(in.om > 0.0), v4_all(1.0), v4_all(-1.0));
+    ParameterV4 par, rot;
+    V4 k = v4_all(0.0);
+    V4Dd one_plus_rho2 = {v4_all(1.0), v4_all(0.0)};
+    if (librating != 0) {
+        par = libration_parameter_v4(c, s_hi, w_n, hs_n, gap, &k);
+    }
+    if (rotating != 0) {
+        rot = rotation_parameter_v4(&trig, in.th, past, c, c_w, w_n, hs_n, gap, direction, &one_plus_rho2);
+        par = librating != 0 ? pick_parameter(rotation, rot, par) : rot;
+    }
+    /* elliptic_param_init_root: m1 = TwoSum(m1), k' = sqrt(m1) */
+    V4Dd m1_sum = v4_two_sum(par.m1.hi, par.m1.lo);
+    V4Mask taken = outside & par.ok & (V4Mask)(m1_sum.hi >= 0x1p-900);
     int any = -1;
-    for (int l = 0; l < AVX_LANES; ++l) {
-        /* a libration (gap > 0 outside the fine window, m1 > 0, accepted) in the vectors' range */
-        taken[l] = -(l < lanes && in_range[l] && !(fabs(gap.hi[l]) < 0x1p-30 * hs_n[l]) && gap.hi[l] > 0.0
-                   && m1.hi[l] > 0.0 && elliptic_param_acceptable(m[l], m1.hi[l], m1.lo[l]) && k[l] != 0.0
-                   && m1_sum.hi[l] >= 0x1p-900 && rf_y[l] > 0.0);
-        any = taken[l] && any < 0 ? l : any;
+    for (int l = AVX_LANES - 1; l >= 0; --l) {
+        any = taken[l] ? l : any;
     }
     if (any < 0) {
         return 0;
     }
-    m = copy_taken(m, taken, any);
+    V4 m = copy_taken(par.m, taken, any), rf_x = copy_taken(par.rf_x, taken, any);
+    V4 rf_y = copy_taken(par.rf_y, taken, any);
     m1_sum.hi = copy_taken(m1_sum.hi, taken, any);
     m1_sum.lo = copy_taken(m1_sum.lo, taken, any);
-    rf_x = copy_taken(rf_x, taken, any);
-    rf_y = copy_taken(rf_y, taken, any);
     /* F first: its roots wait on nothing of the chain, whose roots then follow them */
-    const V4 f = (v4_abs(s_hi) / k) * rf_v4(rf_x, rf_y, v4_all(1.0));
+    const V4 f = par.factor * rf_v4(rf_x, rf_y, v4_all(1.0));
     const V4Dd kc = v4_dd_sqrt(m1_sum);
     ChainsV4 chains;
     V4Dd K, inv_K;
-    LibrationV4 s;
+    MotionV4 s;
     chains_with_K_v4(m, kc.hi, kc.lo, &chains, &K, &inv_K, &s.bottom_scale);
     libration_scales_v4(&s, &chains, k, kc.hi, in.w0_hi, K.hi, t0);
-    /* u0 = F, or 2K - F for omega0 < 0 (F(pi - phi) = 2K - F(phi)), with the sign of s */
+    /* a libration's u0 = F, or 2K - F for omega0 < 0 (F(pi - phi) = 2K - F(phi)), with the
+     * sign of s, and its rate w_n; a rotation's u0 = v0 and rate (|omega0|/2) sqrt(1 + rho^2) */
     const V4 base = v4_pick((V4Mask)(in.om >= 0.0), f, (2.0 * K.hi - f) + 2.0 * K.lo);
-    const V4 u0 = v4_pick((V4Mask)(s_hi < 0.0), -base, base);
-    /* set_quarter_rates: rho = (w_n / K) 2^e, x0 = u0 / K */
-    const V4Dd rho = v4_dd_mul(w_n, inv_K), x0 = v4_dd_mul((V4Dd){u0, v4_all(0.0)}, inv_K);
+    V4 u0 = v4_pick((V4Mask)(s_hi < 0.0), -base, base);
+    V4Dd rate_n = w_n;
+    if (rotating != 0) {
+        const V4Dd rotation_rate = v4_dd_mul((V4Dd){hs_n, v4_all(0.0)}, v4_dd_sqrt(one_plus_rho2));
+        u0 = v4_pick(rotation, f, u0);
+        rate_n = v4_pick_dd(rotation, rotation_rate, w_n);
+        s.rotation = rotation;
+        s.direction = direction;
+        s.omega_half = v4_pick(rotation, rotation_rate.hi * up, s.omega_half);   /* dd_ldexp(rate, e).hi */
+    }
+    /* set_quarter_rates: rho = (rate_n / K) 2^e, x0 = u0 / K */
+    const V4Dd rho = v4_dd_mul(rate_n, inv_K), x0 = v4_dd_mul((V4Dd){u0, v4_all(0.0)}, inv_K);
     s.rho_hi = rho.hi * up;
     s.rho_lo = rho.lo * up;
     s.x0_hi = x0.hi;
     s.x0_lo = x0.lo;
     s.theta_turns = v4_pick(past, v4_pick((V4Mask)(in.th > 0.0), v4_all(1.0), v4_all(-1.0)), v4_all(0.0));
     const int done = eval_taken_v4(&s, in.tv, lanes, taken, theta, omega);
-    ONCE_AVX_TALLY(moving, done);
+    ONCE_AVX_TALLY(moving, done & ~rotating);
+    ONCE_AVX_TALLY(rotation, done & rotating);
     return done;
 }
 

@@ -22,7 +22,7 @@
  * moving librations must not only agree with the scalar set-up but run in the vectors. */
 #ifdef PENDULUM_EXACT_FMA_BUILD
 #define EXACT_TALLIED 1
-static long tally_rest, tally_moving;
+static long tally_rest, tally_moving, tally_rotation;
 #define ONCE_AVX_TALLY(kind, done) (tally_##kind += __builtin_popcount((unsigned)(done)))
 #define dd_sincos_fma dd_sincos_tallied
 #define dd_cos_sin_fma dd_cos_sin_tallied
