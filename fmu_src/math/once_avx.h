@@ -21,6 +21,7 @@
 #ifndef PENDULUM_ONCE_AVX_H
 #define PENDULUM_ONCE_AVX_H
 
+#include <float.h>
 #include <immintrin.h>
 
 /* --- double-double operations on four lanes ----------------------------------------------- */
@@ -835,14 +836,11 @@ typedef struct {
     V4Mask ok;       /* the parameter accepted (elliptic_param_acceptable), R_F's x or y > 0 */
 } ParameterV4;
 
-/* elliptic_param_acceptable lane by lane, as a mask */
+/* elliptic_param_acceptable on four lanes (isfinite(x) as |x| <= DBL_MAX) */
 static inline V4Mask acceptable_v4(V4 m, V4Dd m1)
 {
-    V4Mask ok;
-    for (int l = 0; l < AVX_LANES; ++l) {
-        ok[l] = -(long long)elliptic_param_acceptable(m[l], m1.hi[l], m1.lo[l]);
-    }
-    return ok;
+    return (V4Mask)(m >= 0.0) & (V4Mask)(m <= 1.0) & (V4Mask)(m1.hi >= 0.0) & (V4Mask)(m1.hi <= 1.0)
+           & (V4Mask)(v4_abs(m1.lo) <= DBL_MAX) & (V4Mask)(v4_abs(m + m1.hi - 1.0) <= 1e-12);
 }
 
 /* libration_parameter for gap > 0: q = hs_n / w_n, m1 = (gap / w_n)(c + q), k = hypot(s, q)
@@ -932,9 +930,12 @@ static inline ParameterV4 pick_parameter(V4Mask where, ParameterV4 yes, Paramete
  * fine window next to it, parameters elliptic_param_acceptable refuses, k = 0, and the rare
  * lanes outside the vectors' range (a power of two of the rates beyond 2^+-1000, m1 below
  * 2^-900, where dd_scalbn and dd_sqrt take other paths), and times off the evaluation's
- * common path. */
-static int once_moving_avx(int lanes, const double *theta0, const double *omega0, const DoubleDouble *w0, double t0,
-                           const double *t, double *theta, double *omega)
+ * common path. *rotating: the lanes that rotate, as bits. With rotations_too = 0 (a
+ * constant) the rotations' code is left out, and a block with a rotation returns 0 once it
+ * has found it (see once_moving_avx). */
+ONCE_STAGE int once_moving_block(int lanes, const double *theta0, const double *omega0, const DoubleDouble *w0,
+                                 double t0, const double *t, double *theta, double *omega, int rotations_too,
+                                 int *rotating_lanes)
 {
     const OnceInputsV4 in = once_inputs_v4(lanes, theta0, omega0, w0, t);
     CosSinV4 trig;
@@ -949,21 +950,22 @@ static int once_moving_avx(int lanes, const double *theta0, const double *omega0
      * larger; gap = c w_n - hs_n, the sign of m1 */
     const V4 half_speed = 0.5 * v4_abs(in.om);
     V4 down, up;
-    V4Mask in_range;
     for (int l = 0; l < AVX_LANES; ++l) {
         const int e = dd_frexp_exponent(larger(in.w0_hi[l], half_speed[l]));
-        in_range[l] = -(long long)(l < lanes && e >= -1000 && e <= 1000);   /* dd_scalbn's 2^-e and 2^e */
-        down[l] = in_range[l] ? dd_scalbn(1.0, -e) : 1.0;
-        up[l] = in_range[l] ? dd_scalbn(1.0, e) : 1.0;
+        const int in_range = l < lanes && e >= -1000 && e <= 1000;   /* dd_scalbn's 2^-e and 2^e */
+        down[l] = in_range ? dd_scalbn(1.0, -e) : 0.0;   /* 0: a lane left to the caller */
+        up[l] = in_range ? dd_scalbn(1.0, e) : 1.0;
     }
+    const V4Mask in_range = (V4Mask)(down != 0.0);
     const V4Dd w_n = {in.w0_hi * down, in.w0_lo * down};
     const V4 hs_n = half_speed * down;
     const V4Dd c_w = v4_dd_mul(c, w_n);
     const V4Dd gap = v4_dd_add(c_w, (V4Dd){-hs_n, v4_all(-0.0)});   /* dd_sub */
     const V4Mask outside = in_range & ~(V4Mask)(v4_abs(gap.hi) < 0x1p-30 * hs_n);   /* the fine window */
     const V4Mask rotation = outside & (V4Mask)(gap.hi < 0.0);
-    const int rotating = v4_bits(rotation), librating = v4_bits(outside & (V4Mask)(gap.hi > 0.0));
-    if (rotating == 0 && librating == 0) {
+    *rotating_lanes = v4_bits(rotation);
+    const int rotating = rotations_too ? *rotating_lanes : 0, librating = v4_bits(outside & (V4Mask)(gap.hi > 0.0));
+    if ((rotating == 0 && librating == 0) || rotating != *rotating_lanes) {
         return 0;
     }
     /* each kind's parameter where a lane has it */
@@ -971,7 +973,7 @@ static int once_moving_avx(int lanes, const double *theta0, const double *omega0
     ParameterV4 par, rot;
     V4 k = v4_all(0.0);
     V4Dd one_plus_rho2 = {v4_all(1.0), v4_all(0.0)};
-    if (librating != 0) {
+    if (!rotations_too || librating != 0) {
         par = libration_parameter_v4(c, s_hi, w_n, hs_n, gap, &k);
     }
     if (rotating != 0) {
@@ -1023,6 +1025,40 @@ static int once_moving_avx(int lanes, const double *theta0, const double *omega0
     const int done = eval_taken_v4(&s, in.tv, lanes, taken, theta, omega);
     ONCE_AVX_TALLY(moving, done & ~rotating);
     ONCE_AVX_TALLY(rotation, done & rotating);
+    return done;
+}
+
+/* once_moving_block for librations alone, and for librations and rotations: two functions,
+ * so that the rotations' code does not weigh on the librations' (in one function it cost a
+ * moving libration 5-7 ns, bench_exact_moving) */
+__attribute__((noinline)) static int once_moving_librations(int lanes, const double *theta0, const double *omega0,
+                                                            const DoubleDouble *w0, double t0, const double *t,
+                                                            double *theta, double *omega, int *rotating_lanes)
+{
+    return once_moving_block(lanes, theta0, omega0, w0, t0, t, theta, omega, 0, rotating_lanes);
+}
+
+__attribute__((noinline)) static int once_moving_rotations(int lanes, const double *theta0, const double *omega0,
+                                                           const DoubleDouble *w0, double t0, const double *t,
+                                                           double *theta, double *omega, int *rotating_lanes)
+{
+    return once_moving_block(lanes, theta0, omega0, w0, t0, t, theta, omega, 1, rotating_lanes);
+}
+
+/* A block of moving starts by once_moving_librations, or once_moving_rotations where the
+ * block has a rotation: *expect_rotation (the last block's) sends it to the latter at once,
+ * else the former finds the rotation after the angle and the gap and hands the block over */
+static inline int once_moving_avx(int lanes, const double *theta0, const double *omega0, const DoubleDouble *w0,
+                                  double t0, const double *t, double *theta, double *omega, int *expect_rotation)
+{
+    int rotating = 0, done = 0;
+    if (!*expect_rotation) {
+        done = once_moving_librations(lanes, theta0, omega0, w0, t0, t, theta, omega, &rotating);
+    }
+    if (*expect_rotation || rotating != 0) {
+        done = once_moving_rotations(lanes, theta0, omega0, w0, t0, t, theta, omega, &rotating);
+    }
+    *expect_rotation = rotating != 0;
     return done;
 }
 
