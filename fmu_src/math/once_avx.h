@@ -653,8 +653,9 @@ ONCE_STAGE void rotation_outputs_v4(const MotionV4 *s, V4 quarters, V4 odd, Homo
  * nearest integer by the shift where the fma build's phase_near rounds with rint: they differ
  * only in the sign of a zero, which no output reads (nor the half turns, a sum with it). The
  * Landen levels are the same for both motions (elliptic_sncndn_homogeneous_pair's, and
- * elliptic_sncndn_homogeneous's level 0); the outputs of each are formed where a lane has it. */
-ONCE_STAGE V4Mask eval_motion_v4(const MotionV4 *s, V4 tv, V4 *theta, V4 *omega)
+ * elliptic_sncndn_homogeneous's level 0); the outputs of each are formed where a lane has it
+ * (rotating: the bits of s->rotation, 0 where the caller knows there is no rotation). */
+ONCE_STAGE V4Mask eval_motion_v4(const MotionV4 *s, int rotating, V4 tv, V4 *theta, V4 *omega)
 {
     /* phase_at and phase_near */
     const V4Dd tau = v4_two_sum(tv, -s->t0);
@@ -684,7 +685,6 @@ ONCE_STAGE V4Mask eval_motion_v4(const MotionV4 *s, V4 tv, V4 *theta, V4 *omega)
                    &E0, &D0);
     const V4Mask negative = (V4Mask)(v < 0.0);   /* sn is odd, cn and dn are even */
     const HomogeneousV4 h1 = {v4_pick(negative, -S, S), C, E, D}, h0 = {v4_pick(negative, -S0, S0), C0, E0, D0};
-    const int rotating = v4_bits(s->rotation);
     V4 lib_theta = v4_all(0.0), lib_omega = lib_theta, rot_theta = lib_theta, rot_omega = lib_theta;
     if (rotating != 0xF) {
         libration_outputs_v4(s, odd, sign, h1, h0, &lib_theta, &lib_omega);
@@ -760,12 +760,13 @@ ONCE_STAGE void libration_scales_v4(MotionV4 *s, const ChainsV4 *c, V4 k, V4 kc,
     s->landen_1mk = c->landen_1mk;
 }
 
-/* The librations s evaluated at tv; writes the lanes taken that are on the evaluation's
- * common path and returns them as bits */
-ONCE_STAGE int eval_taken_v4(const MotionV4 *s, V4 tv, int lanes, V4Mask taken, double *theta, double *omega)
+/* The librations and rotations s evaluated at tv (rotating: as eval_motion_v4's); writes the
+ * lanes taken that are on the evaluation's common path and returns them as bits */
+ONCE_STAGE int eval_taken_v4(const MotionV4 *s, int rotating, V4 tv, int lanes, V4Mask taken, double *theta,
+                              double *omega)
 {
     V4 angle, om;
-    const V4Mask path = eval_motion_v4(s, tv, &angle, &om);
+    const V4Mask path = eval_motion_v4(s, rotating, tv, &angle, &om);
     int done = 0;
     for (int l = 0; l < lanes; ++l) {
         if (taken[l] && path[l]) {
@@ -821,7 +822,7 @@ ONCE_STAGE int once_avx(int lanes, const double *theta0, const DoubleDouble *w0,
     s.rho_lo = rho.lo;
     s.x0_hi = v4_pick((V4Mask)(u0 < 0.0), v4_all(-1.0), v4_pick((V4Mask)(u0 > 0.0), v4_all(1.0), v4_all(0.0)));
     s.x0_lo = v4_all(0.0);
-    const int done = eval_taken_v4(&s, in.tv, lanes, taken, theta, omega);
+    const int done = eval_taken_v4(&s, 0, in.tv, lanes, taken, theta, omega);
     ONCE_AVX_TALLY(rest, done);
     return done;
 }
@@ -1022,7 +1023,7 @@ ONCE_STAGE int once_moving_block(int lanes, const double *theta0, const double *
     s.x0_hi = x0.hi;
     s.x0_lo = x0.lo;
     s.theta_turns = v4_pick(past, v4_pick((V4Mask)(in.th > 0.0), v4_all(1.0), v4_all(-1.0)), v4_all(0.0));
-    const int done = eval_taken_v4(&s, in.tv, lanes, taken, theta, omega);
+    const int done = eval_taken_v4(&s, rotating, in.tv, lanes, taken, theta, omega);
     ONCE_AVX_TALLY(moving, done & ~rotating);
     ONCE_AVX_TALLY(rotation, done & rotating);
     return done;
