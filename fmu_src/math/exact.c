@@ -1200,8 +1200,8 @@ void pendulum_exact_eval_many(const PendulumExact *ex, size_t n, const double *t
 }
 
 /* The fma build (GCC on x86-64, the fma and AVX enabled) sets up and evaluates four releases
- * from rest, or four moving librations, at once in AVX vectors (once_avx.h): the same bits as
- * once_scalar below. */
+ * from rest, or four moving librations or rotations, at once in AVX vectors (once_avx.h): the
+ * same bits as once_scalar below. */
 #if defined(PENDULUM_DD_FMA) && defined(__GNUC__) && defined(__x86_64__)
 #define EXACT_ONCE_AVX 1
 #include "once_avx.h"

@@ -9,11 +9,12 @@
  * vector square root, and the two-products by the fma as the fma build's scalar ones. So a lane
  * has the scalar bits: dd_cos_sin_begin and _end (the cosine of theta0/2 and the double sine),
  * elliptic_param_begin and _finish (the Landen chain, K and 1/K), the fields of
- * init_from_rest (once_avx) or, for a moving libration, of exact_init_dd's general path
- * (once_moving_avx: the scaled rates, q, m1, dd_sqrt, elliptic_RF, the initial phase; glibc's
- * hypot called lane by lane), and eval_any's libration (phase_near, the Landen pair,
- * libration_angle_omega, add_half_turns: the roundings of pendulum_exact_eval, whose inline
- * common case reaches them in fewer steps) with its whole turns. Where the scalar
+ * init_from_rest (once_avx) or, for a moving libration or rotation, of exact_init_dd's
+ * general path (once_moving_block: the scaled rates, q, m1 or dd_sin, mu1, mu, dd_sqrt,
+ * elliptic_RF, the initial phase; glibc's hypot called lane by lane), and eval_any's
+ * libration (phase_near, the Landen pair, libration_angle_omega, add_half_turns: the
+ * roundings of pendulum_exact_eval, whose inline common case reaches them in fewer steps)
+ * with its whole turns, or its rotation (elliptic_atan_ratio, dn, the winding). Where the scalar
  * code branches on a value, each lane computes what it needs of both sides and keeps its own
  * (v4_pick, a blend); the table's rows are read lane by lane; a lane whose Landen chain has
  * ended is carried along with its values frozen. test_exact_batch compares every output with
