@@ -972,14 +972,15 @@ ONCE_STAGE int once_moving_block(int lanes, const double *theta0, const double *
     }
     /* each kind's parameter where a lane has it */
     const V4 direction = v4_pick((V4Mask)(in.om > 0.0), v4_all(1.0), v4_all(-1.0));
-    ParameterV4 par, rot;
+    ParameterV4 par;
     V4 k = v4_all(0.0);
     V4Dd one_plus_rho2 = {v4_all(1.0), v4_all(0.0)};
     if (!rotations_too || librating != 0) {
         par = libration_parameter_v4(c, s_hi, w_n, hs_n, gap, &k);
     }
     if (rotating != 0) {
-        rot = rotation_parameter_v4(&trig, in.th, past, c, c_w, w_n, hs_n, gap, direction, &one_plus_rho2);
+        const ParameterV4 rot = rotation_parameter_v4(&trig, in.th, past, c, c_w, w_n, hs_n, gap, direction,
+                                                      &one_plus_rho2);
         par = librating != 0 ? pick_parameter(rotation, rot, par) : rot;
     }
     /* elliptic_param_init_root: m1 = TwoSum(m1), k' = sqrt(m1) */
