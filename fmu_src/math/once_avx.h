@@ -232,14 +232,15 @@ ONCE_STAGE TablePointV4 table_point_v4(V4Dd y)
     const V4 scaled = u.hi * 64.0;
     const V4 whole = (V4)_mm256_round_pd((__m256d)scaled, _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC);
     const V4 index = whole + v4_pick((V4Mask)(scaled - whole >= 0.5), v4_all(1.0), v4_all(0.0));
-    const double *row[AVX_LANES];
-    for (int l = 0; l < AVX_LANES; ++l) {
-        row[l] = TABLE_64[(int)index[l]];
-    }
-    t.C.hi = (V4){row[0][0], row[1][0], row[2][0], row[3][0]};
-    t.C.lo = (V4){row[0][1], row[1][1], row[2][1], row[3][1]};
-    t.S.hi = (V4){row[0][2], row[1][2], row[2][2], row[3][2]};
-    t.S.lo = (V4){row[0][3], row[1][3], row[2][3], row[3][3]};
+    /* the four rows {cos hi, cos lo, sin hi, sin lo} loaded whole and transposed */
+    const __m256d r0 = _mm256_loadu_pd(TABLE_64[(int)index[0]]), r1 = _mm256_loadu_pd(TABLE_64[(int)index[1]]);
+    const __m256d r2 = _mm256_loadu_pd(TABLE_64[(int)index[2]]), r3 = _mm256_loadu_pd(TABLE_64[(int)index[3]]);
+    const __m256d even01 = _mm256_unpacklo_pd(r0, r1), odd01 = _mm256_unpackhi_pd(r0, r1);
+    const __m256d even23 = _mm256_unpacklo_pd(r2, r3), odd23 = _mm256_unpackhi_pd(r2, r3);
+    t.C.hi = (V4)_mm256_permute2f128_pd(even01, even23, 0x20);
+    t.C.lo = (V4)_mm256_permute2f128_pd(odd01, odd23, 0x20);
+    t.S.hi = (V4)_mm256_permute2f128_pd(even01, even23, 0x31);
+    t.S.lo = (V4)_mm256_permute2f128_pd(odd01, odd23, 0x31);
     t.r = v4_two_sum(u.hi - index * 0.015625, u.lo);
     return t;
 }
@@ -985,18 +986,20 @@ ONCE_STAGE int once_moving_block(int lanes, const double *theta0, const double *
     }
     /* elliptic_param_init_root: m1 = TwoSum(m1), k' = sqrt(m1) */
     V4Dd m1_sum = v4_two_sum(par.m1.hi, par.m1.lo);
-    V4Mask taken = outside & par.ok & (V4Mask)(m1_sum.hi >= 0x1p-900);
-    int any = -1;
-    for (int l = AVX_LANES - 1; l >= 0; --l) {
-        any = taken[l] ? l : any;
-    }
-    if (any < 0) {
+    const V4Mask taken = outside & par.ok & (V4Mask)(m1_sum.hi >= 0x1p-900);
+    const int taken_bits = v4_bits(taken);
+    if (taken_bits == 0) {
         return 0;
     }
-    V4 m = copy_taken(par.m, taken, any), rf_x = copy_taken(par.rf_x, taken, any);
-    V4 rf_y = copy_taken(par.rf_y, taken, any);
-    m1_sum.hi = copy_taken(m1_sum.hi, taken, any);
-    m1_sum.lo = copy_taken(m1_sum.lo, taken, any);
+    V4 m = par.m, rf_x = par.rf_x, rf_y = par.rf_y;
+    if (taken_bits != 0xF) {   /* a branch, not a wait on the masks, where every lane is taken */
+        const int any = __builtin_ctz((unsigned)taken_bits);
+        m = copy_taken(m, taken, any);
+        rf_x = copy_taken(rf_x, taken, any);
+        rf_y = copy_taken(rf_y, taken, any);
+        m1_sum.hi = copy_taken(m1_sum.hi, taken, any);
+        m1_sum.lo = copy_taken(m1_sum.lo, taken, any);
+    }
     /* F first: its roots wait on nothing of the chain, whose roots then follow them */
     const V4 f = par.factor * rf_v4(rf_x, rf_y, v4_all(1.0));
     const V4Dd kc = v4_dd_sqrt(m1_sum);
