@@ -1200,8 +1200,8 @@ void pendulum_exact_eval_many(const PendulumExact *ex, size_t n, const double *t
 }
 
 /* The fma build (GCC on x86-64, the fma and AVX enabled) sets up and evaluates four releases
- * from rest, or four moving librations, at once in AVX vectors (once_avx.h): the same bits as
- * once_scalar below. */
+ * from rest, or four moving librations or rotations, at once in AVX vectors (once_avx.h): the
+ * same bits as once_scalar below. */
 #if defined(PENDULUM_DD_FMA) && defined(__GNUC__) && defined(__x86_64__)
 #define EXACT_ONCE_AVX 1
 #include "once_avx.h"
@@ -1263,6 +1263,7 @@ __attribute__((noinline)) static size_t once_moving_all(size_t n, const double *
 {
     OnceRate rate = {NAN, NAN, {NAN, NAN}, 0};
     size_t refused = 0, j = 0;
+    int expect_rotation = 0;   /* once_moving_avx's guess for the next block */
     while (j < n) {
         double th[ONCE_BLOCK], om[ONCE_BLOCK], times[ONCE_BLOCK], th_out[ONCE_BLOCK], om_out[ONCE_BLOCK];
         DoubleDouble w0[ONCE_BLOCK];
@@ -1277,7 +1278,7 @@ __attribute__((noinline)) static size_t once_moving_all(size_t n, const double *
                 at[taken++] = j;
             }
         }
-        const int done = taken > 0 ? once_moving_avx(taken, th, om, w0, t0, times, th_out, om_out) : 0;
+        const int done = taken > 0 ? once_moving_avx(taken, th, om, w0, t0, times, th_out, om_out, &expect_rotation) : 0;
         for (int l = 0; l < taken; ++l) {
             const size_t k = at[l];
             if (done & (1 << l)) {

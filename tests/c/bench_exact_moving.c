@@ -1,4 +1,4 @@
-/* bench_exact_moving.c: new moving librations set up and evaluated once, in a batch
+/* bench_exact_moving.c: new moving librations and rotations set up and evaluated once, in a batch
  * (pendulum_exact_once_gl_many, 64 states a call, as exact() hands them over) against one at a
  * time (pendulum_exact_init_gl + pendulum_exact_eval), ns per state; a release from rest as
  * the batch's reference. g = L = 1; 100,000 states per case, theta0 (1 + 1e-9 j) around the
@@ -60,7 +60,10 @@ static double time_kind(int kind, double *sum)
 
 int main(void)
 {
-    const double cases[][2] = {{90.0, 0.5}, {30.0, 1.2}, {10.0, 1.9}, {90.0, 0.0}};   /* deg, omega0 */
+    /* deg, omega0: librations, a release from rest, rotations (omega0 above the separatrix
+     * speed 2 cos(theta0/2): 2, 1.41, 1.99, 0.17) */
+    const double cases[][2] = {{90.0, 0.5}, {30.0, 1.2}, {10.0, 1.9}, {90.0, 0.0},
+                               {0.0, 2.5}, {90.0, 3.0}, {10.0, 20.0}, {170.0, 0.3}};
     unsigned long long x = 88172645463325252ULL;
     for (int j = 0; j < STATES; ++j) {
         x ^= x << 13;

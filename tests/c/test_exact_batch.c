@@ -7,8 +7,10 @@
  * are not a multiple of the lane count; for the new states, arrays that mix every kind of
  * state, refused inputs and special times, and arrays of moving starts (librations of every
  * amplitude and speed, next to the separatrix window's edge, k and m1 tiny, any g and L).
- * A copy of the fma build counts the lanes its vectors did: releases from rest and moving
- * librations must run there, not only agree. Prints one summary line; exit status 0 iff
+ * Arrays of rotations: barely over the top (either side of the fine window's edge), fast
+ * spins, both directions, theta0 of both signs, near and past pi, any g and L, far times.
+ * A copy of the fma build counts the lanes its vectors did: releases from rest, moving
+ * librations and rotations must run there, not only agree. Prints one summary line; exit status 0 iff
  * every check passed. */
 #include <math.h>
 #include <stdint.h>
@@ -22,7 +24,7 @@
  * moving librations must not only agree with the scalar set-up but run in the vectors. */
 #ifdef PENDULUM_EXACT_FMA_BUILD
 #define EXACT_TALLIED 1
-static long tally_rest, tally_moving;
+static long tally_rest, tally_moving, tally_rotation;
 #define ONCE_AVX_TALLY(kind, done) (tally_##kind += __builtin_popcount((unsigned)(done)))
 #define dd_sincos_fma dd_sincos_tallied
 #define dd_cos_sin_fma dd_cos_sin_tallied
@@ -395,10 +397,124 @@ static void check_once_moving(void)
     printf("once_gl_many, moving: no fma build here, the vector path not counted\n");
 }
 
+/* A rotation for w0: barely over the top (within 2^-26 of the separatrix speed, either side
+ * of the fine window's edge 2^-30), just over it, fast spins (omega0 up to 1e8 w0), or any
+ * speed above; theta0 of both signs, anywhere, near pi or just past it (up to 3.2), and
+ * omega0 of both signs */
+static void draw_rotation(double w0, double *theta0, double *omega0)
+{
+    const double sign_th = uniform() < 0.5 ? -1.0 : 1.0, sign_om = uniform() < 0.5 ? -1.0 : 1.0;
+    const double where = uniform();
+    double th = (2.0 * uniform() - 1.0) * PI;
+    if (where < 0.15) {
+        th = sign_th * PI * (1.0 - pow(10.0, -1.0 - 15.0 * uniform()));   /* near the top */
+    } else if (where < 0.3) {
+        th = sign_th * (PI + (3.2 - PI) * uniform());                        /* past pi */
+    } else if (where < 0.4) {
+        th = sign_th * uniform() * pow(10.0, -10.0 * uniform());             /* near the bottom */
+    }
+    const double edge = 2.0 * w0 * fabs(cos(0.5 * th)), kind = uniform();   /* the separatrix speed */
+    double speed = edge * (1.0 + 3.0 * uniform());
+    if (kind < 0.25) {
+        speed = edge * (1.0 + 0x1p-30 * (0.25 + 63.75 * uniform()));   /* the fine window's edge */
+    } else if (kind < 0.4) {
+        speed = edge * (1.0 + pow(10.0, -8.0 * uniform()));
+    } else if (kind < 0.6) {
+        speed = w0 * pow(10.0, 8.0 * uniform());                       /* fast spins */
+    }
+    *theta0 = th;
+    *omega0 = sign_om * speed;
+}
+
+/* A rotation that the vectors must take: |theta0| <= 3.2, clear of the fine window (|c/q - 1|
+ * above 2^-28 in double, within 1e-15 of the set-up's), a time on the evaluation's common
+ * path */
+static int vector_rotation(const PendulumExact *ex, double theta0, double omega0, double w0, double t)
+{
+    const double c = fabs(cos(0.5 * theta0)), q = 0.5 * fabs(omega0) / w0;
+    return ex->regime == PENDULUM_ROTATION && fabs(theta0) <= 3.2 && fabs(c / q - 1.0) > 0x1p-28 && t != ex->t0
+           && fabs(ex->rho_hi * (t - ex->t0)) < 0x1p49;
+}
+
+/* pendulum_exact_once_gl_many over arrays of rotations (draw_rotation) with a few moving
+ * librations and releases from rest among them, any g and L (over twelve orders, and beyond
+ * 2^+-400), t0 = 0 or not, times from a fraction of a turn to 1e12 turns and special times:
+ * the bits of the scalar set-up, and the tallied copy's vectors did every rotation they must
+ * take and no more rotations than there are */
+static void check_once_rotation(void)
+{
+    int differences = 0, points = 0, refusals = 0, wrong_counts = 0;
+    long must = 0, rotations = 0;
+#ifdef EXACT_TALLIED
+    tally_rotation = 0;
+#endif
+    for (int round = 0; round < 3000; ++round) {
+        const size_t n = 1 + (size_t)(uniform() * 40);
+        double theta0[40], omega0[40], g[40], L[40], t[40];
+        const double t0 = uniform() < 0.5 ? 0.0 : 1e3 * (2.0 * uniform() - 1.0);
+        for (size_t i = 0; i < n; ++i) {
+            g[i] = pow(10.0, 12.0 * uniform() - 6.0);
+            L[i] = pow(10.0, 12.0 * uniform() - 6.0);
+            if (uniform() < 0.03) {
+                L[i] = ldexp(L[i], uniform() < 0.5 ? 450 : -450);
+            }
+            if (i > 0 && uniform() < 0.5) {
+                g[i] = g[i - 1];
+                L[i] = L[i - 1];
+            }
+            const double w0 = sqrt(g[i] / L[i]);
+            const double other = uniform();
+            if (other < 0.1) {
+                draw_moving((int)(uniform() * 10), w0, &theta0[i], &omega0[i]);
+            } else {
+                draw_rotation(w0, &theta0[i], &omega0[i]);
+                omega0[i] = other < 0.12 ? 0.0 : omega0[i];
+            }
+            PendulumExact ex;
+            const int set_up = pendulum_exact_init_gl(&ex, theta0[i], omega0[i], g[i], L[i], t0) == 0;
+            const double period = set_up && isfinite(pendulum_exact_period(&ex)) ? pendulum_exact_period(&ex) : 1.0 / w0;
+            const double turns[] = {0.3, 50.0, 1e6, 1e12};
+            t[i] = t0 + (2.0 * uniform() - 1.0) * turns[(int)(uniform() * 4)] * period;
+            if (uniform() < 0.04) {
+                const double special[] = {t0, NAN, INFINITY, t0 + 0x1p52 * period, t0 - 0x1p63 * period};
+                t[i] = special[(int)(uniform() * 5)];
+            }
+            if (set_up) {
+                must += vector_rotation(&ex, theta0[i], omega0[i], w0, t[i]);
+                rotations += ex.regime == PENDULUM_ROTATION;
+            }
+        }
+        const Once arrays = {n, theta0, omega0, g, L, t0, t};
+        differences += compare_once(pendulum_exact_once_gl_many, &arrays, &wrong_counts, &refusals);
+#ifdef EXACT_TALLIED
+        if (__builtin_cpu_supports("fma")) {
+            differences += compare_once(pendulum_exact_once_gl_many_tallied, &arrays, &wrong_counts, &refusals);
+        }
+#endif
+        points += (int)n;
+    }
+    check(differences == 0, "once_gl_many, rotations: %d outputs differ from the set-up and evaluation (%d states)",
+          differences, points);
+    check(wrong_counts == 0, "once_gl_many, rotations: %d arrays with a wrong count of refused elements", wrong_counts);
+    check(must > points / 2, "once_gl_many, rotations: %ld of %d states rotations for the vectors", must, points);
+#ifdef EXACT_TALLIED
+    if (__builtin_cpu_supports("fma")) {
+        check(tally_rotation >= must && tally_rotation <= rotations,
+              "once_gl_many, rotations: the vectors did %ld rotations, at least %ld and at most %ld expected",
+              tally_rotation, must, rotations);
+        printf("once_gl_many, rotations: %ld of %d states in vectors (%ld required, %ld rotations)\n", tally_rotation,
+               points, must, rotations);
+        return;
+    }
+#endif
+    printf("once_gl_many, rotations: no fma build here, the vector path not counted\n");
+}
+
 int main(void)
 {
     check_once();
     check_once_moving();
+    check_once_rotation();
     /* librations from rest, few levels (the lock-step path) and near the top (many levels) */
     const double amplitudes_deg[] = {1e-6, 0.5, 10.0, 45.0, 90.0, 135.0, 170.0, 179.0, 179.9999, 180.0 - 1e-9,
                                      180.0 - 1e-12, 180.0};
