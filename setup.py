@@ -22,7 +22,8 @@ A regular install or wheel builds the multi-platform FMU (linux64, win64, darwin
 from the ``ziglang`` build requirement, docs/platforms.md) in ``build-wheel/``.
 
 Environment: ``PENDULUM_FMU_SKIP_BUILD=1`` skips the build, ``PENDULUM_ZIG`` names the zig
-to cross-build with (default: the ``ziglang`` build requirement's), ``PENDULUM_FMU_BUILD_DIR``
+to cross-build with (default: the ``ziglang`` build requirement's), ``PENDULUM_ZIG_CACHE``
+the folder of its caches (default: ``zig-cache/`` in the build folder), ``PENDULUM_FMU_BUILD_DIR``
 chooses the CMake build folder (default ``build/`` beside this file, ``build-wheel/`` for a
 regular install or a wheel).
 """
@@ -81,7 +82,10 @@ def platform_options() -> list[str]:
         print("warning: pendulum-fmu: no ziglang in the build environment: the FMU gets only the "
               "host's binary", file=sys.stderr)
         return []
-    return ["-DPENDULUM_PLATFORMS=ON", f"-DPENDULUM_ZIG={zig}", f"-DPENDULUM_PYTHON={sys.executable}"]
+    options = ["-DPENDULUM_PLATFORMS=ON", f"-DPENDULUM_ZIG={zig}", f"-DPENDULUM_PYTHON={sys.executable}"]
+    if os.environ.get("PENDULUM_ZIG_CACHE"):
+        options.append(f"-DPENDULUM_ZIG_CACHE={os.environ['PENDULUM_ZIG_CACHE']}")
+    return options
 
 
 def build_fmu(platforms: bool = False) -> Path | None:

@@ -16,9 +16,12 @@
 #
 # Needs CROSS_ZIG (the zig executable) and CROSS_PYTHON (a Python for fat_macho.py).
 # zig's caches (the C runtimes it compiles once per target, about 1.5 min for Windows) live
-# in ${CMAKE_BINARY_DIR}/zig-cache, so they go with the build folder and a rebuild is quick.
+# in ${CMAKE_BINARY_DIR}/zig-cache, so they go with the build folder and a rebuild is quick;
+# -DPENDULUM_ZIG_CACHE=DIR shares another build's (the tests' wheel build takes build/'s, so a
+# fresh clone compiles the C runtimes once, not twice).
 
-set(CROSS_ZIG_CACHE ${CMAKE_BINARY_DIR}/zig-cache)
+set(PENDULUM_ZIG_CACHE ${CMAKE_BINARY_DIR}/zig-cache CACHE PATH "zig's global and local cache of the cross builds")
+set(CROSS_ZIG_CACHE ${PENDULUM_ZIG_CACHE})
 set(CROSS_LIBRARY_DIR ${CMAKE_CURRENT_LIST_DIR})
 
 # Flags of every cross build: the same optimisation as the host Release build, C11, hidden
