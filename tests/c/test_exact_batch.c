@@ -25,6 +25,7 @@
 #ifdef PENDULUM_EXACT_FMA_BUILD
 #define EXACT_TALLIED 1
 static long tally_rest, tally_moving, tally_rotation;
+#define TALLY(kind) tally_##kind
 #define ONCE_AVX_TALLY(kind, done) (tally_##kind += __builtin_popcount((unsigned)(done)))
 #define dd_sincos_fma dd_sincos_tallied
 #define dd_cos_sin_fma dd_cos_sin_tallied
@@ -67,6 +68,7 @@ size_t pendulum_exact_once_gl_many(size_t n, const double *theta0, const double 
                                    const double *L, double t0, const double *t, double *theta, double *omega);
 double pendulum_exact_period(const PendulumExact *ex);
 #else
+#define TALLY(kind) 0L   /* no tallied copy: nothing counted */
 #include "exact.h"
 #endif
 
@@ -198,6 +200,44 @@ static int compare_once(OnceFunction *once, const Once *a, int *wrong_counts, in
     return differences;
 }
 
+/* compare_once of the core's pendulum_exact_once_gl_many and, where the processor has an fma,
+ * of the tallied copy (whose vector lanes are counted) */
+static int compare_both(const Once *a, int *wrong_counts, int *refusals)
+{
+    int differences = compare_once(pendulum_exact_once_gl_many, a, wrong_counts, refusals);
+#ifdef EXACT_TALLIED
+    if (__builtin_cpu_supports("fma")) {
+        differences += compare_once(pendulum_exact_once_gl_many_tallied, a, wrong_counts, refusals);
+    }
+#endif
+    return differences;
+}
+
+/* The checks of a run of arrays of one kind of moving start: no output differs, the counts of
+ * refused elements are right, most states are of the kind, and (fma build) the vectors did
+ * at least the `must` states that qualify and at most the `of_kind` of that kind */
+static void check_kind(const char *kind, int differences, int wrong_counts, int points, long must, long of_kind,
+                       long tally)
+{
+    check(differences == 0, "once_gl_many, %s: %d outputs differ from the set-up and evaluation (%d states)", kind,
+          differences, points);
+    check(wrong_counts == 0, "once_gl_many, %s: %d arrays with a wrong count of refused elements", kind, wrong_counts);
+    check(must > points / 2, "once_gl_many, %s: %ld of %d states for the vectors", kind, must, points);
+#ifdef EXACT_TALLIED
+    if (__builtin_cpu_supports("fma")) {
+        check(tally >= must && tally <= of_kind,
+              "once_gl_many, %s: the vectors did %ld, at least %ld and at most %ld expected", kind, tally, must,
+              of_kind);
+        printf("once_gl_many, %s: %ld of %d states in vectors (%ld required, %ld of the kind)\n", kind, tally,
+               points, must, of_kind);
+        return;
+    }
+#endif
+    (void)tally;
+    (void)of_kind;
+    printf("once_gl_many, %s: no fma build here, the vector path not counted\n", kind);
+}
+
 /* pendulum_exact_once_gl_many against pendulum_exact_init_gl, _eval and _resolvable, element
  * by element: arrays of 1 to 40 releases from rest (most: every amplitude, near the top, past
  * pi, tiny), moving starts, refused inputs, runs of one g and L, special times. */
@@ -240,12 +280,7 @@ static void check_once(void)
             }
         }
         const Once arrays = {n, theta0, omega0, g, L, t0, t};
-        differences += compare_once(pendulum_exact_once_gl_many, &arrays, &wrong_counts, &refusals);
-#ifdef EXACT_TALLIED
-        if (__builtin_cpu_supports("fma")) {
-            differences += compare_once(pendulum_exact_once_gl_many_tallied, &arrays, &wrong_counts, &refusals);
-        }
-#endif
+        differences += compare_both(&arrays, &wrong_counts, &refusals);
         points += (int)n;
     }
     /* releases from the edges of the set-up's cases: theta0 / 2 on the table's points i/64 and
@@ -372,29 +407,10 @@ static void check_once_moving(void)
             }
         }
         const Once arrays = {n, theta0, omega0, g, L, t0, t};
-        differences += compare_once(pendulum_exact_once_gl_many, &arrays, &wrong_counts, &refusals);
-#ifdef EXACT_TALLIED
-        if (__builtin_cpu_supports("fma")) {
-            differences += compare_once(pendulum_exact_once_gl_many_tallied, &arrays, &wrong_counts, &refusals);
-        }
-#endif
+        differences += compare_both(&arrays, &wrong_counts, &refusals);
         points += (int)n;
     }
-    check(differences == 0, "once_gl_many, moving: %d outputs differ from the set-up and evaluation (%d states)",
-          differences, points);
-    check(wrong_counts == 0, "once_gl_many, moving: %d arrays with a wrong count of refused elements", wrong_counts);
-    check(must > points / 2, "once_gl_many, moving: %ld of %d states moving librations for the vectors", must, points);
-#ifdef EXACT_TALLIED
-    if (__builtin_cpu_supports("fma")) {
-        check(tally_moving >= must && tally_moving <= librations,
-              "once_gl_many, moving: the vectors did %ld moving librations, at least %ld and at most %ld expected",
-              tally_moving, must, librations);
-        printf("once_gl_many, moving: %ld of %d states in vectors (%ld required, %ld librations)\n", tally_moving,
-               points, must, librations);
-        return;
-    }
-#endif
-    printf("once_gl_many, moving: no fma build here, the vector path not counted\n");
+    check_kind("moving librations", differences, wrong_counts, points, must, librations, TALLY(moving));
 }
 
 /* A rotation for w0: barely over the top (within 2^-26 of the separatrix speed, either side
@@ -485,29 +501,10 @@ static void check_once_rotation(void)
             }
         }
         const Once arrays = {n, theta0, omega0, g, L, t0, t};
-        differences += compare_once(pendulum_exact_once_gl_many, &arrays, &wrong_counts, &refusals);
-#ifdef EXACT_TALLIED
-        if (__builtin_cpu_supports("fma")) {
-            differences += compare_once(pendulum_exact_once_gl_many_tallied, &arrays, &wrong_counts, &refusals);
-        }
-#endif
+        differences += compare_both(&arrays, &wrong_counts, &refusals);
         points += (int)n;
     }
-    check(differences == 0, "once_gl_many, rotations: %d outputs differ from the set-up and evaluation (%d states)",
-          differences, points);
-    check(wrong_counts == 0, "once_gl_many, rotations: %d arrays with a wrong count of refused elements", wrong_counts);
-    check(must > points / 2, "once_gl_many, rotations: %ld of %d states rotations for the vectors", must, points);
-#ifdef EXACT_TALLIED
-    if (__builtin_cpu_supports("fma")) {
-        check(tally_rotation >= must && tally_rotation <= rotations,
-              "once_gl_many, rotations: the vectors did %ld rotations, at least %ld and at most %ld expected",
-              tally_rotation, must, rotations);
-        printf("once_gl_many, rotations: %ld of %d states in vectors (%ld required, %ld rotations)\n", tally_rotation,
-               points, must, rotations);
-        return;
-    }
-#endif
-    printf("once_gl_many, rotations: no fma build here, the vector path not counted\n");
+    check_kind("rotations", differences, wrong_counts, points, must, rotations, TALLY(rotation));
 }
 
 int main(void)
