@@ -2,7 +2,7 @@
 # All tests from scratch: the linter and the type checker, C unit tests (ctest) in a normal and a
 # sanitizer build, valgrind, then pytest. Each step says what it does; the builds show CMake's
 # stages, ctest and pytest their own progress.
-#   bash scripts/test.sh [PYTEST ARGS...]          everything (CI, .ci/run: 25 to 50 minutes here)
+#   bash scripts/test.sh [PYTEST ARGS...]          everything (CI, .ci/run: 21 minutes here from a fresh clone)
 #   bash scripts/test.sh --fast [PYTEST ARGS...]   while working (about 4 minutes here): ruff, mypy,
 #       ctest -LE slow of the Release build (all but the libFuzzer run), and
 #       pytest -m "not slow and not engines" (the markers of pyproject.toml)
