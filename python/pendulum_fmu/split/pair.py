@@ -80,7 +80,7 @@ class Pair:
         return float((fmu.getFloat64 if self.v3 else fmu.getReal)([vr])[0])
 
     def get_all(self, fmu: Any, vrs: list[int]) -> list[float]:
-        """Several real values in one call (a master's rows: a quarter of the calls of one a value)."""
+        """Several real values in one call (a master's row reads Body's four outputs so)."""
         return [float(v) for v in (fmu.getFloat64 if self.v3 else fmu.getReal)(vrs)]
 
     def set(self, fmu: Any, vr: int, value: float) -> None:

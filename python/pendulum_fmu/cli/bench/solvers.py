@@ -30,7 +30,6 @@ NO_DRIVER = ("the study times the FMU's solvers with the C driver tests/c/bench_
 PROBLEMS = ("P1", "P2", "P3")
 
 
-
 def configure(parser: argparse.ArgumentParser) -> None:
     """Add the options of ``bench solvers``."""
     parser.add_argument("--fmu", type=Path, default=None, metavar="PATH",
