@@ -34,9 +34,10 @@ import numpy as np
 from fmpy import extract, read_model_description, simulate_fmu
 from scipy.integrate import solve_ivp
 
-from pendulum_fmu.bench.solvers import PEERS, Study, run_study
+from pendulum_fmu.bench.solvers import Study, run_study
 from pendulum_fmu.bench.workprecision.analysis import LEVELS, Point, against_dop853, cost_at, curve
 from pendulum_fmu.bench.workprecision.cdriver import Floor
+from pendulum_fmu.bench.workprecision.peers import PEERS
 from pendulum_fmu.bench.workprecision.problems import Case, cases, exact_theta
 
 T1_LEVELS: tuple[float, ...] = LEVELS

@@ -15,7 +15,7 @@ import pytest
 
 import split_corpus as corpus
 
-pytestmark = pytest.mark.slow  # about 80 s for both parts; test_split_judge.py is the fast check
+pytestmark = pytest.mark.slow  # about 40 s for both parts on two cores; test_split_judge.py is the fast check
 
 
 @pytest.fixture(scope="module")
