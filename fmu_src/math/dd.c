@@ -201,6 +201,18 @@ static const double TABLE_64[51][4] = {
 #define INV_6F_HI 0x1.6c16c16c16c17p-10
 #define INV_6F_LO (-0x1.f49f49f49f49fp-65)
 
+/* The parts in double of the series below: sin_versine_small's P and Q beyond their two
+ * leading terms (in z = r2.hi), table_leading's sin r - r_hi and 1 - cos r - R2_hi/2 (in
+ * z = R2_hi). Written once for doubles here and for the vectors of four of once_avx.h, which
+ * the fma build compiles in this same unit (exact_fma.c): the same operations on each. */
+#define SMALL_P_REST(z) \
+    ((z) * (z) * (-0x1.a01a01a01a01ap-13 + (z) * (0x1.71de3a556c734p-19 - (z) * 0x1.ae64567f544e4p-26)))
+#define SMALL_Q_REST(z) ((z) * (z) * (0x1.a01a01a01a01ap-16 - (z) * 0x1.27e4fb7789f5cp-22))
+#define TABLE_SIN_REST(r_hi, r_lo, z) \
+    ((r_lo) - (r_hi) * (z) * (0x1.5555555555555p-3 - (z) * (0x1.1111111111111p-7 - (z) * 0x1.a01a01a01a01ap-13)))
+#define TABLE_VERSINE_REST(r_hi, r_lo, R2_lo, z) \
+    ((0.5 * (R2_lo) + (r_hi) * (r_lo)) - (z) * (z) * (0x1.5555555555555p-5 - (z) * 0x1.6c16c16c16c17p-10))
+
 /* x + y for |y.hi| <= |x.hi| (or x == 0) and no cancellation (|x + y| >= |x|/2): Fast2Sum on
  * the heads, the tails added (the "sloppy" sum of Hida, Li and Bailey), relative error a few
  * 2^-106 under that condition. */
@@ -223,8 +235,8 @@ static void sin_versine_small(DoubleDouble r, DoubleDouble *w, DoubleDouble *v)
     DoubleDouble r2 = dd_two_prod(r.hi, r.hi);
     r2.lo += 2.0 * r.hi * r.lo;
     const double z = r2.hi;
-    const double p_rest = z * z * (-0x1.a01a01a01a01ap-13 + z * (0x1.71de3a556c734p-19 - z * 0x1.ae64567f544e4p-26));
-    const double q_rest = z * z * (0x1.a01a01a01a01ap-16 - z * 0x1.27e4fb7789f5cp-22);
+    const double p_rest = SMALL_P_REST(z);
+    const double q_rest = SMALL_Q_REST(z);
     /* P = -1/6 + r2/120 + p_rest, Q = 1/24 - r2/720 + q_rest: the products below 2^-18 of the
      * constants, so one Fast2Sum of the heads and the rest added to the tail */
     const DoubleDouble p2 = dd_mul(r2, (DoubleDouble){INV_5F_HI, INV_5F_LO});
@@ -295,8 +307,8 @@ static int table_leading(const DdTablePoint *t, int odd, double *lead)
     const DoubleDouble R2 = dd_two_prod(r.hi, r.hi);
     /* w = sin r = r_hi + w_rest, v = 1 - cos r = R2_hi/2 + v_rest (A&S 4.3.65-66) */
     const double z = R2.hi;
-    const double w_rest = r.lo - r.hi * z * (0x1.5555555555555p-3 - z * (0x1.1111111111111p-7 - z * 0x1.a01a01a01a01ap-13));
-    const double v_rest = (0.5 * R2.lo + r.hi * r.lo) - z * z * (0x1.5555555555555p-5 - z * 0x1.6c16c16c16c17p-10);
+    const double w_rest = TABLE_SIN_REST(r.hi, r.lo, z);
+    const double v_rest = TABLE_VERSINE_REST(r.hi, r.lo, R2.lo, z);
     const DoubleDouble first = odd ? dd_two_prod(C.hi, r.hi) : dd_two_prod(-S.hi, r.hi);
     const double base = odd ? S.hi : C.hi, other = odd ? C.hi : -S.hi;
     const double base_lo = odd ? S.lo : C.lo, other_lo = odd ? C.lo : -S.lo;

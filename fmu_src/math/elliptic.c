@@ -111,9 +111,7 @@ double elliptic_RF(double x, double y, double z)
     double Z = -(X + Y);
     double E2 = X * Y - Z * Z;
     double E3 = X * Y * Z;
-    double series = 1.0 - E2 / 10.0 + E3 / 14.0 + E2 * E2 / 24.0 - 3.0 * E2 * E3 / 44.0
-                    - 5.0 * E2 * E2 * E2 / 208.0 + 3.0 * E3 * E3 / 104.0
-                    + E2 * E2 * E3 / 16.0;
+    double series = ELLIPTIC_RF_SERIES(E2, E3);
     return series / sqrt(mean);
 }
 

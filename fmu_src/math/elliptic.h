@@ -50,6 +50,12 @@
  * for x, y, z >= 0, at most one of them 0 (DLMF 19.16.1), by the duplication theorem
  * (DLMF 19.26.18) until the spread is below 0.004, then the series DLMF 19.36.1 to degree 7.
  * Returns +INFINITY if two arguments are 0, NaN for a negative or NaN argument. */
+/* elliptic_RF's closing series (DLMF 19.36.1) in E2 = XY - Z^2 and E3 = XYZ, for doubles and
+ * for once_avx.h's vectors of four (the same operations) */
+#define ELLIPTIC_RF_SERIES(E2, E3)                                                              \
+    (1.0 - (E2) / 10.0 + (E3) / 14.0 + (E2) * (E2) / 24.0 - 3.0 * (E2) * (E3) / 44.0           \
+     - 5.0 * (E2) * (E2) * (E2) / 208.0 + 3.0 * (E3) * (E3) / 104.0 + (E2) * (E2) * (E3) / 16.0)
+
 double elliptic_RF(double x, double y, double z);
 
 /* ---------------------------------------------------------------------------------------
@@ -281,16 +287,20 @@ int elliptic_quarter_of(double n);
 /* g(s) = (atan(sqrt s)/sqrt s - 1)/s on [0, tan^2(pi/8)]: Chebyshev fit of degree 11,
  * generated with mpmath.chebyfit at 50 digits (max fit error 1.2e-18); coefficients
  * g_0..g_11, evaluated by Estrin's scheme. atan(t) = t + t s g(s) with s = t^2. */
+/* The body for s of type T: double here, four doubles in once_avx.h (the same operations). */
+#define ELLIPTIC_ATAN_SERIES_BODY(T, s)                                              \
+    const T s2 = (s) * (s), s4 = s2 * s2, s8 = s4 * s4;                              \
+    const T g01 = -0x1.5555555555555p-2 + (s) * 0x1.9999999999953p-3;               \
+    const T g23 = -0x1.249249248d7eep-3 + (s) * 0x1.c71c71c304b68p-4;               \
+    const T g45 = -0x1.745d165df3f95p-4 + (s) * 0x1.3b1392d9e785cp-4;               \
+    const T g67 = -0x1.110e880a7a521p-4 + (s) * 0x1.e19a13b9fc6dfp-5;               \
+    const T g89 = -0x1.ac7a938b69c93p-5 + (s) * 0x1.74ddd408bb4c1p-5;               \
+    const T g1011 = -0x1.1b33b923aa954p-5 + (s) * 0x1.0ad36a455cafbp-6;             \
+    return ((g01 + s2 * g23) + s4 * (g45 + s2 * g67)) + s8 * (g89 + s2 * g1011)
+
 static inline double elliptic_atan_series(double s)
 {
-    const double s2 = s * s, s4 = s2 * s2, s8 = s4 * s4;
-    const double g01 = -0x1.5555555555555p-2 + s * 0x1.9999999999953p-3;
-    const double g23 = -0x1.249249248d7eep-3 + s * 0x1.c71c71c304b68p-4;
-    const double g45 = -0x1.745d165df3f95p-4 + s * 0x1.3b1392d9e785cp-4;
-    const double g67 = -0x1.110e880a7a521p-4 + s * 0x1.e19a13b9fc6dfp-5;
-    const double g89 = -0x1.ac7a938b69c93p-5 + s * 0x1.74ddd408bb4c1p-5;
-    const double g1011 = -0x1.1b33b923aa954p-5 + s * 0x1.0ad36a455cafbp-6;
-    return ((g01 + s2 * g23) + s4 * (g45 + s2 * g67)) + s8 * (g89 + s2 * g1011);
+    ELLIPTIC_ATAN_SERIES_BODY(double, s);
 }
 
 /* atan(y / x) for x > 0 and finite y (that is atan2(y, x) on the right half-plane), within

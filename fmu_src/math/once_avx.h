@@ -196,8 +196,8 @@ static inline void v4_sin_versine_small(V4Dd r, V4Dd *w, V4Dd *v)
     V4Dd r2 = v4_two_prod(r.hi, r.hi);
     r2.lo += 2.0 * r.hi * r.lo;
     const V4 z = r2.hi;
-    const V4 p_rest = z * z * (-0x1.a01a01a01a01ap-13 + z * (0x1.71de3a556c734p-19 - z * 0x1.ae64567f544e4p-26));
-    const V4 q_rest = z * z * (0x1.a01a01a01a01ap-16 - z * 0x1.27e4fb7789f5cp-22);
+    const V4 p_rest = SMALL_P_REST(z);
+    const V4 q_rest = SMALL_Q_REST(z);
     const V4Dd p2 = v4_dd_mul(r2, (V4Dd){v4_all(INV_5F_HI), v4_all(INV_5F_LO)});
     const V4Dd q2 = v4_dd_mul(r2, (V4Dd){v4_all(-INV_6F_HI), v4_all(-INV_6F_LO)});
     V4Dd P = v4_fast_two_sum(v4_all(-INV_3F_HI), p2.hi), Q = v4_fast_two_sum(v4_all(INV_4F_HI), q2.hi);
@@ -289,8 +289,8 @@ ONCE_STAGE void cos_sin_begin_v4(V4 xh, CosSinV4 *out)
     /* table_leading */
     const V4Dd R2 = v4_two_prod(r.hi, r.hi);
     const V4 zr = R2.hi;
-    const V4 w_rest = r.lo - r.hi * zr * (0x1.5555555555555p-3 - zr * (0x1.1111111111111p-7 - zr * 0x1.a01a01a01a01ap-13));
-    const V4 v_rest = (0.5 * R2.lo + r.hi * r.lo) - zr * zr * (0x1.5555555555555p-5 - zr * 0x1.6c16c16c16c17p-10);
+    const V4 w_rest = TABLE_SIN_REST(r.hi, r.lo, zr);
+    const V4 v_rest = TABLE_VERSINE_REST(r.hi, r.lo, R2.lo, zr);
     const V4Dd first = v4_two_prod(v4_pick(odd, C.hi, -S.hi), r.hi);
     const V4 base = v4_pick(odd, S.hi, C.hi), other_hi = v4_pick(odd, C.hi, -S.hi);
     const V4 base_lo = v4_pick(odd, S.lo, C.lo), other_lo = v4_pick(odd, C.lo, -S.lo);
@@ -495,8 +495,7 @@ static inline V4 rf_v4(V4 x, V4 y, V4 z)
     const V4 Z = -(X + Y);
     const V4 E2 = X * Y - Z * Z;
     const V4 E3 = X * Y * Z;
-    const V4 series = 1.0 - E2 / 10.0 + E3 / 14.0 + E2 * E2 / 24.0 - 3.0 * E2 * E3 / 44.0
-                      - 5.0 * E2 * E2 * E2 / 208.0 + 3.0 * E3 * E3 / 104.0 + E2 * E2 * E3 / 16.0;
+    const V4 series = ELLIPTIC_RF_SERIES(E2, E3);
     return series / v4_sqrt(mean);
 }
 
@@ -505,14 +504,7 @@ static inline V4 rf_v4(V4 x, V4 y, V4 z)
 /* elliptic_atan_series */
 static inline V4 v4_atan_series(V4 s)
 {
-    const V4 s2 = s * s, s4 = s2 * s2, s8 = s4 * s4;
-    const V4 g01 = -0x1.5555555555555p-2 + s * 0x1.9999999999953p-3;
-    const V4 g23 = -0x1.249249248d7eep-3 + s * 0x1.c71c71c304b68p-4;
-    const V4 g45 = -0x1.745d165df3f95p-4 + s * 0x1.3b1392d9e785cp-4;
-    const V4 g67 = -0x1.110e880a7a521p-4 + s * 0x1.e19a13b9fc6dfp-5;
-    const V4 g89 = -0x1.ac7a938b69c93p-5 + s * 0x1.74ddd408bb4c1p-5;
-    const V4 g1011 = -0x1.1b33b923aa954p-5 + s * 0x1.0ad36a455cafbp-6;
-    return ((g01 + s2 * g23) + s4 * (g45 + s2 * g67)) + s8 * (g89 + s2 * g1011);
+    ELLIPTIC_ATAN_SERIES_BODY(V4, s);
 }
 
 /* copysign(x, y) */
