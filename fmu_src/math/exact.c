@@ -1246,41 +1246,58 @@ static inline int once_rate_ok(OnceRate *r, double g, double L)
     return r->ok;
 }
 
-/* An element for the vectors of once_moving_avx: a moving start, |theta0| <= 3.2, g and L
- * accepted (w0 in *r), t0 finite */
-static inline int once_moving(OnceRate *r, double theta0, double omega0, double g, double L, double t0)
+/* pendulum_exact_once_gl_many sorts its elements this many at a time */
+#define ONCE_CHUNK 64
+
+/* A chunk's elements by kind, as indices into the caller's arrays: the releases from rest and
+ * the moving starts with |theta0| <= 3.2 and g, L accepted (their w0 beside them), and the
+ * rest, which go one by one */
+typedef struct {
+    size_t rest[ONCE_CHUNK], moving[ONCE_CHUNK], other[ONCE_CHUNK];
+    DoubleDouble w0_rest[ONCE_CHUNK], w0_moving[ONCE_CHUNK];
+    int n_rest, n_moving, n_other;
+} OnceSorted;
+
+static void once_sort(size_t start, size_t end, const double *theta0, const double *omega0, const double *g,
+                      const double *L, int t0_ok, OnceRate *rate, OnceSorted *by)
 {
-    return omega0 != 0.0 && fabs(theta0) <= 3.2 && isfinite(t0) && once_rate_ok(r, g, L);
+    by->n_rest = by->n_moving = by->n_other = 0;
+    for (size_t j = start; j < end; ++j) {
+        if (t0_ok && fabs(theta0[j]) <= 3.2 && once_rate_ok(rate, g[j], L[j])) {
+            if (omega0[j] == 0.0) {
+                by->w0_rest[by->n_rest] = rate->w0;
+                by->rest[by->n_rest++] = j;
+            } else {
+                by->w0_moving[by->n_moving] = rate->w0;
+                by->moving[by->n_moving++] = j;
+            }
+        } else {
+            by->other[by->n_other++] = j;
+        }
+    }
 }
 
-/* The moving starts of the n elements (once_moving), four at a time in vectors
- * (once_moving_avx), those it leaves one by one (once_scalar); returns the count of refused
- * elements among them. The caller's loop over the releases from rest leaves them here: in it,
- * the moving starts' code cost those releases a tenth of their time (bench_exact's once kind). */
-__attribute__((noinline)) static size_t once_moving_all(size_t n, const double *theta0, const double *omega0,
-                                                        const double *g, const double *L, double t0,
-                                                        const double *t, double *theta, double *omega)
+/* The elements at[0..count-1] four at a time in vectors: once_avx for releases from rest, else
+ * (moving) once_moving_avx; an element a block leaves goes one by one (once_scalar). Returns
+ * the count of refused elements. */
+static size_t once_blocks(int moving, int count, const size_t *at, const DoubleDouble *w0, const double *theta0,
+                          const double *omega0, const double *g, const double *L, double t0, const double *t,
+                          double *theta, double *omega, int *expect_rotation)
 {
-    OnceRate rate = {NAN, NAN, {NAN, NAN}, 0};
-    size_t refused = 0, j = 0;
-    int expect_rotation = 0;   /* once_moving_avx's guess for the next block */
-    while (j < n) {
+    size_t refused = 0;
+    for (int i = 0; i < count; i += ONCE_BLOCK) {
+        const int lanes = count - i < ONCE_BLOCK ? count - i : ONCE_BLOCK;
         double th[ONCE_BLOCK], om[ONCE_BLOCK], times[ONCE_BLOCK], th_out[ONCE_BLOCK], om_out[ONCE_BLOCK];
-        DoubleDouble w0[ONCE_BLOCK];
-        size_t at[ONCE_BLOCK];
-        int taken = 0;
-        for (; j < n && taken < ONCE_BLOCK; ++j) {
-            if (once_moving(&rate, theta0[j], omega0[j], g[j], L[j], t0)) {
-                th[taken] = theta0[j];
-                om[taken] = omega0[j];
-                times[taken] = t[j];
-                w0[taken] = rate.w0;
-                at[taken++] = j;
-            }
+        for (int l = 0; l < lanes; ++l) {
+            th[l] = theta0[at[i + l]];
+            om[l] = omega0[at[i + l]];
+            times[l] = t[at[i + l]];
         }
-        const int done = taken > 0 ? once_moving_avx(taken, th, om, w0, t0, times, th_out, om_out, &expect_rotation) : 0;
-        for (int l = 0; l < taken; ++l) {
-            const size_t k = at[l];
+        const int done = !moving
+                             ? once_avx(lanes, th, w0 + i, t0, times, th_out, om_out)
+                             : once_moving_avx(lanes, th, om, w0 + i, t0, times, th_out, om_out, expect_rotation);
+        for (int l = 0; l < lanes; ++l) {
+            const size_t k = at[i + l];
             if (done & (1 << l)) {
                 theta[k] = th_out[l];
                 omega[k] = om_out[l];
@@ -1290,6 +1307,17 @@ __attribute__((noinline)) static size_t once_moving_all(size_t n, const double *
         }
     }
     return refused;
+}
+
+/* The moving starts' blocks, out of line: in the releases' loop their code cost those
+ * releases a tenth of their time (bench_exact's once kind) */
+__attribute__((noinline)) static size_t once_moving_blocks(const OnceSorted *by, const double *theta0,
+                                                           const double *omega0, const double *g,
+                                                           const double *L, double t0, const double *t,
+                                                           double *theta, double *omega, int *expect_rotation)
+{
+    return once_blocks(1, by->n_moving, by->moving, by->w0_moving, theta0, omega0, g, L, t0, t, theta, omega,
+                       expect_rotation);
 }
 #endif
 
@@ -1303,52 +1331,27 @@ size_t pendulum_exact_once_gl_many(size_t n, const double *theta0, const double 
 #endif
     size_t refused = 0;
 #ifdef EXACT_ONCE_AVX
+    /* sorted a chunk at a time: the releases from rest and the moving starts to vectors (their
+     * kinds apart, each block of one kind), the rest one by one */
     OnceRate rate = {NAN, NAN, {NAN, NAN}, 0};
     const int t0_ok = isfinite(t0);
-    int moving = 0;   /* any moving start for once_moving_all */
-#endif
-    for (size_t i = 0; i < n; i += ONCE_BLOCK) {
-        const int lanes = n - i < ONCE_BLOCK ? (int)(n - i) : ONCE_BLOCK;
-        int done = 0;
-#ifdef EXACT_ONCE_AVX
-        /* the releases from rest of these elements in vectors; the moving starts are left to
-         * once_moving_all (as done) */
-        double th[ONCE_BLOCK], times[ONCE_BLOCK], th_out[ONCE_BLOCK], om_out[ONCE_BLOCK];
-        DoubleDouble w0[ONCE_BLOCK];
-        int taken = 0, at[ONCE_BLOCK];
-        for (int l = 0; l < lanes; ++l) {
-            const size_t j = i + (size_t)l;
-            if (once_rate_ok(&rate, g[j], L[j]) && t0_ok && fabs(theta0[j]) <= 3.2) {
-                if (omega0[j] == 0.0) {
-                    th[taken] = theta0[j];
-                    times[taken] = t[j];
-                    w0[taken] = rate.w0;
-                    at[taken++] = l;
-                } else {
-                    done |= 1 << l;
-                    moving = 1;
-                }
-            }
+    int expect_rotation = 0;   /* once_moving_avx's guess for the next block */
+    for (size_t start = 0; start < n; start += ONCE_CHUNK) {
+        const size_t end = n - start < ONCE_CHUNK ? n : start + ONCE_CHUNK;
+        OnceSorted by;
+        once_sort(start, end, theta0, omega0, g, L, t0_ok, &rate, &by);
+        refused += once_blocks(0, by.n_rest, by.rest, by.w0_rest, theta0, omega0, g, L, t0, t, theta, omega, NULL);
+        if (by.n_moving > 0) {
+            refused += once_moving_blocks(&by, theta0, omega0, g, L, t0, t, theta, omega, &expect_rotation);
         }
-        const int taken_done = taken > 0 ? once_avx(taken, th, w0, t0, times, th_out, om_out) : 0;
-        for (int j = 0; j < taken; ++j) {
-            if (taken_done & (1 << j)) {
-                theta[i + (size_t)at[j]] = th_out[j];
-                omega[i + (size_t)at[j]] = om_out[j];
-                done |= 1 << at[j];
-            }
-        }
-#endif
-        for (int l = 0; l < lanes; ++l) {
-            const size_t j = i + (size_t)l;
-            if (!(done & (1 << l))) {
-                refused += once_scalar(theta0[j], omega0[j], g[j], L[j], t0, t[j], &theta[j], &omega[j]);
-            }
+        for (int i = 0; i < by.n_other; ++i) {
+            const size_t j = by.other[i];
+            refused += once_scalar(theta0[j], omega0[j], g[j], L[j], t0, t[j], &theta[j], &omega[j]);
         }
     }
-#ifdef EXACT_ONCE_AVX
-    if (moving) {
-        refused += once_moving_all(n, theta0, omega0, g, L, t0, t, theta, omega);
+#else
+    for (size_t j = 0; j < n; ++j) {
+        refused += once_scalar(theta0[j], omega0[j], g[j], L[j], t0, t[j], &theta[j], &omega[j]);
     }
 #endif
     return refused;

@@ -166,6 +166,15 @@ typedef struct {
     const double *t;
 } Once;
 
+/* The arrays of once_gl_many's checks: mostly 1 to 40 elements, one in five up to MAX_ARRAY,
+ * past the 64 elements it sorts at a time */
+#define MAX_ARRAY 150
+
+static size_t draw_count(void)
+{
+    return 1 + (size_t)(uniform() * (uniform() < 0.8 ? 40.0 : (double)MAX_ARRAY));
+}
+
 typedef size_t OnceFunction(size_t n, const double *theta0, const double *omega0, const double *g, const double *L,
                             double t0, const double *t, double *theta, double *omega);
 
@@ -174,7 +183,7 @@ typedef size_t OnceFunction(size_t n, const double *theta0, const double *omega0
  * a wrong number of refused elements in *wrong_counts and the refused inputs in *refusals */
 static int compare_once(OnceFunction *once, const Once *a, int *wrong_counts, int *refusals)
 {
-    double theta[40], omega[40];
+    double theta[MAX_ARRAY], omega[MAX_ARRAY];
     const size_t refused = once(a->n, a->theta0, a->omega0, a->g, a->L, a->t0, a->t, theta, omega);
     size_t expected_refused = 0;
     int differences = 0;
@@ -239,14 +248,14 @@ static void check_kind(const char *kind, int differences, int wrong_counts, int 
 }
 
 /* pendulum_exact_once_gl_many against pendulum_exact_init_gl, _eval and _resolvable, element
- * by element: arrays of 1 to 40 releases from rest (most: every amplitude, near the top, past
+ * by element: arrays (draw_count) of releases from rest (most: every amplitude, near the top, past
  * pi, tiny), moving starts, refused inputs, runs of one g and L, special times. */
 static void check_once(void)
 {
     int differences = 0, points = 0, refusals = 0, wrong_counts = 0;
     for (int round = 0; round < 4000; ++round) {
-        const size_t n = 1 + (size_t)(uniform() * 40);
-        double theta0[40], omega0[40], g[40], L[40], t[40];
+        const size_t n = draw_count();
+        double theta0[MAX_ARRAY], omega0[MAX_ARRAY], g[MAX_ARRAY], L[MAX_ARRAY], t[MAX_ARRAY];
         const double t0 = uniform() < 0.6 ? 0.0 : 3.0 * (2.0 * uniform() - 1.0);
         for (size_t i = 0; i < n; ++i) {
             g[i] = 0.5 + 20.0 * uniform();
@@ -380,8 +389,8 @@ static void check_once_moving(void)
     tally_moving = 0;
 #endif
     for (int round = 0; round < 3000; ++round) {
-        const size_t n = 1 + (size_t)(uniform() * 40);
-        double theta0[40], omega0[40], g[40], L[40], t[40];
+        const size_t n = draw_count();
+        double theta0[MAX_ARRAY], omega0[MAX_ARRAY], g[MAX_ARRAY], L[MAX_ARRAY], t[MAX_ARRAY];
         const double t0 = uniform() < 0.5 ? 0.0 : 5.0 * (2.0 * uniform() - 1.0);
         for (size_t i = 0; i < n; ++i) {
             g[i] = pow(10.0, 6.0 * uniform() - 3.0);
@@ -465,8 +474,8 @@ static void check_once_rotation(void)
     tally_rotation = 0;
 #endif
     for (int round = 0; round < 3000; ++round) {
-        const size_t n = 1 + (size_t)(uniform() * 40);
-        double theta0[40], omega0[40], g[40], L[40], t[40];
+        const size_t n = draw_count();
+        double theta0[MAX_ARRAY], omega0[MAX_ARRAY], g[MAX_ARRAY], L[MAX_ARRAY], t[MAX_ARRAY];
         const double t0 = uniform() < 0.5 ? 0.0 : 1e3 * (2.0 * uniform() - 1.0);
         for (size_t i = 0; i < n; ++i) {
             g[i] = pow(10.0, 12.0 * uniform() - 6.0);
