@@ -59,6 +59,18 @@ size_t pendulum_exact_once_gl_many_fma(size_t n, const double *theta0, const dou
 #define EXACT_FMA_HERE() __builtin_cpu_supports("fma")
 #endif
 
+/* The numerical core (PENDULUM_EXACT_AVX512, pendulum_core) hands pendulum_exact_once_gl_many
+ * on to the AVX-512 build (avx512_copy.c) where the processor has AVX-512F: eight new states a
+ * vector, the same bits. */
+#if defined(EXACT_HANDS_ON_TO_FMA) && defined(PENDULUM_EXACT_AVX512)
+#define EXACT_HANDS_ON_TO_AVX512 1
+size_t pendulum_exact_once_gl_many_avx512(size_t n, const double *theta0, const double *omega0, const double *g,
+                                          const double *L, double t0, const double *t, double *theta,
+                                          double *omega);
+/* libgcc sets the flag only where the operating system saves the AVX-512 state */
+#define EXACT_AVX512_HERE() (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("fma"))
+#endif
+
 #define PI_HI   DD_PI_HI
 #define PI_LO   DD_PI_LO
 #define PI_LOLO DD_PI_LOLO
@@ -1200,17 +1212,11 @@ void pendulum_exact_eval_many(const PendulumExact *ex, size_t n, const double *t
 }
 
 /* The fma build (GCC on x86-64, the fma and AVX enabled) sets up and evaluates four releases
- * from rest, or four moving librations or rotations, at once in AVX vectors (once_avx.h): the
- * same bits as once_scalar below. */
+ * from rest, or four moving librations or rotations, at once in AVX vectors (once_avx.h), and
+ * the AVX-512 build eight: the same bits as once_scalar below. */
 #if defined(PENDULUM_DD_FMA) && defined(__GNUC__) && defined(__x86_64__)
 #define EXACT_ONCE_AVX 1
 #include "once_avx.h"
-#endif
-
-/* pendulum_exact_once_gl_many takes its elements this many at a time: one vector's lanes */
-#define ONCE_BLOCK 4
-#if defined(EXACT_ONCE_AVX) && AVX_LANES != ONCE_BLOCK
-#error "a block of pendulum_exact_once_gl_many is one vector of once_avx.h"
 #endif
 
 /* One element of pendulum_exact_once_gl_many by pendulum_exact_init_gl and _eval; returns 1
@@ -1277,7 +1283,7 @@ static void once_sort(size_t start, size_t end, const double *theta0, const doub
     }
 }
 
-/* The elements at[0..count-1] four at a time in vectors: once_avx for releases from rest, else
+/* The elements at[0..count-1] a vector at a time (ONCE_LANES): once_avx for releases from rest, else
  * (moving) once_moving_avx; an element a block leaves goes one by one (once_scalar). Returns
  * the count of refused elements. */
 static size_t once_blocks(int moving, int count, const size_t *at, const DoubleDouble *w0, const double *theta0,
@@ -1285,9 +1291,9 @@ static size_t once_blocks(int moving, int count, const size_t *at, const DoubleD
                           double *theta, double *omega, int *expect_rotation)
 {
     size_t refused = 0;
-    for (int i = 0; i < count; i += ONCE_BLOCK) {
-        const int lanes = count - i < ONCE_BLOCK ? count - i : ONCE_BLOCK;
-        double th[ONCE_BLOCK], om[ONCE_BLOCK], times[ONCE_BLOCK], th_out[ONCE_BLOCK], om_out[ONCE_BLOCK];
+    for (int i = 0; i < count; i += ONCE_LANES) {
+        const int lanes = count - i < ONCE_LANES ? count - i : ONCE_LANES;
+        double th[ONCE_LANES], om[ONCE_LANES], times[ONCE_LANES], th_out[ONCE_LANES], om_out[ONCE_LANES];
         for (int l = 0; l < lanes; ++l) {
             th[l] = theta0[at[i + l]];
             om[l] = omega0[at[i + l]];
@@ -1324,6 +1330,11 @@ __attribute__((noinline)) static size_t once_moving_blocks(const OnceSorted *by,
 size_t pendulum_exact_once_gl_many(size_t n, const double *theta0, const double *omega0, const double *g,
                                    const double *L, double t0, const double *t, double *theta, double *omega)
 {
+#ifdef EXACT_HANDS_ON_TO_AVX512
+    if (EXACT_AVX512_HERE()) {
+        return pendulum_exact_once_gl_many_avx512(n, theta0, omega0, g, L, t0, t, theta, omega);
+    }
+#endif
 #ifdef EXACT_HANDS_ON_TO_FMA
     if (EXACT_FMA_HERE()) {
         return pendulum_exact_once_gl_many_fma(n, theta0, omega0, g, L, t0, t, theta, omega);

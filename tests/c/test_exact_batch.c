@@ -9,8 +9,9 @@
  * amplitude and speed, next to the separatrix window's edge, k and m1 tiny, any g and L).
  * Arrays of rotations: barely over the top (either side of the fine window's edge), fast
  * spins, both directions, theta0 of both signs, near and past pi, any g and L, far times.
- * A copy of the fma build counts the lanes its vectors did: releases from rest, moving
- * librations and rotations must run there, not only agree. Prints one summary line; exit status 0 iff
+ * A copy of the fma build (four lanes; test_exact_batch_wide: of the AVX-512 build, eight) counts
+ * the lanes its vectors did: releases from rest, moving librations and rotations must run
+ * there, not only agree. Prints one summary line; exit status 0 iff
  * every check passed. */
 #include <math.h>
 #include <stdint.h>
@@ -19,37 +20,35 @@
 
 #include "exact_fma.h"
 
-/* The fma build once more (exact_fma.c, as the core compiles it), its entry points renamed
+#ifdef EXACT_TEST_WIDE
+#define TEST_NAME "test_exact_batch_wide"
+#else
+#define TEST_NAME "test_exact_batch"
+#endif
+
+/* The fma build once more (exact_fma.c, as the core compiles it; test_exact_batch_wide: the
+ * AVX-512 build, avx512_copy.c), its entry points renamed
  * *_tallied and the lanes its vector blocks did counted (ONCE_AVX_TALLY of once_avx.h): the
  * moving librations must not only agree with the scalar set-up but run in the vectors. */
 #ifdef PENDULUM_EXACT_FMA_BUILD
 #define EXACT_TALLIED 1
+/* the tallied copy runs on this processor: the fma build's where it has an fma, the AVX-512
+ * build's (test_exact_batch_wide) where it has AVX-512F too */
+#ifdef EXACT_TEST_WIDE
+#define TALLIED_COPY_RUNS() (__builtin_cpu_supports("fma") && __builtin_cpu_supports("avx512f"))
+#else
+#define TALLIED_COPY_RUNS() __builtin_cpu_supports("fma")
+#endif
 static long tally_rest, tally_moving, tally_rotation;
 #define TALLY(kind) tally_##kind
 #define ONCE_AVX_TALLY(kind, done) (tally_##kind += __builtin_popcount((unsigned)(done)))
-#define dd_sincos_fma dd_sincos_tallied
-#define dd_cos_sin_fma dd_cos_sin_tallied
-#define dd_cos_sin_begin_fma dd_cos_sin_begin_tallied
-#define dd_cos_sin_end_fma dd_cos_sin_end_tallied
-#define dd_sin_fma dd_sin_tallied
-#define elliptic_RF_fma elliptic_RF_tallied
-#define elliptic_param_init_fma elliptic_param_init_tallied
-#define elliptic_param_init_root_fma elliptic_param_init_root_tallied
-#define elliptic_param_begin_fma elliptic_param_begin_tallied
-#define elliptic_param_finish_fma elliptic_param_finish_tallied
-#define elliptic_quarter_of_fma elliptic_quarter_of_tallied
-#define pendulum_exact_init_fma pendulum_exact_init_tallied
-#define pendulum_exact_init_gl_fma pendulum_exact_init_gl_tallied
-#define pendulum_exact_same_fma pendulum_exact_same_tallied
-#define pendulum_exact_resolvable_fma pendulum_exact_resolvable_tallied
-#define pendulum_exact_eval_fma pendulum_exact_eval_tallied
-#define pendulum_exact_sin_cos_fma pendulum_exact_sin_cos_tallied
-#define pendulum_exact_eval_many_fma pendulum_exact_eval_many_tallied
-#define pendulum_exact_once_gl_many_fma pendulum_exact_once_gl_many_tallied
-#define pendulum_exact_qualitative_miss_fma pendulum_exact_qualitative_miss_tallied
-#define pendulum_exact_period_fma pendulum_exact_period_tallied
+#define EXACT_COPY(name) name##_tallied
 #pragma GCC push_options
+#ifdef EXACT_TEST_WIDE
+#include "avx512_copy.c"
+#else
 #include "exact_fma.c"
+#endif
 #pragma GCC pop_options
 /* the test's own calls go to the core */
 #undef pendulum_exact_init
@@ -215,7 +214,7 @@ static int compare_both(const Once *a, int *wrong_counts, int *refusals)
 {
     int differences = compare_once(pendulum_exact_once_gl_many, a, wrong_counts, refusals);
 #ifdef EXACT_TALLIED
-    if (__builtin_cpu_supports("fma")) {
+    if (TALLIED_COPY_RUNS()) {
         differences += compare_once(pendulum_exact_once_gl_many_tallied, a, wrong_counts, refusals);
     }
 #endif
@@ -233,7 +232,7 @@ static void check_kind(const char *kind, int differences, int wrong_counts, int 
     check(wrong_counts == 0, "once_gl_many, %s: %d arrays with a wrong count of refused elements", kind, wrong_counts);
     check(must > points / 2, "once_gl_many, %s: %ld of %d states for the vectors", kind, must, points);
 #ifdef EXACT_TALLIED
-    if (__builtin_cpu_supports("fma")) {
+    if (TALLIED_COPY_RUNS()) {
         check(tally >= must && tally <= of_kind,
               "once_gl_many, %s: the vectors did %ld, at least %ld and at most %ld expected", kind, tally, must,
               of_kind);
@@ -244,7 +243,8 @@ static void check_kind(const char *kind, int differences, int wrong_counts, int 
 #endif
     (void)tally;
     (void)of_kind;
-    printf("once_gl_many, %s: no fma build here, the vector path not counted\n", kind);
+    printf("once_gl_many, %s: no fma build here, or this processor cannot run the tallied copy: its vectors "
+           "not counted\n", kind);
 }
 
 /* pendulum_exact_once_gl_many against pendulum_exact_init_gl, _eval and _resolvable, element
@@ -325,7 +325,7 @@ static void check_once(void)
     check(differences == 0, "once_gl_many: %d of %d outputs differ from the set-up and evaluation", differences, points);
 #ifdef EXACT_TALLIED
     /* about 60 % of the random states are releases from rest with |theta0| <= 3.2 */
-    check(!__builtin_cpu_supports("fma") || tally_rest > points / 2,
+    check(!TALLIED_COPY_RUNS() || tally_rest > points / 2,
           "once_gl_many: the vectors did %ld releases from rest of %d states", tally_rest, points);
     printf("once_gl_many: %ld of %d states released from rest in vectors\n", tally_rest, points);
 #endif
@@ -549,5 +549,5 @@ int main(void)
     check_state(0.0, 2.0, 1.0, 0.0, "separatrix");
     check_state(PI, 0.0, 1.0, 0.0, "at rest on the top");
     check_state(0.0, 0.0, 1.0, 0.0, "at rest at the bottom");
-    return check_summary("test_exact_batch");
+    return check_summary(TEST_NAME);
 }
