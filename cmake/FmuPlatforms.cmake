@@ -76,8 +76,10 @@ set(FMU_OTHER_BINARIES
 # pendulum_exact (the library behind pendulum_fmu.exact) for the same three platforms, so a
 # py3-none-any wheel carries it for each: build/exact_lib/<platform>/<the file name the
 # package loads>, where setup.py picks them up.
+# With the AVX-512 copy of the exact solution, as pendulum_core (CMakeLists.txt).
 set(exact_cross_common NAME pendulum_exact
-    SOURCES ${LIBS_DIR}/exact_lib/pendulum_exact_lib.c ${CORE_SOURCES}
+    SOURCES ${LIBS_DIR}/exact_lib/pendulum_exact_lib.c ${CORE_SOURCES} ${AVX512_COPY_SOURCE}
+    FLAGS -DPENDULUM_EXACT_AVX512=1
     INCLUDES ${FMU_INCLUDE_DIRS} ${GENERATED_DIR}
     DEPENDS ${FMU_HEADERS} ${GENERATED_DIR}/pendulum_vrs.h ${LIBS_DIR}/exact_lib/pendulum_exact_lib.h)
 foreach(platform IN ITEMS LINUX_X86_64 WINDOWS_X86_64 MACOS_X86_64 MACOS_ARM64)

@@ -10,9 +10,24 @@
 #include "exact_fma.h"
 
 #ifdef PENDULUM_EXACT_FMA_BUILD
+/* the system's headers first, outside the region whose functions take the fma and AVX-512F */
+#include <float.h>
+#include <immintrin.h>
+#include <math.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <string.h>
+#ifdef __clang__
+#pragma clang attribute push(__attribute__((target("fma,avx512f"))), apply_to = function)
+#else
 #pragma GCC target("fma,avx512f")
+#endif
 /* only the explicit fma calls are fused (exact_fma.c) */
+#ifdef __clang__
+#pragma STDC FP_CONTRACT OFF
+#else
 #pragma GCC optimize("fp-contract=off")
+#endif
 
 #define PENDULUM_DD_FMA 1
 #define PENDULUM_EXACT_FMA_PASS 1
@@ -24,6 +39,9 @@
 #define EXACT_COPY(name) name##_avx512
 #endif
 #include "core_copy.h"
+#ifdef __clang__
+#pragma clang attribute pop
+#endif
 
 #else
 typedef int avx512_copy_not_built;   /* ISO C: a translation unit declares something */

@@ -46,6 +46,7 @@
 /* The baseline build hands its entry points to the fma build (exact_fma.c) on a processor
  * with an fma: the same bits, fewer operations per two-product (exact_fma.h). */
 #if defined(PENDULUM_EXACT_FMA_BUILD) && !defined(PENDULUM_EXACT_FMA_PASS)
+#include "cpu_level.h"
 #define EXACT_HANDS_ON_TO_FMA 1
 int pendulum_exact_init_fma(PendulumExact *ex, double theta0, double omega0, double w0, double t0);
 int pendulum_exact_init_gl_fma(PendulumExact *ex, double theta0, double omega0, double g, double L, double t0);
@@ -55,8 +56,7 @@ void pendulum_exact_eval_many_fma(const PendulumExact *ex, size_t n, const doubl
                                   double *omega);
 size_t pendulum_exact_once_gl_many_fma(size_t n, const double *theta0, const double *omega0, const double *g,
                                        const double *L, double t0, const double *t, double *theta, double *omega);
-/* CPUID's fma flag, set by libgcc only where the operating system saves the AVX state */
-#define EXACT_FMA_HERE() __builtin_cpu_supports("fma")
+#define EXACT_FMA_HERE() (cpu_level() >= 1)
 #endif
 
 /* The numerical core (PENDULUM_EXACT_AVX512, pendulum_core) hands pendulum_exact_once_gl_many
@@ -67,8 +67,7 @@ size_t pendulum_exact_once_gl_many_fma(size_t n, const double *theta0, const dou
 size_t pendulum_exact_once_gl_many_avx512(size_t n, const double *theta0, const double *omega0, const double *g,
                                           const double *L, double t0, const double *t, double *theta,
                                           double *omega);
-/* libgcc sets the flag only where the operating system saves the AVX-512 state */
-#define EXACT_AVX512_HERE() (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("fma"))
+#define EXACT_AVX512_HERE() (cpu_level() >= 2)
 #endif
 
 #define PI_HI   DD_PI_HI

@@ -10,16 +10,16 @@
  *
  * exact_fma.c compiles dd.c, elliptic.c and exact.c again with the fma enabled (GCC's target
  * pragma) and PENDULUM_DD_FMA defined, their public functions renamed with the suffix _fma
- * (below). The baseline functions pendulum_exact_init, _init_gl, _eval, _eval_many,
- * _once_gl_many and _sin_cos hand the call to the _fma build when the processor has an fma (GCC's
- * __builtin_cpu_supports: CPUID, with the operating system's support of the AVX state). Only
- * for GCC on x86-64 Linux (the host build); every other compiler and platform builds the
- * baseline alone, and exact_fma.c is then empty. */
+ * (core_copy.h). The baseline functions pendulum_exact_init, _init_gl, _eval, _eval_many,
+ * _once_gl_many and _sin_cos hand the call to the _fma build when the processor has an fma
+ * (cpu_level.h: CPUID, with the operating system's support of the AVX state). Only for GCC and
+ * clang (zig cc, the cross builds) on x86-64 Linux; every other compiler and platform builds
+ * the baseline alone, and exact_fma.c is then empty. */
 #ifndef PENDULUM_EXACT_FMA_H
 #define PENDULUM_EXACT_FMA_H
 
-#if defined(__GNUC__) && !defined(__clang__) && !defined(__INTEL_COMPILER) && defined(__x86_64__) \
-    && defined(__linux__) && !defined(PENDULUM_NO_FMA_BUILD)
+#if defined(__GNUC__) && !defined(__INTEL_COMPILER) && defined(__x86_64__) && defined(__linux__) \
+    && !defined(PENDULUM_NO_FMA_BUILD)
 #define PENDULUM_EXACT_FMA_BUILD 1
 #endif
 
