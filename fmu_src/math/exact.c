@@ -1210,9 +1210,9 @@ void pendulum_exact_eval_many(const PendulumExact *ex, size_t n, const double *t
     }
 }
 
-/* The fma build (GCC on x86-64, the fma and AVX enabled) sets up and evaluates four releases
- * from rest, or four moving librations or rotations, at once in AVX vectors (once_avx.h), and
- * the AVX-512 build eight: the same bits as once_scalar below. */
+/* The fma build (GCC or clang on x86-64 Linux, the fma and AVX enabled) sets up and evaluates
+ * four releases from rest, or four moving librations or rotations, at once in AVX vectors
+ * (once_avx.h), and the AVX-512 build eight: the same bits as once_scalar below. */
 #if defined(PENDULUM_DD_FMA) && defined(__GNUC__) && defined(__x86_64__)
 #define EXACT_ONCE_AVX 1
 #include "once_avx.h"

@@ -103,10 +103,10 @@ void pendulum_exact_eval_many(const PendulumExact *ex, size_t n, const double *t
 /* For i < n: theta[i], omega[i] of the solution pendulum_exact_init_gl(theta0[i], omega0[i],
  * g[i], L[i], t0) sets up, at t[i], bit for bit what that set-up and pendulum_exact_eval
  * give (NaN for refused inputs): many new states, each evaluated once, without their
- * set-ups written (in the fma build four releases from rest, or four moving librations, at
- * once in vectors). The outputs must not overlap the inputs (the moving starts are read again
- * after the releases from rest are written). Returns the number of elements whose inputs were
- * refused or whose time is not resolvable. */
+ * set-ups written (in the fma build four releases from rest, or four moving starts, at once
+ * in vectors; eight with AVX-512F). The outputs must not overlap the inputs (a chunk's moving
+ * starts are read after its releases from rest are written). Returns the number of elements
+ * whose inputs were refused or whose time is not resolvable. */
 size_t pendulum_exact_once_gl_many(size_t n, const double *theta0, const double *omega0, const double *g,
                                    const double *L, double t0, const double *t, double *theta, double *omega);
 

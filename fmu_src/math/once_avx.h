@@ -1,12 +1,12 @@
 /* once_avx.h: new states set up and evaluated once, a vector of them at a time, for
- * pendulum_exact_once_gl_many: four lanes in the fma build (exact_fma.c: GCC on x86-64, AVX and
- * FMA enabled by its target pragma), eight in the AVX-512 build (avx512_copy.c, the same
- * sources with AVX-512F enabled, for processors that have it). Included at the end of exact.c
+ * pendulum_exact_once_gl_many: four lanes in the fma build (exact_fma.c: GCC or clang on x86-64
+ * Linux, AVX and FMA enabled by its target pragma), eight in the AVX-512 build (avx512_copy.c,
+ * the same sources with AVX-512F enabled, for processors that have it). Included at the end of exact.c
  * in those builds alone: each compiles dd.c, elliptic.c and exact.c as one translation unit,
  * and this code reads their tables and constants (dd.c's TABLE_64 and series, elliptic.c's
  * BOTTOM_M and pi's parts).
  *
- * Each lane runs the scalar code's operations in their order, on GCC's vector of doubles:
+ * Each lane runs the scalar code's operations in their order, on the compiler's vector of doubles:
  * +, -, *, / elementwise, each IEEE-rounded as the scalar operation, the correctly rounded
  * vector square root, and the two-products by the fma as the fma build's scalar ones. So a lane
  * has the scalar bits: dd_cos_sin_begin and _end (the cosine of theta0/2 and the double sine),
