@@ -1255,7 +1255,7 @@ static inline int once_rate_ok(OnceRate *r, double g, double L)
 #define ONCE_CHUNK 64
 
 /* A chunk's elements by kind, as indices into the caller's arrays: the releases from rest and
- * the moving starts with |theta0| <= 3.2 and g, L accepted (their w0 beside them), and the
+ * the moving starts with |theta0| < 2^50 and g, L accepted (their w0 beside them), and the
  * rest, which go one by one */
 typedef struct {
     size_t rest[ONCE_CHUNK], moving[ONCE_CHUNK], other[ONCE_CHUNK];
@@ -1268,7 +1268,7 @@ static void once_sort(size_t start, size_t end, const double *theta0, const doub
 {
     by->n_rest = by->n_moving = by->n_other = 0;
     for (size_t j = start; j < end; ++j) {
-        if (t0_ok && fabs(theta0[j]) <= 3.2 && once_rate_ok(rate, g[j], L[j])) {
+        if (t0_ok && fabs(theta0[j]) < 0x1p50 && once_rate_ok(rate, g[j], L[j])) {
             if (omega0[j] == 0.0) {
                 by->w0_rest[by->n_rest] = rate->w0;
                 by->rest[by->n_rest++] = j;

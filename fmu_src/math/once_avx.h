@@ -108,6 +108,12 @@ static inline Vec vec_trunc(Vec x)
     return (Vec)_mm512_roundscale_pd((__m512d)x, _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC);
 }
 
+/* x rounded to the nearest whole number, ties to even (nearbyint in the default mode) */
+static inline Vec vec_nearest(Vec x)
+{
+    return (Vec)_mm512_roundscale_pd((__m512d)x, _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC);
+}
+
 /* the magnitude of x with the sign of y */
 static inline Vec vec_copysign(Vec x, Vec y)
 {
@@ -153,6 +159,12 @@ static inline Vec vec_sqrt(Vec x)
 static inline Vec vec_trunc(Vec x)
 {
     return (Vec)_mm256_round_pd((__m256d)x, _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC);
+}
+
+/* x rounded to the nearest whole number, ties to even (nearbyint in the default mode) */
+static inline Vec vec_nearest(Vec x)
+{
+    return (Vec)_mm256_round_pd((__m256d)x, _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC);
 }
 
 /* the magnitude of x with the sign of y */
@@ -390,12 +402,40 @@ ONCE_STAGE VecDd table_sincos_vec(const TablePointVec *t, VecMask cosine)
     return vec_pick_dd(cosine, cos_y, sin_y);
 }
 
-/* dd_cos_sin_begin on a vector of arguments x + 0, |x| < 2 (reduce_quadrant's first branch), into
+/* subtract_turns(x, j): x - j (2 pi), 2 pi in three parts, the two leading products exact */
+static inline VecDd vec_subtract_turns(VecDd x, Vec j)
+{
+    x = vec_dd_add(x, vec_dd_neg(vec_two_prod(j, vec_all(2.0 * PI_HI))));
+    x = vec_dd_add(x, vec_dd_neg(vec_two_prod(j, vec_all(2.0 * PI_LO))));
+    return vec_dd_add(x, (VecDd){-j * 2.0 * PI_LOLO, vec_all(0.0)});
+}
+
+/* reduce_initial_angle's turns for |theta0| < 2^50: where |theta0| > 3.2, th = theta0 - 2 pi j
+ * with j = nearbyint(theta0 / (2 pi)) (*turns), else th = theta0; *reduced marks the lanes
+ * whose th is within 3.2 after that one subtraction (the scalar code's rounds stop there too;
+ * the others, and |theta0| >= 2^50, are left to it) */
+ONCE_STAGE VecDd reduce_turns_vec(Vec theta0, Vec *turns, VecMask *reduced)
+{
+    const VecDd whole = {theta0, vec_all(0.0)};
+    const VecMask wound = (VecMask)(vec_abs(theta0) > 3.2);
+    if (vec_bits(wound) == 0) {
+        *turns = vec_all(0.0);
+        *reduced = VEC_EVERY;
+        return whole;
+    }
+    const Vec j = vec_pick(wound, vec_nearest(theta0 / (2.0 * PI_HI)), vec_all(0.0));
+    const VecDd th = vec_pick_dd(wound, vec_subtract_turns(whole, j), whole);
+    *turns = j;
+    *reduced = (VecMask)(vec_abs(th.hi) <= 3.2) & (VecMask)(vec_abs(theta0) < 0x1p50);
+    return th;
+}
+
+/* dd_cos_sin_begin on a vector of arguments x, |x.hi| < 2 (reduce_quadrant's first branch), into
  * a CosSinVec */
-ONCE_STAGE void cos_sin_begin_vec(Vec xh, CosSinVec *out)
+ONCE_STAGE void cos_sin_begin_vec(VecDd x, CosSinVec *out)
 {
     Vec n;
-    const VecDd y = reduce_quadrant_vec((VecDd){xh, vec_all(0.0)}, &n);
+    const VecDd y = reduce_quadrant_vec(x, &n);
     /* quadrant_of(n): 0, 1, or 3 for n = -1; odd for n != 0; flip = -1 for quadrant 1 */
     const VecMask odd = (VecMask)(n != 0.0), flip_minus = (VecMask)(n > 0.0);
     /* the double sin x: the series in double of sincos_reduced */
@@ -892,7 +932,7 @@ ONCE_STAGE int eval_taken_vec(const MotionVec *s, int rotating, Vec tv, int lane
     return done;
 }
 
-/* Up to ONCE_LANES releases from rest (omega0 = 0, |theta0| <= 3.2, w0 accepted) set up at t0 and
+/* Up to ONCE_LANES releases from rest (omega0 = 0, |theta0| < 2^50, w0 accepted) set up at t0 and
  * evaluated once each at t[l], all in vectors: init_from_rest's operations (the cosine begun,
  * the chain, the cosine ended, K, the rates) and the evaluation's, without a set-up written.
  * Returns the lanes done as bits; the others (a cosine whose leading double is not certain or
@@ -902,11 +942,14 @@ ONCE_STAGE int once_avx(int lanes, const double *theta0, const DoubleDouble *w0,
 {
     const OnceInputsVec in = once_inputs_vec(lanes, theta0, NULL, w0, t);
     CosSinVec trig;
-    cos_sin_begin_vec(0.5 * in.th, &trig);   /* step 1: theta0 / 2 exact, no turn to subtract */
+    Vec turns;
+    VecMask reduced;
+    const VecDd th = reduce_turns_vec(in.th, &turns, &reduced);
+    cos_sin_begin_vec((VecDd){0.5 * th.hi, 0.5 * th.lo}, &trig);   /* step 1: th / 2 exact */
     VecMask taken = {0};   /* every lane set below */
     int any = -1;
     for (int l = 0; l < ONCE_LANES; ++l) {
-        taken[l] = -(l < lanes && trig.certain[l] && fabs(trig.cos_lead[l]) > 0x1p-500);
+        taken[l] = -(l < lanes && reduced[l] && trig.certain[l] && fabs(trig.cos_lead[l]) > 0x1p-500);
         any = taken[l] && any < 0 ? l : any;
     }
     if (any < 0) {
@@ -931,7 +974,7 @@ ONCE_STAGE int once_avx(int lanes, const double *theta0, const DoubleDouble *w0,
     libration_scales_vec(&s, &chains, k, kc, in.w0_hi, K.hi, t0);
     const VecDd rho = vec_dd_mul((VecDd){in.w0_hi, in.w0_lo}, inv_K);
     const Vec u0 = vec_pick((VecMask)(k == 0.0), vec_all(0.0), vec_pick((VecMask)(s_hi < 0.0), -K.hi, K.hi));
-    s.theta_turns = vec_pick(past, vec_pick((VecMask)(in.th > 0.0), vec_all(1.0), vec_all(-1.0)), vec_all(0.0));
+    s.theta_turns = turns + vec_pick(past, vec_pick((VecMask)(th.hi > 0.0), vec_all(1.0), vec_all(-1.0)), vec_all(0.0));
     s.rho_hi = rho.hi;
     s.rho_lo = rho.lo;
     s.x0_hi = vec_pick((VecMask)(u0 < 0.0), vec_all(-1.0), vec_pick((VecMask)(u0 > 0.0), vec_all(1.0), vec_all(0.0)));
@@ -982,20 +1025,12 @@ ONCE_STAGE ParameterVec libration_parameter_vec(VecDd c, Vec s_hi, VecDd w_n, Ve
     return p;
 }
 
-/* subtract_turns(x, j): x - j (2 pi), 2 pi in three parts, the two leading products exact */
-static inline VecDd vec_subtract_turns(VecDd x, Vec j)
-{
-    x = vec_dd_add(x, vec_dd_neg(vec_two_prod(j, vec_all(2.0 * PI_HI))));
-    x = vec_dd_add(x, vec_dd_neg(vec_two_prod(j, vec_all(2.0 * PI_LO))));
-    return vec_dd_add(x, (VecDd){-j * 2.0 * PI_LOLO, vec_all(0.0)});
-}
-
 /* rotation_parameter for gap < 0 outside the fine window: s = sin(th/2) in double-double
  * (dd_sin; th moved by a turn where `past`, finish_initial_angle), rho = s w_n / hs_n,
  * 1 + rho^2, mu1 = (1 - gamma)(1 + gamma)/(1 + rho^2) with 1 - gamma = -gap / hs_n and
  * gamma = c w_n / hs_n, mu = min((w_n / hs_n)^2 / (1 + rho^2), 1); init_rotation's
  * v0 = F(th/2 | mu) = direction s R_F(c^2, 1/(1 + rho^2), 1) (DLMF 19.25.5) */
-ONCE_STAGE ParameterVec rotation_parameter_vec(const CosSinVec *trig, Vec th, VecMask past, VecDd c, VecDd c_w,
+ONCE_STAGE ParameterVec rotation_parameter_vec(const CosSinVec *trig, VecDd th, VecMask past, VecDd c, VecDd c_w,
                                                VecDd w_n, Vec hs_n, VecDd gap, Vec direction, VecDd *one_plus_rho2)
 {
     ParameterVec p;
@@ -1003,9 +1038,8 @@ ONCE_STAGE ParameterVec rotation_parameter_vec(const CosSinVec *trig, Vec th, Ve
     if (vec_bits(past) == 0) {   /* th/2 = theta0/2: dd_cos_sin_begin's reduction and table point */
         s = sin_at_point_vec(&trig->point, trig->n);
     } else {
-        const Vec shift = vec_pick((VecMask)(th > 0.0), vec_all(1.0), vec_all(-1.0));
-        const VecDd moved = vec_pick_dd(past, vec_subtract_turns((VecDd){th, vec_all(0.0)}, shift),
-                                      (VecDd){th, vec_all(0.0)});
+        const Vec shift = vec_pick((VecMask)(th.hi > 0.0), vec_all(1.0), vec_all(-1.0));
+        const VecDd moved = vec_pick_dd(past, vec_subtract_turns(th, shift), th);
         s = dd_sin_vec((VecDd){0.5 * moved.hi, 0.5 * moved.lo});
     }
     const VecDd hs = {hs_n, vec_all(0.0)};
@@ -1035,7 +1069,7 @@ static inline ParameterVec pick_parameter(VecMask where, ParameterVec yes, Param
     return p;
 }
 
-/* Up to ONCE_LANES moving starts (omega0 != 0, |theta0| <= 3.2, w0 accepted) set up at t0 and
+/* Up to ONCE_LANES moving starts (omega0 != 0, |theta0| < 2^50, w0 accepted) set up at t0 and
  * evaluated once each at t[l], in vectors: exact_init_dd's general path for a libration or a
  * rotation (finish_initial_angle, locate_separatrix, libration_parameter or
  * rotation_parameter, init_libration or init_rotation, set_quarter_rates) and the
@@ -1054,7 +1088,10 @@ ONCE_STAGE int once_moving_block(int lanes, const double *theta0, const double *
 {
     const OnceInputsVec in = once_inputs_vec(lanes, theta0, omega0, w0, t);
     CosSinVec trig;
-    cos_sin_begin_vec(0.5 * in.th, &trig);   /* step 1: theta0 / 2 exact, no turn to subtract */
+    Vec turns;
+    VecMask reduced;
+    const VecDd th = reduce_turns_vec(in.th, &turns, &reduced);
+    cos_sin_begin_vec((VecDd){0.5 * th.hi, 0.5 * th.lo}, &trig);   /* step 1: th / 2 exact */
     /* finish_initial_angle: c < 0 moves th by a turn, s and c change sign (its c = -0 with
      * th < 0 is taken by neither kind: gap = -hs_n, c^2 = 0) */
     const VecDd cosine = cos_sin_end_vec(&trig);
@@ -1067,7 +1104,7 @@ ONCE_STAGE int once_moving_block(int lanes, const double *theta0, const double *
     Vec down, up;
     for (int l = 0; l < ONCE_LANES; ++l) {
         const int e = dd_frexp_exponent(larger(in.w0_hi[l], half_speed[l]));
-        const int in_range = l < lanes && e >= -1000 && e <= 1000;   /* dd_scalbn's 2^-e and 2^e */
+        const int in_range = l < lanes && reduced[l] && e >= -1000 && e <= 1000;   /* dd_scalbn's 2^-e, 2^e */
         down[l] = in_range ? dd_scalbn(1.0, -e) : 0.0;   /* 0: a lane left to the caller */
         up[l] = in_range ? dd_scalbn(1.0, e) : 1.0;
     }
@@ -1092,7 +1129,7 @@ ONCE_STAGE int once_moving_block(int lanes, const double *theta0, const double *
         par = libration_parameter_vec(c, s_hi, w_n, hs_n, gap, &k);
     }
     if (rotating != 0) {
-        const ParameterVec rot = rotation_parameter_vec(&trig, in.th, past, c, c_w, w_n, hs_n, gap, direction,
+        const ParameterVec rot = rotation_parameter_vec(&trig, th, past, c, c_w, w_n, hs_n, gap, direction,
                                                       &one_plus_rho2);
         par = librating != 0 ? pick_parameter(rotation, rot, par) : rot;
     }
@@ -1139,7 +1176,7 @@ ONCE_STAGE int once_moving_block(int lanes, const double *theta0, const double *
     s.rho_lo = rho.lo * up;
     s.x0_hi = x0.hi;
     s.x0_lo = x0.lo;
-    s.theta_turns = vec_pick(past, vec_pick((VecMask)(in.th > 0.0), vec_all(1.0), vec_all(-1.0)), vec_all(0.0));
+    s.theta_turns = turns + vec_pick(past, vec_pick((VecMask)(th.hi > 0.0), vec_all(1.0), vec_all(-1.0)), vec_all(0.0));
     const int done = eval_taken_vec(&s, rotating, in.tv, lanes, taken, theta, omega);
     ONCE_AVX_TALLY(moving, done & ~rotating);
     ONCE_AVX_TALLY(rotation, done & rotating);

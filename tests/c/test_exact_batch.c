@@ -6,7 +6,8 @@
  * 2^50 and 2^60 quarter periods), NaN and infinite, in blocks that mix them, and counts that
  * are not a multiple of the lane count; for the new states, arrays that mix every kind of
  * state, refused inputs and special times, and arrays of moving starts (librations of every
- * amplitude and speed, next to the separatrix window's edge, k and m1 tiny, any g and L).
+ * amplitude and speed, next to the separatrix window's edge, k and m1 tiny, any g and L; one in
+ * seven wound up by whole turns).
  * Arrays of rotations: barely over the top (either side of the fine window's edge), fast
  * spins, both directions, theta0 of both signs, near and past pi, any g and L, far times.
  * A copy of the fma build (four lanes; test_exact_batch_wide: of the AVX-512 build, eight) counts
@@ -334,6 +335,17 @@ static void check_once(void)
 }
 
 
+/* theta0, or in one draw of seven theta0 wound up by whole turns (up to 10^3 or 10^12 of them,
+ * either way), which the vectors take after one subtraction of turns */
+static double wound_up(double theta0)
+{
+    if (uniform() >= 1.0 / 7.0) {
+        return theta0;
+    }
+    const double turns = floor(uniform() * (uniform() < 0.5 ? 1e3 : 1e12));
+    return theta0 + (uniform() < 0.5 ? -2.0 : 2.0) * PI * turns;
+}
+
 /* A moving start of kind `kind` for w0 = sqrt(g/L): librations of every amplitude and speed
  * (small, large, q next to c, next to locate_separatrix's fine window 2^-30 on either side,
  * k tiny, m1 tiny, theta0 just past pi, omega0 of a few ulps), a few rotations,
@@ -363,17 +375,18 @@ static void draw_moving(int kind, double w0, double *theta0, double *omega0)
     case 8: speed = uniform() < 0.2 ? edge : edge * (1.0 + pow(10.0, -8.0 * uniform())); break;   /* rotation */
     default: break;
     }
-    *theta0 = th;
+    *theta0 = wound_up(th);
     *omega0 = sign_om * (speed == 0.0 ? 0x1p-1074 : speed);
 }
 
-/* A moving libration that the vectors must take: |theta0| <= 3.2, m1 clear of the fine
+/* A moving libration that the vectors must take: |theta0| < 2^44 (one subtraction of turns
+ * brings it within 3.2), m1 clear of the fine
  * window (|c/q - 1| above 2^-28 in double, which is within 1e-15 of the set-up's), omega0
  * not of a few ulps, a time on the evaluation's common path */
 static int vector_libration(const PendulumExact *ex, double theta0, double omega0, double w0, double t)
 {
     const double c = fabs(cos(0.5 * theta0)), q = 0.5 * fabs(omega0) / w0;
-    return ex->regime == PENDULUM_LIBRATION && fabs(theta0) <= 3.2 && fabs(omega0) > 1e-290 && fabs(c / q - 1.0) > 0x1p-28
+    return ex->regime == PENDULUM_LIBRATION && fabs(theta0) < 0x1p44 && fabs(omega0) > 1e-290 && fabs(c / q - 1.0) > 0x1p-28
            && t != ex->t0 && fabs(ex->rho_hi * (t - ex->t0)) < 0x1p49;
 }
 
@@ -447,17 +460,17 @@ static void draw_rotation(double w0, double *theta0, double *omega0)
     } else if (kind < 0.6) {
         speed = w0 * pow(10.0, 8.0 * uniform());                       /* fast spins */
     }
-    *theta0 = th;
+    *theta0 = wound_up(th);
     *omega0 = sign_om * speed;
 }
 
-/* A rotation that the vectors must take: |theta0| <= 3.2, clear of the fine window (|c/q - 1|
+/* A rotation that the vectors must take: |theta0| < 2^44, clear of the fine window (|c/q - 1|
  * above 2^-28 in double, within 1e-15 of the set-up's), a time on the evaluation's common
  * path */
 static int vector_rotation(const PendulumExact *ex, double theta0, double omega0, double w0, double t)
 {
     const double c = fabs(cos(0.5 * theta0)), q = 0.5 * fabs(omega0) / w0;
-    return ex->regime == PENDULUM_ROTATION && fabs(theta0) <= 3.2 && fabs(c / q - 1.0) > 0x1p-28 && t != ex->t0
+    return ex->regime == PENDULUM_ROTATION && fabs(theta0) < 0x1p44 && fabs(c / q - 1.0) > 0x1p-28 && t != ex->t0
            && fabs(ex->rho_hi * (t - ex->t0)) < 0x1p49;
 }
 
