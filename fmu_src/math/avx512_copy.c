@@ -4,7 +4,7 @@
  * hands the call to it on a processor with AVX-512F, and there once_avx.h sets up and
  * evaluates eight new states a vector (four in the fma build). Each lane runs the same IEEE
  * operations as the scalar code, so the bits are those of the fma build (exact_fma.h) and of
- * the baseline. Built where the fma build is (GCC on x86-64 Linux), into the numerical core
+ * the baseline. Built where the fma build is (GCC or clang on x86-64 Linux), into the numerical core
  * (pendulum_core, which defines PENDULUM_EXACT_AVX512: the exact library, the C tests); not
  * into Pendulum.fmu, whose sources are modelDescription.xml's. */
 #include "exact_fma.h"

@@ -1,7 +1,8 @@
 /* core_copy.h: dd.c, elliptic.c and exact.c compiled once more in this translation unit, as a
- * copy for a processor with more than the baseline (exact_fma.c, avx512_copy.c): the file that
- * includes this defines EXACT_COPY(name), the copy's name of each public function, enables
- * its instructions and defines PENDULUM_DD_FMA and PENDULUM_EXACT_FMA_PASS. */
+ * copy beside the core's own functions: for a processor with more than the baseline
+ * (exact_fma.c, avx512_copy.c, which enable its instructions and define PENDULUM_DD_FMA and
+ * PENDULUM_EXACT_FMA_PASS first), or in a test that compares a build with the core. The file
+ * that includes this defines EXACT_COPY(name), the copy's name of each public function. */
 #define dd_sincos EXACT_COPY(dd_sincos)
 #define dd_cos_sin EXACT_COPY(dd_cos_sin)
 #define dd_cos_sin_begin EXACT_COPY(dd_cos_sin_begin)

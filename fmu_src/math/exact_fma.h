@@ -9,7 +9,7 @@
  * fma's does not), so both builds give the same bits: the fma build is only faster.
  *
  * exact_fma.c compiles dd.c, elliptic.c and exact.c again with the fma enabled (GCC's target
- * pragma) and PENDULUM_DD_FMA defined, their public functions renamed with the suffix _fma
+ * pragma, clang's attribute pragma) and PENDULUM_DD_FMA defined, their public functions renamed with the suffix _fma
  * (core_copy.h). The baseline functions pendulum_exact_init, _init_gl, _eval, _eval_many,
  * _once_gl_many and _sin_cos hand the call to the _fma build when the processor has an fma
  * (cpu_level.h: CPUID, with the operating system's support of the AVX state). Only for GCC and

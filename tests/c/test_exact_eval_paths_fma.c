@@ -9,29 +9,8 @@
 #pragma GCC optimize("fp-contract=off")
 #define PENDULUM_DD_FMA 1
 #define PENDULUM_EXACT_FMA_PASS 1
-#define dd_sincos dd_sincos_paths_fma
-#define dd_cos_sin dd_cos_sin_paths_fma
-#define dd_cos_sin_begin dd_cos_sin_begin_paths_fma
-#define dd_cos_sin_end dd_cos_sin_end_paths_fma
-#define dd_sin dd_sin_paths_fma
-#define elliptic_RF elliptic_RF_paths_fma
-#define elliptic_param_init elliptic_param_init_paths_fma
-#define elliptic_param_init_root elliptic_param_init_root_paths_fma
-#define elliptic_param_begin elliptic_param_begin_paths_fma
-#define elliptic_param_finish elliptic_param_finish_paths_fma
-#define elliptic_quarter_of elliptic_quarter_of_paths_fma
-#define pendulum_exact_init pendulum_exact_init_paths_fma
-#define pendulum_exact_init_gl pendulum_exact_init_gl_paths_fma
-#define pendulum_exact_same pendulum_exact_same_paths_fma
-#define pendulum_exact_resolvable pendulum_exact_resolvable_paths_fma
-#define pendulum_exact_eval pendulum_exact_eval_paths_fma
-#define pendulum_exact_sin_cos pendulum_exact_sin_cos_paths_fma
-#define pendulum_exact_eval_many pendulum_exact_eval_many_paths_fma
-#define pendulum_exact_qualitative_miss pendulum_exact_qualitative_miss_paths_fma
-#define pendulum_exact_period pendulum_exact_period_paths_fma
-#include "dd.c"
-#include "elliptic.c"
-#include "exact.c"
+#define EXACT_COPY(name) name##_paths_fma
+#include "core_copy.h"
 
 #include "exact_eval_paths.h"
 

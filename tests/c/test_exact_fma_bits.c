@@ -11,30 +11,8 @@
  * 1e16 periods. Where the processor has no fma both sides are the baseline and agree
  * trivially; the program says which it compared. */
 #define PENDULUM_NO_FMA_BUILD 1
-#define dd_sincos dd_sincos_baseline
-#define dd_cos_sin dd_cos_sin_baseline
-#define dd_cos_sin_begin dd_cos_sin_begin_baseline
-#define dd_cos_sin_end dd_cos_sin_end_baseline
-#define dd_sin dd_sin_baseline
-#define elliptic_RF elliptic_RF_baseline
-#define elliptic_param_init elliptic_param_init_baseline
-#define elliptic_param_init_root elliptic_param_init_root_baseline
-#define elliptic_param_begin elliptic_param_begin_baseline
-#define elliptic_param_finish elliptic_param_finish_baseline
-#define elliptic_quarter_of elliptic_quarter_of_baseline
-#define pendulum_exact_init pendulum_exact_init_baseline
-#define pendulum_exact_init_gl pendulum_exact_init_gl_baseline
-#define pendulum_exact_same pendulum_exact_same_baseline
-#define pendulum_exact_resolvable pendulum_exact_resolvable_baseline
-#define pendulum_exact_eval pendulum_exact_eval_baseline
-#define pendulum_exact_sin_cos pendulum_exact_sin_cos_baseline
-#define pendulum_exact_eval_many pendulum_exact_eval_many_baseline
-#define pendulum_exact_once_gl_many pendulum_exact_once_gl_many_baseline
-#define pendulum_exact_qualitative_miss pendulum_exact_qualitative_miss_baseline
-#define pendulum_exact_period pendulum_exact_period_baseline
-#include "dd.c"
-#include "elliptic.c"
-#include "exact.c"
+#define EXACT_COPY(name) name##_baseline
+#include "core_copy.h"
 #undef pendulum_exact_init_gl
 #undef pendulum_exact_eval
 #undef pendulum_exact_sin_cos
