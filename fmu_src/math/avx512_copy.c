@@ -10,38 +10,13 @@
 #include "exact_fma.h"
 
 #ifdef PENDULUM_EXACT_FMA_BUILD
-/* the system's headers first, outside the region whose functions take the fma and AVX-512F */
-#include <float.h>
-#include <immintrin.h>
-#include <math.h>
-#include <stddef.h>
-#include <stdint.h>
-#include <string.h>
-#ifdef __clang__
-#pragma clang attribute push(__attribute__((target("fma,avx512f"))), apply_to = function)
-#else
-#pragma GCC target("fma,avx512f")
-#endif
-/* only the explicit fma calls are fused (exact_fma.c) */
-#ifdef __clang__
-#pragma STDC FP_CONTRACT OFF
-#else
-#pragma GCC optimize("fp-contract=off")
-#endif
-
-#define PENDULUM_DD_FMA 1
-#define PENDULUM_EXACT_FMA_PASS 1
+#define EXACT_COPY_TARGET "fma,avx512f"
 /* once_avx.h's vectors: eight doubles */
 #define PENDULUM_ONCE_LANES 8
-
-/* the public functions named with _avx512 */
 #ifndef EXACT_COPY   /* a test's copy names them its own way */
-#define EXACT_COPY(name) name##_avx512
+#define EXACT_COPY(name) name##_avx512   /* the public functions named with _avx512 */
 #endif
 #include "core_copy.h"
-#ifdef __clang__
-#pragma clang attribute pop
-#endif
 
 #else
 typedef int avx512_copy_not_built;   /* ISO C: a translation unit declares something */

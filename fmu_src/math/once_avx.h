@@ -61,6 +61,17 @@ static inline Vec vec_all(double x)
     return v;
 }
 
+/* The vector type of the intrinsics, and their names for this width */
+#if ONCE_LANES == 8
+typedef __m512d VecNative;
+#define VEC_PD(op) _mm512_##op##_pd
+#define VEC_ROUND(x, mode) _mm512_roundscale_pd(x, mode)
+#else
+typedef __m256d VecNative;
+#define VEC_PD(op) _mm256_##op##_pd
+#define VEC_ROUND(x, mode) _mm256_round_pd(x, mode)
+#endif
+
 #if ONCE_LANES == 8
 /* the mask register of a lane mask */
 static inline __mmask8 vec_k(VecMask mask)
@@ -80,38 +91,9 @@ static inline int vec_bits(VecMask mask)
     return (int)vec_k(mask);
 }
 
-/* a b + c, rounded once */
-static inline Vec vec_fmadd(Vec a, Vec b, Vec c)
-{
-    return (Vec)_mm512_fmadd_pd((__m512d)a, (__m512d)b, (__m512d)c);
-}
-
 static inline Vec vec_abs(Vec x)
 {
     return (Vec)_mm512_abs_pd((__m512d)x);
-}
-
-/* the larger of a and b, neither NaN (fmax) */
-static inline Vec vec_max(Vec a, Vec b)
-{
-    return (Vec)_mm512_max_pd((__m512d)a, (__m512d)b);
-}
-
-static inline Vec vec_sqrt(Vec x)
-{
-    return (Vec)_mm512_sqrt_pd((__m512d)x);
-}
-
-/* x rounded toward zero to a whole number */
-static inline Vec vec_trunc(Vec x)
-{
-    return (Vec)_mm512_roundscale_pd((__m512d)x, _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC);
-}
-
-/* x rounded to the nearest whole number, ties to even (nearbyint in the default mode) */
-static inline Vec vec_nearest(Vec x)
-{
-    return (Vec)_mm512_roundscale_pd((__m512d)x, _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC);
 }
 
 /* the magnitude of x with the sign of y */
@@ -133,38 +115,9 @@ static inline int vec_bits(VecMask mask)
     return _mm256_movemask_pd((__m256d)mask);
 }
 
-/* a b + c, rounded once */
-static inline Vec vec_fmadd(Vec a, Vec b, Vec c)
-{
-    return (Vec)_mm256_fmadd_pd((__m256d)a, (__m256d)b, (__m256d)c);
-}
-
 static inline Vec vec_abs(Vec x)
 {
     return (Vec)_mm256_andnot_pd(_mm256_set1_pd(-0.0), (__m256d)x);
-}
-
-/* the larger of a and b, neither NaN (fmax) */
-static inline Vec vec_max(Vec a, Vec b)
-{
-    return (Vec)_mm256_max_pd((__m256d)a, (__m256d)b);
-}
-
-static inline Vec vec_sqrt(Vec x)
-{
-    return (Vec)_mm256_sqrt_pd((__m256d)x);
-}
-
-/* x rounded toward zero to a whole number */
-static inline Vec vec_trunc(Vec x)
-{
-    return (Vec)_mm256_round_pd((__m256d)x, _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC);
-}
-
-/* x rounded to the nearest whole number, ties to even (nearbyint in the default mode) */
-static inline Vec vec_nearest(Vec x)
-{
-    return (Vec)_mm256_round_pd((__m256d)x, _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC);
 }
 
 /* the magnitude of x with the sign of y */
@@ -174,6 +127,35 @@ static inline Vec vec_copysign(Vec x, Vec y)
     return (Vec)_mm256_or_pd(_mm256_andnot_pd(sign_bit, (__m256d)x), _mm256_and_pd(sign_bit, (__m256d)y));
 }
 #endif
+
+/* a b + c, rounded once */
+static inline Vec vec_fmadd(Vec a, Vec b, Vec c)
+{
+    return (Vec)VEC_PD(fmadd)((VecNative)a, (VecNative)b, (VecNative)c);
+}
+
+/* the larger of a and b, neither NaN (fmax) */
+static inline Vec vec_max(Vec a, Vec b)
+{
+    return (Vec)VEC_PD(max)((VecNative)a, (VecNative)b);
+}
+
+static inline Vec vec_sqrt(Vec x)
+{
+    return (Vec)VEC_PD(sqrt)((VecNative)x);
+}
+
+/* x rounded toward zero to a whole number */
+static inline Vec vec_trunc(Vec x)
+{
+    return (Vec)VEC_ROUND((VecNative)x, _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC);
+}
+
+/* x rounded to the nearest whole number, ties to even (nearbyint in the default mode) */
+static inline Vec vec_nearest(Vec x)
+{
+    return (Vec)VEC_ROUND((VecNative)x, _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC);
+}
 
 /* --- double-double operations lane by lane ------------------------------------------------ */
 

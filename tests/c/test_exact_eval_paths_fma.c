@@ -5,12 +5,8 @@
 #include "exact_fma.h"
 
 #ifdef PENDULUM_EXACT_FMA_BUILD
-#pragma GCC target("fma")
-#pragma GCC optimize("fp-contract=off")
-#define PENDULUM_DD_FMA 1
-#define PENDULUM_EXACT_FMA_PASS 1
 #define EXACT_COPY(name) name##_paths_fma
-#include "core_copy.h"
+#include "exact_fma.c"
 
 #include "exact_eval_paths.h"
 
