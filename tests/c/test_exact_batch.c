@@ -346,6 +346,21 @@ static double wound_up(double theta0)
     return theta0 + (uniform() < 0.5 ? -2.0 : 2.0) * PI * turns;
 }
 
+/* g[i] and L[i] log-uniform over 10^+-decades, *far (one of them) beyond 2^+-450 in one draw
+ * of 33, and in one of two the previous element's g and L again (a run of one rate) */
+static void draw_g_L(double *g, double *L, size_t i, double decades, double *far)
+{
+    g[i] = pow(10.0, 2.0 * decades * uniform() - decades);
+    L[i] = pow(10.0, 2.0 * decades * uniform() - decades);
+    if (uniform() < 0.03) {
+        *far = ldexp(*far, uniform() < 0.5 ? 450 : -450);
+    }
+    if (i > 0 && uniform() < 0.5) {
+        g[i] = g[i - 1];
+        L[i] = L[i - 1];
+    }
+}
+
 /* A moving start of kind `kind` for w0 = sqrt(g/L): librations of every amplitude and speed
  * (small, large, q next to c, next to locate_separatrix's fine window 2^-30 on either side,
  * k tiny, m1 tiny, theta0 just past pi, omega0 of a few ulps), a few rotations,
@@ -406,15 +421,7 @@ static void check_once_moving(void)
         double theta0[MAX_ARRAY], omega0[MAX_ARRAY], g[MAX_ARRAY], L[MAX_ARRAY], t[MAX_ARRAY];
         const double t0 = uniform() < 0.5 ? 0.0 : 5.0 * (2.0 * uniform() - 1.0);
         for (size_t i = 0; i < n; ++i) {
-            g[i] = pow(10.0, 6.0 * uniform() - 3.0);
-            L[i] = pow(10.0, 6.0 * uniform() - 3.0);
-            if (uniform() < 0.03) {
-                g[i] = ldexp(g[i], uniform() < 0.5 ? 450 : -450);
-            }
-            if (i > 0 && uniform() < 0.5) {
-                g[i] = g[i - 1];
-                L[i] = L[i - 1];
-            }
+            draw_g_L(g, L, i, 3.0, &g[i]);
             const double w0 = sqrt(g[i] / L[i]), period = 2.0 * PI / w0;
             draw_moving((int)(uniform() * 10), w0, &theta0[i], &omega0[i]);
             t[i] = t0 + (2.0 * uniform() - 1.0) * (uniform() < 0.5 ? 3.0 : 1e6) * period;
@@ -491,15 +498,7 @@ static void check_once_rotation(void)
         double theta0[MAX_ARRAY], omega0[MAX_ARRAY], g[MAX_ARRAY], L[MAX_ARRAY], t[MAX_ARRAY];
         const double t0 = uniform() < 0.5 ? 0.0 : 1e3 * (2.0 * uniform() - 1.0);
         for (size_t i = 0; i < n; ++i) {
-            g[i] = pow(10.0, 12.0 * uniform() - 6.0);
-            L[i] = pow(10.0, 12.0 * uniform() - 6.0);
-            if (uniform() < 0.03) {
-                L[i] = ldexp(L[i], uniform() < 0.5 ? 450 : -450);
-            }
-            if (i > 0 && uniform() < 0.5) {
-                g[i] = g[i - 1];
-                L[i] = L[i - 1];
-            }
+            draw_g_L(g, L, i, 6.0, &L[i]);
             const double w0 = sqrt(g[i] / L[i]);
             const double other = uniform();
             if (other < 0.1) {
